@@ -1,0 +1,108 @@
+// Box2D 2.4 as a backend: 2D scenes only, single precision.
+#include <box2d/box2d.h>
+
+#include <memory>
+#include <vector>
+
+#include "scene/air_forces.hpp"
+#include "scene/engine_keys.hpp"
+#include "scene/plugin_api.hpp"
+
+namespace bb {
+
+namespace {
+
+b2Vec2 to_b2(const Vec3& v) { return {float(v.x), float(v.y)}; }
+
+class Box2dSimulation : public Simulation {
+ public:
+  Box2dSimulation(const Scene& scene, double dt)
+      : scene_(scene), dt_(float(dt)), world_(to_b2(scene.gravity)) {
+    velocity_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "velocity_iterations"));
+    position_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "position_iterations"));
+    world_.SetAllowSleeping(false);
+    for (const Body& b : scene.bodies) {
+      b2BodyDef def;
+      def.type = b.fixed ? b2_staticBody : b2_dynamicBody;
+      def.position = to_b2(b.position);
+      def.angle = float(angle_about_z(b.orientation));
+      def.linearVelocity = to_b2(b.velocity);
+      def.angularVelocity = float(b.angular_velocity.z);
+      def.linearDamping = float(engine_setting(scene, "box2d", "linear_damping"));
+      def.angularDamping = float(engine_setting(scene, "box2d", "angular_damping"));
+      def.allowSleep = false;
+      b2Body* body = world_.CreateBody(&def);
+      // No contacts in the scene, so no fixtures: mass and inertia are set directly.
+      if (!b.fixed) {
+        b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(principal_inertia(b).z)};
+        body->SetMassData(&mass);
+      }
+      bodies_.push_back(body);
+    }
+  }
+
+  void step() override {
+    // Air forces from the engine's own current velocity, as a game would add them.
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const Body& b = scene_.bodies[i];
+      if (b.fixed || !scene_.air) continue;
+      const b2Vec2 v = bodies_[i]->GetLinearVelocity();
+      const Vec3 force =
+          air_force(scene_, b, {v.x, v.y, 0.0}, {0.0, 0.0, bodies_[i]->GetAngularVelocity()});
+      bodies_[i]->ApplyForceToCenter(to_b2(force), true);
+    }
+    world_.Step(dt_, velocity_iterations_, position_iterations_);
+  }
+
+  void read(State& out) const override {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const b2Body& body = *bodies_[i];
+      const b2Vec2 p = body.GetPosition();
+      const b2Vec2 v = body.GetLinearVelocity();
+      out[i] = {{p.x, p.y, 0.0},
+                {v.x, v.y, 0.0},
+                quat_from_axis_angle({0, 0, 1}, body.GetAngle()),
+                {0.0, 0.0, body.GetAngularVelocity()}};
+    }
+  }
+
+  Settings settings() const override {
+    Settings s = engine_key_settings(scene_, "box2d");
+    s.push_back({"precision", std::string("float")});
+    s.push_back({"sleeping", false});
+    s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
+    s.push_back({"max_translation", std::string("2 m per step (b2_maxTranslation, built in)")});
+    s.push_back({"max_rotation", std::string("pi/2 rad per step (b2_maxRotation, built in)")});
+    return s;
+  }
+
+ private:
+  const Scene& scene_;
+  float dt_;
+  int velocity_iterations_ = 8;
+  int position_iterations_ = 3;
+  b2World world_;
+  std::vector<b2Body*> bodies_;
+};
+
+class Box2dBackend : public Backend {
+ public:
+  std::string name() const override { return "box2d"; }
+  FeatureSet supports() const override {
+    return {Feature::Gravity, Feature::Drag, Feature::Magnus, Feature::Wind, Feature::Rotation,
+            Feature::Boxes};
+  }
+  std::pair<std::string, std::string> library_version() const override {
+    return {"box2d", std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) +
+                         "." + std::to_string(b2_version.revision)};
+  }
+  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
+    return std::make_unique<Box2dSimulation>(scene, dt);
+  }
+};
+
+}  // namespace
+
+}  // namespace bb
+
+extern "C" bb::Backend* beachball_create_backend() { return new bb::Box2dBackend(); }

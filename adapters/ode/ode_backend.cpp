@@ -1,0 +1,127 @@
+// ODE as a backend, double precision.
+#include <ode/ode.h>
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "scene/air_forces.hpp"
+#include "scene/engine_keys.hpp"
+#include "scene/plugin_api.hpp"
+
+namespace bb {
+
+namespace {
+
+Vec3 from_ode(const dReal* v) { return {v[0], v[1], v[2]}; }
+
+class OdeSimulation : public Simulation {
+ public:
+  OdeSimulation(const Scene& scene, double dt)
+      : scene_(scene),
+        dt_(dt),
+        world_(dWorldCreate()),
+        threading_(dThreadingAllocateSelfThreadedImplementation()) {
+    // ODE's default stepping context is one shared object; worlds stepped on different
+    // threads each need their own.
+    dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_),
+                                         threading_);
+    quick_step_ = engine_setting(scene, "ode", "quick_step") != 0.0;
+    dWorldSetGravity(world_, scene.gravity.x, scene.gravity.y, scene.gravity.z);
+    dWorldSetERP(world_, engine_setting(scene, "ode", "erp"));
+    dWorldSetCFM(world_, engine_setting(scene, "ode", "cfm"));
+    dWorldSetQuickStepNumIterations(world_, static_cast<int>(engine_setting(scene, "ode", "quick_step_iterations")));
+    dWorldSetLinearDamping(world_, engine_setting(scene, "ode", "linear_damping"));
+    dWorldSetAngularDamping(world_, engine_setting(scene, "ode", "angular_damping"));
+    dWorldSetAutoDisableFlag(world_, 0);
+    for (const Body& b : scene.bodies) {
+      // No contacts in the scene: no space, no geoms, only bodies.
+      dBodyID body = dBodyCreate(world_);
+      dBodySetPosition(body, b.position.x, b.position.y, b.position.z);
+      const dQuaternion q = {b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z};
+      dBodySetQuaternion(body, q);
+      if (b.fixed) {
+        dBodySetKinematic(body);
+      } else {
+        const Vec3 inertia = principal_inertia(b);
+        dMass mass;
+        dMassSetParameters(&mass, b.mass, 0, 0, 0, inertia.x, inertia.y, inertia.z, 0, 0, 0);
+        dBodySetMass(body, &mass);
+        dBodySetLinearVel(body, b.velocity.x, b.velocity.y, b.velocity.z);
+        dBodySetAngularVel(body, b.angular_velocity.x, b.angular_velocity.y, b.angular_velocity.z);
+      }
+      dBodySetAutoDisableFlag(body, 0);
+      bodies_.push_back(body);
+    }
+  }
+  ~OdeSimulation() override {
+    dWorldDestroy(world_);
+    dThreadingFreeImplementation(threading_);
+  }
+  OdeSimulation(const OdeSimulation&) = delete;
+  OdeSimulation& operator=(const OdeSimulation&) = delete;
+
+  void step() override {
+    // Air forces from the engine's own current velocity, as a game would add them.
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const Body& b = scene_.bodies[i];
+      if (b.fixed || !scene_.air) continue;
+      const Vec3 f = air_force(scene_, b, from_ode(dBodyGetLinearVel(bodies_[i])),
+                               from_ode(dBodyGetAngularVel(bodies_[i])));
+      dBodyAddForce(bodies_[i], f.x, f.y, f.z);
+    }
+    if (quick_step_)
+      dWorldQuickStep(world_, dt_);
+    else
+      dWorldStep(world_, dt_);
+  }
+
+  void read(State& out) const override {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const dReal* q = dBodyGetQuaternion(bodies_[i]);
+      out[i] = {from_ode(dBodyGetPosition(bodies_[i])), from_ode(dBodyGetLinearVel(bodies_[i])),
+                {q[0], q[1], q[2], q[3]}, from_ode(dBodyGetAngularVel(bodies_[i]))};
+    }
+  }
+
+  Settings settings() const override {
+    Settings s = engine_key_settings(scene_, "ode");
+    s.push_back({"precision", std::string(sizeof(dReal) == 8 ? "double" : "float")});
+    s.push_back({"auto_disable", false});
+    s.push_back({"collision", std::string("none (no space, no geoms)")});
+    return s;
+  }
+
+ private:
+  const Scene& scene_;
+  dReal dt_;
+  bool quick_step_ = false;
+  dWorldID world_;
+  dThreadingImplementationID threading_;
+  std::vector<dBodyID> bodies_;
+};
+
+class OdeBackend : public Backend {
+ public:
+  std::string name() const override { return "ode"; }
+  FeatureSet supports() const override {
+    return {Feature::ThreeD, Feature::Gravity, Feature::Drag,    Feature::Magnus,
+            Feature::Wind,   Feature::Rotation, Feature::Boxes};
+  }
+  std::pair<std::string, std::string> library_version() const override {
+    return {"ode", BB_ODE_VERSION};
+  }
+  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
+    static std::once_flag initialised;
+    std::call_once(initialised, [] { dInitODE2(0); });
+    // ODE keeps per-thread data; each thread that steps a world must allocate it.
+    dAllocateODEDataForThread(dAllocateMaskAll);
+    return std::make_unique<OdeSimulation>(scene, dt);
+  }
+};
+
+}  // namespace
+
+}  // namespace bb
+
+extern "C" bb::Backend* beachball_create_backend() { return new bb::OdeBackend(); }

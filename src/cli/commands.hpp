@@ -1,0 +1,32 @@
+// The subcommands of the `beachball` program. Each returns the process exit code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "run/case_runner.hpp"
+
+namespace bb::cli {
+
+/// Exit codes: 0 done, 1 a gate failed (check only), 2 bad input or usage.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitGateFailed = 1;
+inline constexpr int kExitBadInput = 2;
+
+/// Case files named on the command line (files or folders), or the bundled suite when
+/// none; all loaded and validated before any work starts. Throws CaseError.
+std::vector<Scene> load_cases(const std::vector<std::string>& paths);
+/// The bundled suite's folder.
+std::string bundled_cases_folder();
+
+/// Writes <dir>/<case>.json, .csv and .md, each through a temporary file.
+void write_case_outputs(const CaseResults& results, const std::string& dir);
+
+int list_command(const std::vector<std::string>& paths);
+int run_command(const std::vector<std::string>& paths, const std::string& out,
+                const RunOptions& options);
+int report_command(const std::vector<std::string>& paths, const std::string& out,
+                   const RunOptions& options);
+int check_command(const std::vector<std::string>& paths, const std::string& junit, int jobs);
+
+}  // namespace bb::cli

@@ -1,0 +1,108 @@
+// beachball: compare the course text's methods with Bullet, Box2D and ODE on the same scenes.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <thread>
+
+#include "cli/commands.hpp"
+#include "scene/case_error.hpp"
+
+namespace {
+
+/// Splits "a,b,c" into its parts.
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? comma : comma - start);
+    if (!part.empty()) out.push_back(part);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+/// "0.0166", "1/60" or "1e-3" as seconds.
+double parse_step(const std::string& text) {
+  std::size_t used = 0;
+  const auto slash = text.find('/');
+  try {
+    if (slash != std::string::npos) {
+      const double num = std::stod(text.substr(0, slash), &used);
+      const double den = std::stod(text.substr(slash + 1));
+      if (den > 0) return num / den;
+    } else {
+      const double v = std::stod(text, &used);
+      if (used == text.size() && v > 0) return v;
+    }
+  } catch (const std::exception&) {
+  }
+  throw bb::CaseError("--dt", 0, "'" + text + "' is not a step in seconds (write 0.01 or 1/60)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"beachball: the course text's game-physics methods beside Bullet, Box2D and ODE, "
+               "measured against a GSL reference"};
+  app.require_subcommand(1);
+  std::vector<std::string> cases;
+  std::string out, backends, dts, junit;
+  const int default_jobs = std::max(1u, std::thread::hardware_concurrency());
+  int jobs = default_jobs;
+  bool no_cost = false;
+  double cost_seconds = 0.05;
+
+  auto* list = app.add_subcommand("list", "cases, backends, and who supports what");
+  list->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
+
+  auto* run = app.add_subcommand("run", "run cases and write <out>/<case>.json, .csv and .md");
+  run->add_option("CASES", cases, "case files or folders")->required();
+  run->add_option("--out", out, "output folder")->default_val("out");
+  run->add_option("--backends", backends, "comma-separated backend names (default: all)");
+  run->add_option("--dt", dts, "comma-separated steps from the case's dt, e.g. 1/60,1/120");
+  run->add_option("--jobs", jobs, "accuracy runs in parallel")->default_val(default_jobs);
+  run->add_flag("--no-cost", no_cost, "skip the timing pass");
+  run->add_option("--cost-time", cost_seconds, "minimum timed seconds per run in the cost pass")
+      ->default_val(0.05);
+
+  auto* report = app.add_subcommand("report", "run the suite and write the report pages");
+  report->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
+  report->add_option("--out", out, "report folder")->default_val("reports");
+  report->add_option("--jobs", jobs, "accuracy runs in parallel")->default_val(default_jobs);
+  report->add_flag("--no-cost", no_cost, "skip the timing pass");
+  report->add_option("--cost-time", cost_seconds, "minimum timed seconds per run")->default_val(0.05);
+
+  auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
+  check->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
+  check->add_option("--junit", junit, "also write the gate results as JUnit XML");
+  check->add_option("--jobs", jobs, "runs in parallel")->default_val(default_jobs);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? bb::cli::kExitOk : bb::cli::kExitBadInput;
+  }
+
+  try {
+    bb::RunOptions options;
+    options.backends = split(backends);
+    for (const std::string& d : split(dts)) options.dts.push_back(parse_step(d));
+    options.jobs = std::max(1, jobs);
+    options.cost = !no_cost;
+    options.cost_options.min_seconds = cost_seconds;
+    if (*list) return bb::cli::list_command(cases);
+    if (*run) return bb::cli::run_command(cases, out, options);
+    if (*report) return bb::cli::report_command(cases, out, options);
+    if (*check) return bb::cli::check_command(cases, junit, options.jobs);
+  } catch (const bb::CaseError& e) {
+    fmt::print(stderr, "beachball: {}\n", e.what());
+    return bb::cli::kExitBadInput;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "beachball: error: {}\n", e.what());
+    return bb::cli::kExitBadInput;
+  }
+  return bb::cli::kExitBadInput;
+}

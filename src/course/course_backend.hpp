@@ -1,0 +1,21 @@
+// The course text's hand-written methods as a Backend: one integrator, one floor rule
+// and one friction rule per variant.
+#pragma once
+
+#include "scene/backend.hpp"
+#include "scene/backend_names.hpp"
+
+namespace bb {
+
+class CourseBackend : public Backend {
+ public:
+  explicit CourseBackend(CourseVariant variant) : variant_(std::move(variant)) {}
+  std::string name() const override { return variant_.name; }
+  FeatureSet supports() const override;
+  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override;
+
+ private:
+  CourseVariant variant_;
+};
+
+}  // namespace bb

@@ -1,0 +1,54 @@
+#include "metrics/errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "scene/motion.hpp"
+
+namespace bb {
+
+double ErrorMetrics::get(const std::string& name) const {
+  if (name == "position_max") return position_max;
+  if (name == "position_rms") return position_rms;
+  if (name == "position_final") return position_final;
+  if (name == "velocity_max") return velocity_max;
+  if (name == "energy_max") return energy_max;
+  throw std::invalid_argument("unknown error metric '" + name + "'");
+}
+
+ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory& reference) {
+  if (run.states.size() != reference.states.size())
+    throw std::invalid_argument("trajectories cover different samples");
+  const std::size_t bodies = scene.bodies.size();
+  ErrorMetrics m;
+  std::vector<double> sum_squares(bodies, 0.0);
+  const double energy_scale = std::max(std::abs(total_energy(scene, reference.states.front())), 1.0);
+  for (std::size_t j = 0; j < run.states.size(); ++j) {
+    const State& s = run.states[j];
+    const State& r = reference.states[j];
+    for (std::size_t i = 0; i < bodies; ++i) {
+      const double dx = norm(s[i].position - r[i].position);
+      m.position_max = std::max(m.position_max, dx);
+      m.velocity_max = std::max(m.velocity_max, norm(s[i].velocity - r[i].velocity));
+      sum_squares[i] += dx * dx;
+      if (j + 1 == run.states.size()) m.position_final = std::max(m.position_final, dx);
+    }
+    const double de = std::abs(total_energy(scene, s) - total_energy(scene, r)) / energy_scale;
+    m.energy_max = std::max(m.energy_max, de);
+  }
+  for (double ss : sum_squares)
+    m.position_rms = std::max(m.position_rms, std::sqrt(ss / static_cast<double>(run.states.size())));
+  return m;
+}
+
+double max_position_difference(const Trajectory& a, const Trajectory& b) {
+  double worst = 0.0;
+  const std::size_t n = std::min(a.states.size(), b.states.size());
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < a.states[j].size(); ++i)
+      worst = std::max(worst, norm(a.states[j][i].position - b.states[j][i].position));
+  return worst;
+}
+
+}  // namespace bb

@@ -1,0 +1,27 @@
+// Error norms of a run against the reference at the same sample times.
+#pragma once
+
+#include "metrics/trajectory.hpp"
+#include "scene/scene.hpp"
+
+namespace bb {
+
+/// Worst body, over every sample (DESIGN.md "Results").
+struct ErrorMetrics {
+  double position_max = 0.0;    ///< metres
+  double position_rms = 0.0;    ///< metres, RMS over samples of the worst body
+  double position_final = 0.0;  ///< metres, at the last sample
+  double velocity_max = 0.0;    ///< metres per second
+  double energy_max = 0.0;      ///< max |E - E_ref| / max(|E_ref(0)|, 1 J)
+
+  /// The metric called `name`; throws std::invalid_argument for an unknown one.
+  double get(const std::string& name) const;
+};
+
+/// Requires both trajectories to cover the same sample times.
+ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory& reference);
+
+/// Largest position difference (m) between two trajectories on the same samples.
+double max_position_difference(const Trajectory& a, const Trajectory& b);
+
+}  // namespace bb

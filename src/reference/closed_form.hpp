@@ -1,0 +1,16 @@
+// Closed forms the reference is checked against.
+#pragma once
+
+namespace bb::closed_form {
+
+/// Terminal speed (m/s) of a body of mass m (kg), drag coefficient cd and frontal area a
+/// (m^2) in air of density rho (kg/m^3) under gravity g (m/s^2): sqrt(2 m g / (rho cd a)).
+double terminal_speed(double m, double g, double rho, double cd, double a);
+
+/// Speed (m/s) after falling from rest for t seconds: vt tanh(g t / vt).
+double fall_speed(double vt, double g, double t);
+
+/// Distance (m) fallen from rest in t seconds: vt^2 / g ln cosh(g t / vt).
+double fall_distance(double vt, double g, double t);
+
+}  // namespace bb::closed_form

@@ -1,0 +1,88 @@
+#include "report/json_writer.hpp"
+
+namespace bb {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+template <typename T>
+Json optional_json(const std::optional<T>& v) {
+  return v ? Json(*v) : Json(nullptr);
+}
+
+Json settings_json(const Settings& settings) {
+  Json out = Json::object();
+  for (const auto& [key, value] : settings)
+    std::visit([&, &k = key](const auto& v) { out[k] = v; }, value);
+  return out;
+}
+
+Json run_json(const RunRecord& run) {
+  Json j;
+  j["backend"] = run.backend;
+  j["dt"] = optional_json(run.dt);
+  j["status"] = status_name(run.status);
+  j["reason"] = run.reason;
+  j["diverged_at"] = optional_json(run.diverged_at);
+  j["steps"] = run.steps;
+  if (run.cost)
+    j["cost"] = {{"ns_per_step", run.cost->ns_per_step},
+                 {"seconds_per_simulated_second", run.cost->seconds_per_simulated_second},
+                 {"repeats", run.cost->repeats}};
+  else
+    j["cost"] = nullptr;
+  if (run.errors)
+    j["errors"] = {{"position_max", run.errors->position_max},
+                   {"position_rms", run.errors->position_rms},
+                   {"position_final", run.errors->position_final},
+                   {"velocity_max", run.errors->velocity_max},
+                   {"energy_max", run.errors->energy_max}};
+  else
+    j["errors"] = nullptr;
+  j["observables"] = Json::object();
+  for (const ObservableResult& o : run.observables) {
+    Json v;
+    v["value"] = optional_json(o.measured.value);
+    v["reference"] = optional_json(o.reference);
+    v["error"] = o.measured.value && o.reference ? Json(*o.measured.value - *o.reference) : Json(nullptr);
+    if (!o.measured.note.empty()) v["note"] = o.measured.note;
+    j["observables"][o.name] = v;
+  }
+  j["engine_settings"] = settings_json(run.engine_settings);
+  return j;
+}
+
+}  // namespace
+
+Json results_json(const CaseResults& results) {
+  const Scene& scene = *results.scene;
+  Json j;
+  j["schema"] = "beachball-results/1";
+  j["case"] = scene.name;
+  j["title"] = scene.title;
+  j["seed"] = scene.seed;
+  j["sample"] = scene.sample;
+  j["report_dt"] = scene.report_dt;
+  j["versions"] = results.versions;
+  j["reference"] = {{"method", results.reference.method},
+                    {"tolerance", results.reference.tolerance},
+                    {"self_check", results.reference.self_check}};
+  j["runs"] = Json::array();
+  j["runs"].push_back(run_json(results.reference_run));
+  for (const RunRecord& run : results.runs) j["runs"].push_back(run_json(run));
+  j["order"] = Json::object();
+  for (const auto& [name, slope] : results.order) j["order"][name] = slope;
+  j["stability"] = Json::object();
+  j["gates"] = Json::array();
+  for (const GateResult& g : results.gates)
+    j["gates"].push_back({{"backend", g.gate.backend},
+                          {"metric", g.gate.metric},
+                          {"max", g.gate.max},
+                          {"value", optional_json(g.value)},
+                          {"passed", g.passed},
+                          {"note", g.note}});
+  return j;
+}
+
+}  // namespace bb

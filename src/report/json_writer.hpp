@@ -1,0 +1,12 @@
+// Results as JSON, schema "beachball-results/1" (DESIGN.md, a contract).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "run/results.hpp"
+
+namespace bb {
+
+nlohmann::ordered_json results_json(const CaseResults& results);
+
+}  // namespace bb

@@ -1,0 +1,57 @@
+#include "report/scene_description.hpp"
+
+#include <fmt/format.h>
+
+#include "report/format.hpp"
+#include "report/table.hpp"
+
+namespace bb {
+
+namespace {
+
+std::string vec(const Vec3& v, int dims) {
+  return dims == 2 ? fmt::format("({:g}, {:g})", v.x, v.y)
+                   : fmt::format("({:g}, {:g}, {:g})", v.x, v.y, v.z);
+}
+
+std::string shape_cell(const Body& b) {
+  switch (b.shape) {
+    case Shape::Sphere: return fmt::format("{} r = {:g} m", b.shell ? "shell" : "solid sphere", b.radius);
+    case Shape::Box:
+      return fmt::format("box {:g} x {:g} x {:g} m", 2 * b.half_extents.x, 2 * b.half_extents.y,
+                         2 * b.half_extents.z);
+    case Shape::Point: return "point";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string describe_scene(const Scene& scene) {
+  std::string dts;
+  for (double d : scene.dt) dts += (dts.empty() ? "" : ", ") + format_dt(d);
+  std::string out = fmt::format(
+      "- {}D, {:g} s simulated, sampled every {} s\n- steps swept: {} s; tables and gates use "
+      "report_dt = {} s\n- gravity {} m/s^2\n",
+      scene.dims, scene.duration, format_dt(scene.sample), dts, format_dt(scene.report_dt),
+      vec(scene.gravity, scene.dims));
+  if (scene.air)
+    out += fmt::format("- air density {:g} kg/m^3, wind {} m/s; drag F = -1/2 Cd A rho |v - w| (v - w), "
+                       "A = pi r^2; Magnus F = k (omega x (v - w))\n",
+                       scene.air->density, vec(scene.air->wind, scene.dims));
+  else
+    out += "- no air: no drag, no wind, no Magnus\n";
+  out += scene.ground ? "- a ground plane\n" : "- no ground: nothing to touch\n";
+  Table t;
+  t.headers = {"body", "shape", "mass kg", "Cd", "magnus k", "position m", "velocity m/s", "spin rad/s"};
+  t.right_aligned = {false, false, true, true, true, false, false, false};
+  for (const Body& b : scene.bodies)
+    t.rows.push_back({b.name, shape_cell(b), b.fixed ? "fixed" : fmt::format("{:g}", b.mass),
+                      fmt::format("{:g}", b.drag_coefficient), fmt::format("{:g}", b.magnus),
+                      vec(b.position, scene.dims), vec(b.velocity, scene.dims),
+                      scene.dims == 2 ? fmt::format("{:g}", b.angular_velocity.z)
+                                      : vec(b.angular_velocity, 3)});
+  return out + "\n" + render_markdown(t);
+}
+
+}  // namespace bb

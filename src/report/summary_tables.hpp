@@ -1,0 +1,21 @@
+// The tables a reader looks at first, shared by the terminal and the Markdown page.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/table.hpp"
+#include "run/results.hpp"
+
+namespace bb {
+
+/// One row per backend at `dt` (the reference first): errors, observables, cost, order.
+Table summary_table(const CaseResults& results, double dt);
+/// Why runs at `dt` that are not ok ended as they did, one line each.
+std::vector<std::string> run_notes(const CaseResults& results, double dt);
+/// Every run of the sweep, one row per (backend, dt).
+Table sweep_table(const CaseResults& results);
+/// One row per gate: backend, metric, value, limit, pass or fail.
+Table gate_table(const CaseResults& results);
+
+}  // namespace bb

@@ -1,0 +1,58 @@
+#include "run/accuracy_run.hpp"
+
+#include "run/divergence.hpp"
+#include "scene/motion.hpp"
+
+namespace bb {
+
+std::string missing_features(const Backend& backend, const Scene& scene) {
+  std::string out;
+  for (Feature f : scene.features().missing_from(backend.supports()))
+    out += (out.empty() ? "" : ", ") + feature_name(f);
+  return out;
+}
+
+RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
+  RunRecord record;
+  record.backend = backend.name();
+  record.dt = dt;
+  if (const std::string missing = missing_features(backend, scene); !missing.empty()) {
+    record.status = RunStatus::Unsupported;
+    record.reason = "does not support: " + missing;
+    return record;
+  }
+  try {
+    const auto sim = backend.start(scene, dt);
+    record.engine_settings = sim->settings();
+    const int per_sample = scene.steps_per_sample(dt);
+    const int samples = scene.sample_count();
+    const DivergenceBounds bounds = divergence_bounds(scene);
+    State state(scene.bodies.size());
+    sim->read(state);
+    const double initial_energy = total_energy(scene, state);
+    record.trajectory.times.push_back(0.0);
+    record.trajectory.states.push_back(state);
+    for (int j = 1; j <= samples; ++j) {
+      for (int k = 0; k < per_sample; ++k) sim->step();
+      record.steps += per_sample;
+      sim->read(state);
+      // Simulated time is a step count times dt, never a running sum.
+      const double t = static_cast<double>(record.steps) * dt;
+      record.trajectory.times.push_back(t);
+      record.trajectory.states.push_back(state);
+      if (auto why = divergence(scene, bounds, state, initial_energy)) {
+        record.status = RunStatus::Diverged;
+        record.reason = *why;
+        record.diverged_at = t;
+        break;
+      }
+    }
+    if (auto internal = sim->internal_steps()) record.steps = *internal;
+  } catch (const std::exception& e) {
+    record.status = RunStatus::Error;
+    record.reason = e.what();
+  }
+  return record;
+}
+
+}  // namespace bb

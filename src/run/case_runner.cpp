@@ -1,0 +1,164 @@
+#include "run/case_runner.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "metrics/order.hpp"
+#include "run/accuracy_run.hpp"
+#include "run/gates.hpp"
+#include "run/parallel.hpp"
+#include "scene/backend_names.hpp"
+#include "scene/case_error.hpp"
+
+namespace bb {
+
+namespace {
+
+/// Reference errors below this many times its self-check are noise for the order fit.
+constexpr double kFloorFactor = 10.0;
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+bool wanted(const RunOptions& options, const std::string& name) {
+  return options.backends.empty() ||
+         std::find(options.backends.begin(), options.backends.end(), name) != options.backends.end();
+}
+
+/// The case's steps that the options select, largest first.
+std::vector<double> selected_dts(const Scene& scene, const RunOptions& options) {
+  if (options.dts.empty()) return scene.dt;
+  std::vector<double> out;
+  for (double asked : options.dts) {
+    const auto match = std::find_if(scene.dt.begin(), scene.dt.end(),
+                                    [&](double d) { return std::abs(d - asked) <= 1e-9 * d; });
+    if (match == scene.dt.end())
+      throw CaseError(scene.file, 0, "--dt " + std::to_string(asked) + " is not one of the case's dt");
+    if (std::find(out.begin(), out.end(), *match) == out.end()) out.push_back(*match);
+  }
+  std::sort(out.begin(), out.end(), std::greater<>());
+  return out;
+}
+
+void check_backend_names(const Scene& scene, const RunOptions& options) {
+  const std::vector<std::string> known = backend_names(scene);
+  for (const std::string& name : options.backends)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw CaseError(scene.file, 0, "--backends names '" + name + "', which this case does not run; it runs: " + joined(known));
+}
+
+void add_observables(const Scene& scene, RunRecord& run, const RunRecord& reference) {
+  for (const Observe& o : scene.observes) {
+    ObservableResult r{o.name, {}, std::nullopt};
+    if (run.status == RunStatus::Ok)
+      r.measured = measure(scene, o, run.trajectory);
+    else
+      r.measured.note = "run " + status_name(run.status);
+    if (reference.status == RunStatus::Ok)
+      r.reference = measure(scene, o, reference.trajectory).value;
+    run.observables.push_back(r);
+  }
+}
+
+void add_cost(const Backend& backend, const Scene& scene, RunRecord& run,
+              const CostOptions& options) {
+  if (run.status != RunStatus::Ok && run.status != RunStatus::Diverged) return;
+  // The reference is stepped sample by sample; its cost per step is per internal step.
+  const double dt = run.dt ? *run.dt : scene.sample;
+  const long calls = run.dt ? run.steps : scene.sample_count();
+  const Timing t = time_steps(backend, scene, dt, calls, options);
+  Cost c;
+  c.repeats = t.repeats;
+  c.ns_per_step = run.steps > 0 ? t.median_seconds * 1e9 / static_cast<double>(run.steps) : 0.0;
+  c.seconds_per_simulated_second = t.median_seconds / (static_cast<double>(calls) * dt);
+  run.cost = c;
+}
+
+}  // namespace
+
+CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options) {
+  check_backend_names(scene, options);
+  const std::vector<double> dts = selected_dts(scene, options);
+  CaseResults out;
+  out.scene = &scene;
+  out.versions["beachball"] = BEACHBALL_VERSION;
+
+  // The reference, and the same solve 100 times tighter to measure its own error.
+  const ReferenceBackend& reference = registry.reference();
+  out.reference_run = run_accuracy(reference, scene, scene.sample);
+  out.reference_run.dt.reset();
+  const ReferenceBackend tighter(reference.tolerance() / 100.0);
+  const RunRecord tight = run_accuracy(tighter, scene, scene.sample);
+  out.reference = {ReferenceBackend::method(), reference.tolerance(),
+                   max_position_difference(out.reference_run.trajectory, tight.trajectory)};
+  out.versions[reference.library_version().first] = reference.library_version().second;
+  add_observables(scene, out.reference_run, out.reference_run);
+
+  // Every selected backend at every selected dt, accuracy runs in parallel.
+  const BackendSet set = backends_for(scene, registry);
+  std::vector<std::pair<const Backend*, double>> jobs;
+  for (const Backend* b : set.all) {
+    if (!wanted(options, b->name())) continue;
+    if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
+    for (double dt : dts) jobs.push_back({b, dt});
+  }
+  out.runs.resize(jobs.size());
+  parallel_for(static_cast<int>(jobs.size()), options.jobs, [&](int i) {
+    out.runs[i] = run_accuracy(*jobs[i].first, scene, jobs[i].second);
+  });
+  // Engines that were not built still get a row, so a reader sees why they are absent.
+  for (const auto& [name, why] : registry.missing_engines()) {
+    const bool asked = !options.backends.empty() && wanted(options, name);
+    if (!asked && (name == "mujoco" || !options.backends.empty())) continue;
+    for (double dt : dts) {
+      RunRecord r;
+      r.backend = name;
+      r.dt = dt;
+      r.status = RunStatus::Unsupported;
+      r.reason = why;
+      out.runs.push_back(r);
+    }
+  }
+
+  for (RunRecord& run : out.runs) {
+    if (run.status == RunStatus::Ok && out.reference_run.status == RunStatus::Ok)
+      run.errors = compare(scene, run.trajectory, out.reference_run.trajectory);
+    add_observables(scene, run, out.reference_run);
+  }
+
+  // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
+  if (options.cost) {
+    add_cost(reference, scene, out.reference_run, options.cost_options);
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+      add_cost(*jobs[i].first, scene, out.runs[i], options.cost_options);
+  }
+
+  // Observed order of position_max over the dt sweep, per backend.
+  const double floor = kFloorFactor * out.reference.self_check;
+  std::map<std::string, std::vector<ErrorPoint>> points;
+  for (const RunRecord& run : out.runs)
+    if (run.errors) points[run.backend].push_back({*run.dt, run.errors->position_max});
+  for (const auto& [name, series] : points)
+    if (auto slope = fit_order(series, floor)) out.order[name] = *slope;
+
+  out.gates = evaluate_gates(scene, out);
+  return out;
+}
+
+CaseResults run_gates(const Scene& scene, const Registry& registry, int jobs) {
+  RunOptions options;
+  for (const Gate& g : scene.gates) {
+    auto& names = options.backends;
+    if (std::find(names.begin(), names.end(), g.backend) == names.end()) names.push_back(g.backend);
+  }
+  options.dts = {scene.report_dt};
+  options.jobs = jobs;
+  options.cost = false;
+  if (options.backends.empty()) options.backends.push_back("reference");
+  return run_case(scene, registry, options);
+}
+
+}  // namespace bb

@@ -1,0 +1,28 @@
+// Everything `beachball run` does for one case: the reference, every backend at every dt,
+// the metrics against the reference, the cost pass, the fitted orders and the gates.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "run/cost.hpp"
+#include "run/registry.hpp"
+#include "run/results.hpp"
+
+namespace bb {
+
+struct RunOptions {
+  std::vector<std::string> backends;  ///< empty: all; "reference" is always run
+  std::vector<double> dts;            ///< empty: the case's sweep
+  int jobs = 1;                       ///< accuracy runs in parallel
+  bool cost = true;                   ///< run the serial cost pass
+  CostOptions cost_options;
+};
+
+/// Throws CaseError when an option names a backend or dt the case does not have.
+CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options);
+
+/// Runs only what the case's gates need (report_dt, gated backends) and checks them.
+CaseResults run_gates(const Scene& scene, const Registry& registry, int jobs);
+
+}  // namespace bb

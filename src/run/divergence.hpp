@@ -1,0 +1,24 @@
+// When a run has diverged: NaN or Inf, or a body beyond what the scene allows.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.hpp"
+#include "scene/state.hpp"
+
+namespace bb {
+
+/// Bounds derived from the scene, each ten times what the physics can reach.
+struct DivergenceBounds {
+  double travel = 0.0;  ///< metres from a body's start
+  double energy = 0.0;  ///< joules of |E - E(0)|
+};
+
+DivergenceBounds divergence_bounds(const Scene& scene);
+
+/// Why `state` counts as diverged, or nullopt when it does not.
+std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds& bounds,
+                                      const State& state, double initial_energy);
+
+}  // namespace bb

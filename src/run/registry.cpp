@@ -1,0 +1,78 @@
+#include "run/registry.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "course/course_backend.hpp"
+#include "scene/backend_names.hpp"
+#include "scene/plugin_api.hpp"
+
+namespace bb {
+
+// A loaded shared object. Plugins are never unloaded: engine libraries keep global
+// state that does not survive dlclose reliably, and the process ends soon anyway.
+struct Registry::Plugin {
+  void* handle = nullptr;
+};
+
+Registry::Registry(Registry&&) noexcept = default;
+Registry& Registry::operator=(Registry&&) noexcept = default;
+Registry::~Registry() = default;
+
+std::string plugin_folder() {
+  if (const char* env = std::getenv("BEACHBALL_PLUGIN_DIR"); env && *env) return env;
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("plugins") : (exe.parent_path() / "plugins").string();
+}
+
+Registry Registry::load() {
+  Registry r;
+  const std::filesystem::path folder = plugin_folder();
+  for (const std::string& name : engine_backend_names()) {
+    const std::filesystem::path path = folder / ("beachball-" + name + ".so");
+    if (!std::filesystem::exists(path)) {
+      r.missing_.push_back({name, "not built: its Debian package was not found at build time"});
+      continue;
+    }
+    // RTLD_LOCAL keeps each plugin's engine symbols apart: bullet and bullet-float link
+    // libraries that define the same names with different layouts.
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (handle == nullptr) {
+      r.missing_.push_back({name, std::string("plugin failed to load: ") + dlerror()});
+      continue;
+    }
+    auto create = reinterpret_cast<bb::Backend* (*)()>(dlsym(handle, BEACHBALL_PLUGIN_ENTRY));
+    if (create == nullptr) {
+      r.missing_.push_back({name, "plugin has no " BEACHBALL_PLUGIN_ENTRY});
+      continue;
+    }
+    r.plugins_.push_back(std::make_unique<Plugin>(Plugin{handle}));
+    r.engines_.emplace_back(create());
+  }
+  return r;
+}
+
+std::vector<const Backend*> Registry::engines() const {
+  std::vector<const Backend*> out;
+  for (const auto& e : engines_) out.push_back(e.get());
+  return out;
+}
+
+void Registry::add_engine(std::unique_ptr<Backend> backend) {
+  engines_.push_back(std::move(backend));
+}
+
+BackendSet backends_for(const Scene& scene, const Registry& registry) {
+  BackendSet set;
+  for (const CourseVariant& v : course_variants(scene))
+    set.owned.push_back(std::make_unique<CourseBackend>(v));
+  for (const auto& b : set.owned) set.all.push_back(b.get());
+  for (const Backend* e : registry.engines()) set.all.push_back(e);
+  return set;
+}
+
+}  // namespace bb

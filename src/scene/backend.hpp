@@ -1,0 +1,49 @@
+// The seam every simulator sits behind: a Backend starts a Simulation of one scene
+// at one fixed step; the runner steps it and reads its state.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "scene/features.hpp"
+#include "scene/scene.hpp"
+#include "scene/state.hpp"
+
+namespace bb {
+
+/// A value an engine setting took in a run: a number, a switch or a description.
+using SettingValue = std::variant<double, bool, std::string>;
+/// Every engine parameter that changes results, as actually used, in a stable order.
+using Settings = std::vector<std::pair<std::string, SettingValue>>;
+
+/// One scene advancing at one fixed step.
+class Simulation {
+ public:
+  virtual ~Simulation() = default;
+  /// Advance by dt.
+  virtual void step() = 0;
+  /// Copy the current state of every body into `out` (resized by the caller to the body count).
+  virtual void read(State& out) const = 0;
+  /// The engine settings this run used.
+  virtual Settings settings() const { return {}; }
+  /// Steps an adaptive solver took internally so far; nullopt for fixed-step backends.
+  virtual std::optional<long> internal_steps() const { return std::nullopt; }
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  /// "bullet", "course/velocity-verlet", "reference", ...
+  virtual std::string name() const = 0;
+  virtual FeatureSet supports() const = 0;
+  /// Library and version, e.g. {"bullet", "3.24"}; empty name for none.
+  virtual std::pair<std::string, std::string> library_version() const { return {}; }
+  /// Start a run of `scene` at step `dt`; the scene outlives the simulation.
+  virtual std::unique_ptr<Simulation> start(const Scene& scene, double dt) const = 0;
+};
+
+}  // namespace bb

@@ -1,0 +1,30 @@
+// The names backends go by for a given case, derived from its [course] section.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace bb {
+
+/// A course backend: an integrator, a floor rule and a friction rule (seed sections 1, 3, 6).
+struct CourseVariant {
+  std::string name;        ///< "course/semi-implicit-euler", maybe with "+reflect" etc.
+  std::string integrator;  ///< "explicit-euler" | "semi-implicit-euler" | "velocity-verlet" | "rk4"
+  std::string ground;      ///< "reflect" | "clamp" | "mirror"
+  std::string friction;    ///< "naive" | "clamp" | "low-speed"
+};
+
+const std::vector<std::string>& known_integrators();
+const std::vector<std::string>& known_ground_rules();
+const std::vector<std::string>& known_friction_rules();
+/// The engines' backend names, whether built or not.
+const std::vector<std::string>& engine_backend_names();
+
+/// Every course variant the case asks for, in a stable order.
+std::vector<CourseVariant> course_variants(const Scene& scene);
+/// Every backend name the case could run: reference, course variants, engines.
+std::vector<std::string> backend_names(const Scene& scene);
+
+}  // namespace bb

@@ -1,0 +1,110 @@
+// [[body]] tables of a case file.
+#include <cmath>
+#include <numbers>
+#include <regex>
+
+#include "scene/load_parts.hpp"
+
+namespace bb::load {
+
+namespace {
+
+Shape read_shape(TomlReader& r) {
+  const std::string shape = r.string_or("shape", "sphere");
+  if (shape == "sphere") return Shape::Sphere;
+  if (shape == "box") return Shape::Box;
+  if (shape == "point") return Shape::Point;
+  r.fail(r.line_of("shape"), "'shape' must be sphere, box or point, not '" + shape + "'");
+}
+
+/// Keys that belong to one shape only, rejected with a clear word on the others.
+void reject_foreign_key(TomlReader& r, const std::string& key, const std::string& owner) {
+  if (r.has(key))
+    r.fail(r.line_of(key), "'" + key + "' belongs to a " + owner + "; " + r.where() +
+                               " is not one");
+}
+
+void read_geometry(TomlReader& r, Body& b) {
+  if (b.shape == Shape::Sphere) {
+    b.radius = r.number("radius");
+    require_range(r, "radius", b.radius, 0.0, 0.0, false);
+  } else {
+    reject_foreign_key(r, "radius", "sphere");
+  }
+  if (b.shape == Shape::Box) {
+    b.half_extents = r.vec3("half_extents");
+    if (b.half_extents.x <= 0.0 || b.half_extents.y <= 0.0 || b.half_extents.z <= 0.0)
+      r.fail(r.line_of("half_extents"), "every 'half_extents' in " + r.where() +
+                                            " must be greater than 0");
+  } else {
+    reject_foreign_key(r, "half_extents", "box");
+  }
+  if (b.shape != Shape::Sphere) reject_foreign_key(r, "shell", "sphere");
+  b.shell = r.boolean_or("shell", false);
+}
+
+void read_orientation(TomlReader& r, const Scene& scene, Body& b) {
+  if (scene.dims == 2) {
+    if (r.has("orientation"))
+      r.fail(r.line_of("orientation"), "'orientation' is for 3D cases; a 2D body uses 'angle' (degrees about z)");
+    const double degrees = r.number_or("angle", 0.0);
+    b.orientation = quat_from_axis_angle({0, 0, 1}, degrees * std::numbers::pi / 180.0);
+  } else {
+    if (r.has("angle"))
+      r.fail(r.line_of("angle"), "'angle' is for 2D cases; a 3D body uses 'orientation' = [w, x, y, z]");
+    if (r.has("orientation")) {
+      const std::vector<double> q = r.numbers("orientation", 4);
+      const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+      if (n < 1e-12) r.fail(r.line_of("orientation"), "'orientation' must not be all zeros");
+      b.orientation = normalized({q[0], q[1], q[2], q[3]});
+    }
+  }
+  b.angular_velocity = r.vec3_or("angular_velocity", {});
+  if (scene.dims == 2 && (b.angular_velocity.x != 0.0 || b.angular_velocity.y != 0.0))
+    r.fail(r.line_of("angular_velocity"),
+           "a 2D body spins about z only: 'angular_velocity' must be [0, 0, wz]");
+}
+
+void read_air_coefficients(TomlReader& r, const Scene& scene, Body& b) {
+  b.drag_coefficient = r.number_or("drag_coefficient", 0.0);
+  require_range(r, "drag_coefficient", b.drag_coefficient, 0.0, 0.0);
+  b.magnus = r.number_or("magnus", 0.0);
+  if (b.drag_coefficient > 0.0 && b.shape != Shape::Sphere)
+    r.fail(r.line_of("drag_coefficient"), "drag needs a frontal area: only a sphere has one (A = pi r^2)");
+  if (b.magnus != 0.0 && b.shape == Shape::Point)
+    r.fail(r.line_of("magnus"), "a point does not spin, so it feels no Magnus force");
+  if ((b.drag_coefficient > 0.0 || b.magnus != 0.0) && !scene.air)
+    r.fail(r.line_of(b.drag_coefficient > 0.0 ? "drag_coefficient" : "magnus"),
+           r.where() + " has air coefficients but the case has no [air] section");
+}
+
+}  // namespace
+
+void read_bodies(TomlReader& root, Scene& scene) {
+  for (const toml::table* t : root.tables("body")) {
+    TomlReader r = sub_reader(root, *t, "[[body]]");
+    Body b;
+    b.line = r.line();
+    b.name = r.string("name");
+    static const std::regex name_pattern("[A-Za-z0-9_.-]+");
+    if (!std::regex_match(b.name, name_pattern))
+      r.fail(r.line_of("name"),
+             "a body name uses only letters, digits, '_', '.' and '-', not '" + b.name + "'");
+    r.rename("[[body]] '" + b.name + "'");
+    b.shape = read_shape(r);
+    read_geometry(r, b);
+    b.fixed = r.boolean_or("fixed", false);
+    b.mass = b.fixed ? r.number_or("mass", 0.0) : r.number("mass");
+    require_range(r, "mass", b.mass, 0.0, 0.0, b.fixed);
+    b.position = r.vec3_or("position", {});
+    require_planar(r, scene, "position", b.position);
+    b.velocity = r.vec3_or("velocity", {});
+    require_planar(r, scene, "velocity", b.velocity);
+    read_orientation(r, scene, b);
+    read_air_coefficients(r, scene, b);
+    r.finish();
+    scene.bodies.push_back(b);
+  }
+}
+
+}  // namespace bb::load

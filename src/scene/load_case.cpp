@@ -1,0 +1,143 @@
+#include "scene/load_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
+
+#include "scene/load_parts.hpp"
+
+namespace bb {
+
+namespace {
+
+/// True when `ratio` is within rounding of a whole number >= 1.
+bool is_whole(double ratio) {
+  const double r = std::round(ratio);
+  return r >= 1.0 && std::abs(ratio - r) <= 1e-9 * r;
+}
+
+std::string show(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+void read_timing(TomlReader& root, Scene& scene) {
+  scene.duration = root.number("duration");
+  load::require_range(root, "duration", scene.duration, 0.0, 0.0, false);
+  scene.sample = root.number("sample");
+  load::require_range(root, "sample", scene.sample, 0.0, 0.0, false);
+  if (!is_whole(scene.duration / scene.sample))
+    root.fail(root.line_of("duration"),
+              "'duration' (" + show(scene.duration) + " s) must be a whole number of samples of " +
+                  show(scene.sample) + " s");
+  scene.dt = root.numbers("dt");
+  for (double step : scene.dt) {
+    if (step <= 0.0) root.fail(root.line_of("dt"), "every 'dt' must be greater than 0");
+    if (step > scene.duration)
+      root.fail(root.line_of("dt"), "'dt' " + show(step) + " s is longer than the duration");
+    if (!is_whole(scene.sample / step))
+      root.fail(root.line_of("dt"), "'dt' " + show(step) + " s does not divide 'sample' (" +
+                                        show(scene.sample) + " s) into whole steps");
+  }
+  // The sweep runs from the largest step to the smallest.
+  std::sort(scene.dt.begin(), scene.dt.end(), std::greater<>());
+  if (std::adjacent_find(scene.dt.begin(), scene.dt.end()) != scene.dt.end())
+    root.fail(root.line_of("dt"), "'dt' lists the same step twice");
+  if (!root.has("report_dt") && scene.dt.size() > 1)
+    root.fail(root.line(), "the case needs the key 'report_dt' (one of 'dt') when 'dt' has several steps");
+  const double report = root.number_or("report_dt", scene.dt.front());
+  const auto match = std::find_if(scene.dt.begin(), scene.dt.end(), [&](double step) {
+    return std::abs(step - report) <= 1e-12 * step;
+  });
+  if (match == scene.dt.end())
+    root.fail(root.line_of("report_dt"), "'report_dt' " + show(report) + " s is not one of 'dt'");
+  scene.report_dt = *match;
+}
+
+void read_header(TomlReader& root, Scene& scene) {
+  scene.name = root.string("name");
+  static const std::regex name_pattern("[a-z0-9_]+");
+  if (!std::regex_match(scene.name, name_pattern))
+    root.fail(root.line_of("name"),
+              "'name' must use only a-z, 0-9 and _ (it names the output files), not '" +
+                  scene.name + "'");
+  scene.title = root.string_or("title", scene.name);
+  scene.seed = root.string_or("seed", "");
+  scene.dims = root.integer("dims");
+  if (scene.dims != 2 && scene.dims != 3)
+    root.fail(root.line_of("dims"), "'dims' must be 2 or 3, not " + std::to_string(scene.dims));
+  scene.gravity = root.vec3_or("gravity", scene.gravity);
+  load::require_planar(root, scene, "gravity", scene.gravity);
+}
+
+void reject_duplicate_bodies(const TomlReader& root, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (scene.bodies[i].name == scene.bodies[j].name)
+        root.fail(scene.bodies[i].line, "body name '" + scene.bodies[i].name +
+                                            "' is used twice (first on line " +
+                                            std::to_string(scene.bodies[j].line) + ")");
+}
+
+}  // namespace
+
+Scene parse_case(std::string_view text, const std::string& file) {
+  toml::table table;
+  try {
+    table = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw CaseError(file, static_cast<int>(e.source().begin.line),
+                    "not valid TOML: " + std::string(e.description()));
+  }
+  Scene scene;
+  scene.file = file;
+  TomlReader root(table, file, "the case", 1);
+  // The order matters: bodies come before what refers to them, names before gates.
+  read_header(root, scene);
+  read_timing(root, scene);
+  load::read_air_and_ground(root, scene);
+  load::read_bodies(root, scene);
+  load::read_grid(root, scene);
+  if (scene.bodies.empty()) root.fail(root.line(), "the case has no [[body]] and no [grid]");
+  reject_duplicate_bodies(root, scene);
+  load::read_contacts(root, scene);
+  load::read_springs(root, scene);
+  load::read_hinges(root, scene);
+  load::read_course(root, scene);
+  load::read_engines(root, scene);
+  load::read_observes(root, scene);
+  load::read_gates(root, scene);
+  root.finish();
+  return scene;
+}
+
+Scene load_case(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw CaseError(path, 0, "no such file");
+  if (fs::is_directory(status))
+    throw CaseError(path, 0, "is a directory; give a case file (.toml)");
+  if (!fs::is_regular_file(status)) throw CaseError(path, 0, "is not a regular file");
+  const auto size = fs::file_size(path, ec);
+  if (ec) throw CaseError(path, 0, "cannot be read: " + ec.message());
+  if (size > kMaxCaseFileBytes)
+    throw CaseError(path, 0,
+                    "is " + std::to_string(size / 1024) +
+                        " KiB; a case file may be at most 1 MiB (a scene is a few kilobytes)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CaseError(path, 0, "cannot be opened for reading");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (text.str().find_first_not_of(" \t\r\n") == std::string::npos)
+    throw CaseError(path, 0, "is empty; a case needs at least name, dims, duration, sample, dt and a [[body]]");
+  return parse_case(text.str(), path);
+}
+
+}  // namespace bb

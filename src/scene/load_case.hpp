@@ -1,0 +1,22 @@
+// Reading and validating a case file. Every problem is a CaseError naming file and line.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "scene/scene.hpp"
+
+namespace bb {
+
+/// Largest case file accepted, in bytes.
+inline constexpr std::size_t kMaxCaseFileBytes = 1 << 20;
+/// Most particles a [grid] may generate.
+inline constexpr long kMaxGridParticles = 20000;
+
+/// Load the case at `path`; throws CaseError.
+Scene load_case(const std::string& path);
+
+/// Parse case text; `file` names it in messages. Throws CaseError.
+Scene parse_case(std::string_view text, const std::string& file);
+
+}  // namespace bb

@@ -1,0 +1,112 @@
+// [air], [ground], [[contact]], [[spring]] and [[hinge]] of a case file.
+#include "scene/load_parts.hpp"
+
+namespace bb::load {
+
+namespace {
+
+/// A ["a", "b"] pair of distinct known bodies; also ["*"] when `star` is allowed.
+std::pair<int, int> read_pair(TomlReader& r, const Scene& scene, bool star, bool& all_pairs) {
+  const std::vector<std::string> names = r.strings("bodies");
+  const int line = r.line_of("bodies");
+  all_pairs = star && names.size() == 1 && names[0] == "*";
+  if (all_pairs) return {-1, -1};
+  if (names.size() != 2)
+    r.fail(line, "'bodies' in " + r.where() + " must name two bodies" +
+                     (star ? std::string(" (or be [\"*\"] for every pair)") : std::string()));
+  const int a = require_body(r, scene, names[0], line);
+  const int b = require_body(r, scene, names[1], line);
+  if (a == b) r.fail(line, r.where() + " joins body '" + names[0] + "' to itself");
+  return {a, b};
+}
+
+}  // namespace
+
+void read_air_and_ground(TomlReader& root, Scene& scene) {
+  if (const toml::table* t = root.table("air")) {
+    TomlReader r = sub_reader(root, *t, "[air]");
+    Air air;
+    air.density = r.number_or("density", air.density);
+    require_range(r, "density", air.density, 0.0, 0.0);
+    air.wind = r.vec3_or("wind", {});
+    require_planar(r, scene, "wind", air.wind);
+    r.finish();
+    scene.air = air;
+  }
+  if (const toml::table* t = root.table("ground")) {
+    TomlReader r = sub_reader(root, *t, "[ground]");
+    Ground g;
+    g.point = r.vec3_or("point", {});
+    require_planar(r, scene, "point", g.point);
+    const Vec3 normal = r.vec3_or("normal", g.normal);
+    require_planar(r, scene, "normal", normal);
+    g.normal = unit_vector(r, "normal", normal);
+    g.restitution = r.number_or("restitution", 0.0);
+    require_range(r, "restitution", g.restitution, 0.0, 1.0);
+    g.friction_static = r.number_or("friction_static", 0.0);
+    require_range(r, "friction_static", g.friction_static, 0.0, 0.0);
+    g.friction_kinetic = r.number_or("friction_kinetic", g.friction_static);
+    require_range(r, "friction_kinetic", g.friction_kinetic, 0.0, 0.0);
+    r.finish();
+    scene.ground = g;
+  }
+}
+
+void read_contacts(TomlReader& root, Scene& scene) {
+  for (const toml::table* t : root.tables("contact")) {
+    TomlReader r = sub_reader(root, *t, "[[contact]]");
+    Contact c;
+    c.line = r.line();
+    const auto [a, b] = read_pair(r, scene, true, c.all_pairs);
+    c.body_a = a;
+    c.body_b = b;
+    c.restitution = r.number_or("restitution", 0.0);
+    require_range(r, "restitution", c.restitution, 0.0, 1.0);
+    c.friction = r.number_or("friction", 0.0);
+    require_range(r, "friction", c.friction, 0.0, 0.0);
+    r.finish();
+    scene.contacts.push_back(c);
+  }
+}
+
+void read_springs(TomlReader& root, Scene& scene) {
+  for (const toml::table* t : root.tables("spring")) {
+    TomlReader r = sub_reader(root, *t, "[[spring]]");
+    Spring s;
+    s.line = r.line();
+    bool unused = false;
+    const auto [a, b] = read_pair(r, scene, false, unused);
+    s.body_a = a;
+    s.body_b = b;
+    s.stiffness = r.number("stiffness");
+    require_range(r, "stiffness", s.stiffness, 0.0, 0.0, false);
+    s.damping = r.number_or("damping", 0.0);
+    require_range(r, "damping", s.damping, 0.0, 0.0);
+    s.rest_length = r.number_or("rest_length", norm(scene.bodies[a].position - scene.bodies[b].position));
+    require_range(r, "rest_length", s.rest_length, 0.0, 0.0);
+    r.finish();
+    scene.springs.push_back(s);
+  }
+}
+
+void read_hinges(TomlReader& root, Scene& scene) {
+  for (const toml::table* t : root.tables("hinge")) {
+    TomlReader r = sub_reader(root, *t, "[[hinge]]");
+    Hinge h;
+    h.line = r.line();
+    const std::string body = r.string("body");
+    h.body = require_body(r, scene, body, r.line_of("body"));
+    if (scene.bodies[h.body].fixed)
+      r.fail(r.line_of("body"), "[[hinge]] on body '" + body + "', which is fixed and cannot turn");
+    h.anchor = r.vec3("anchor");
+    require_planar(r, scene, "anchor", h.anchor);
+    const Vec3 axis = r.vec3_or("axis", h.axis);
+    if (scene.dims == 2 && (axis.x != 0.0 || axis.y != 0.0))
+      r.fail(r.line_of("axis"), "in a 2D case a hinge turns about z: 'axis' must be [0, 0, 1]");
+    h.axis = unit_vector(r, "axis", axis);
+    r.finish();
+    scene.hinges.push_back(h);
+  }
+}
+
+}  // namespace bb::load

@@ -1,0 +1,25 @@
+#include "scene/metric_names.hpp"
+
+#include <algorithm>
+
+namespace bb {
+
+const std::vector<std::string>& error_metric_names() {
+  static const std::vector<std::string> v = {"position_max", "position_rms", "position_final",
+                                             "velocity_max", "energy_max"};
+  return v;
+}
+
+const std::vector<std::string>& observable_kinds() {
+  static const std::vector<std::string> v = {
+      "terminal_velocity", "stop_time",     "stop_distance",         "rest_creep",
+      "bounce_apex",       "contact_time",  "post_velocity",         "post_angular_velocity",
+      "period",            "max_penetration", "final_angle"};
+  return v;
+}
+
+bool observable_is_counted(const std::string& kind) {
+  return kind == "bounce_apex" || kind == "contact_time";
+}
+
+}  // namespace bb

@@ -1,0 +1,18 @@
+// Names of the error metrics and observable kinds results may carry.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bb {
+
+/// position_max, position_rms, position_final, velocity_max, energy_max.
+const std::vector<std::string>& error_metric_names();
+
+/// Every observable kind of DESIGN.md ("terminal_velocity", "bounce_apex", ...).
+const std::vector<std::string>& observable_kinds();
+
+/// Kinds that count events and take an `n` (the n-th bounce, contact, ...).
+bool observable_is_counted(const std::string& kind);
+
+}  // namespace bb

@@ -1,0 +1,75 @@
+#include "scene/scene.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace bb {
+
+int Scene::sample_count() const { return static_cast<int>(std::llround(duration / sample)); }
+
+int Scene::steps_per_sample(double step) const {
+  return static_cast<int>(std::llround(sample / step));
+}
+
+int Scene::body_index(const std::string& body_name) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == body_name) return static_cast<int>(i);
+  return -1;
+}
+
+FeatureSet Scene::features() const {
+  FeatureSet f;
+  if (dims == 3) f.add(Feature::ThreeD);
+  if (norm(gravity) > 0.0) f.add(Feature::Gravity);
+  bool drag = false;
+  bool magnus_used = false;
+  for (const Body& b : bodies) {
+    if (b.fixed) continue;
+    if (air && air->density > 0.0 && b.drag_coefficient > 0.0) drag = true;
+    if (air && b.magnus != 0.0) magnus_used = true;
+    if (norm(b.angular_velocity) > 0.0) f.add(Feature::Rotation);
+    if (b.shape == Shape::Box) f.add(Feature::Boxes);
+  }
+  if (drag) f.add(Feature::Drag);
+  if (magnus_used) f.add(Feature::Magnus);
+  if ((drag || magnus_used) && norm(air->wind) > 0.0) f.add(Feature::Wind);
+  // Restitution and friction count only where something can touch.
+  if (ground) {
+    f.add(Feature::GroundContact);
+    if (ground->restitution > 0.0) f.add(Feature::Restitution);
+    if (ground->friction_static > 0.0 || ground->friction_kinetic > 0.0) f.add(Feature::Friction);
+  }
+  for (const Contact& c : contacts) {
+    f.add(Feature::BodyContact);
+    if (c.restitution > 0.0) f.add(Feature::Restitution);
+    if (c.friction > 0.0) f.add(Feature::Friction);
+  }
+  if (!springs.empty()) f.add(Feature::Springs);
+  if (!hinges.empty()) f.add(Feature::Hinge);
+  return f;
+}
+
+Vec3 principal_inertia(const Body& body) {
+  const double m = body.mass;
+  switch (body.shape) {
+    case Shape::Sphere: {
+      const double k = body.shell ? 2.0 / 3.0 : 2.0 / 5.0;
+      const double i = k * m * body.radius * body.radius;
+      return {i, i, i};
+    }
+    case Shape::Box: {
+      // Full side lengths are twice the half extents.
+      const Vec3 s = body.half_extents * 2.0;
+      return {m / 12.0 * (s.y * s.y + s.z * s.z), m / 12.0 * (s.x * s.x + s.z * s.z),
+              m / 12.0 * (s.x * s.x + s.y * s.y)};
+    }
+    case Shape::Point: return {};
+  }
+  return {};
+}
+
+double frontal_area(const Body& body) {
+  return body.shape == Shape::Sphere ? std::numbers::pi * body.radius * body.radius : 0.0;
+}
+
+}  // namespace bb

@@ -1,0 +1,164 @@
+// The scene model: an immutable description of one case file, in SI units.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/features.hpp"
+#include "scene/vec3.hpp"
+
+namespace bb {
+
+enum class Shape { Sphere, Box, Point };
+
+/// One rigid body (or particle) of the scene.
+struct Body {
+  std::string name;
+  Shape shape = Shape::Sphere;
+  double radius = 0.0;       ///< metres (sphere)
+  Vec3 half_extents;         ///< metres (box)
+  double mass = 0.0;         ///< kilograms; 0 for a fixed body
+  bool shell = false;        ///< sphere inertia 2/3 m r^2 when true, 2/5 m r^2 otherwise
+  Vec3 position;             ///< metres
+  Vec3 velocity;             ///< metres per second
+  Quat orientation;          ///< unit quaternion; 2D scenes rotate about z only
+  Vec3 angular_velocity;     ///< radians per second, world frame
+  double drag_coefficient = 0.0;  ///< Cd, dimensionless
+  double magnus = 0.0;       ///< k in F = k (omega x (v - wind)), kilograms
+  bool fixed = false;        ///< infinite mass, never moves
+  int line = 0;              ///< line of the [[body]] header in the case file
+};
+
+/// Still air with an optional uniform wind.
+struct Air {
+  double density = 1.2;  ///< kilograms per cubic metre
+  Vec3 wind;             ///< metres per second
+};
+
+/// An infinite plane that every body touches.
+struct Ground {
+  Vec3 point;
+  Vec3 normal{0.0, 1.0, 0.0};  ///< unit length after loading
+  double restitution = 0.0;
+  double friction_static = 0.0;
+  double friction_kinetic = 0.0;
+};
+
+/// Which bodies touch each other, and how. `all_pairs` stands for ["*"].
+struct Contact {
+  bool all_pairs = false;
+  int body_a = -1;
+  int body_b = -1;
+  double restitution = 0.0;
+  double friction = 0.0;
+  int line = 0;
+};
+
+/// A damped linear spring between two bodies' centres.
+struct Spring {
+  int body_a = -1;
+  int body_b = -1;
+  double stiffness = 0.0;    ///< newtons per metre
+  double damping = 0.0;      ///< newton seconds per metre, along the spring axis
+  double rest_length = 0.0;  ///< metres
+  int line = 0;
+};
+
+/// The spring-lattice generator ("Sproing"); its particles and springs are already
+/// expanded into Scene::bodies and Scene::springs.
+struct Grid {
+  std::vector<int> size;  ///< [cols, rows] in 2D, [x, y, z] in 3D
+  double spacing = 1.0;
+  double mass = 0.1;
+  int neighbours = 8;
+  double stiffness = 50.0;
+  double damping = 0.2;
+  Vec3 origin;
+  std::string anchored = "none";
+  double jitter = 0.0;
+  std::uint64_t seed = 1;
+  int line = 0;
+};
+
+/// A body turning about a fixed world axis.
+struct Hinge {
+  int body = -1;
+  Vec3 anchor;
+  Vec3 axis{0.0, 0.0, 1.0};  ///< unit length after loading
+  int line = 0;
+};
+
+/// Which of the course text's variants to run.
+struct CourseOptions {
+  std::vector<std::string> integrators;
+  std::vector<std::string> ground;
+  std::vector<std::string> friction;
+};
+
+/// A case's value for one engine setting; see engine_keys.hpp for the keys.
+struct EngineValue {
+  double value = 0.0;
+  int line = 0;
+};
+
+/// A case-specific quantity to report, e.g. terminal_velocity of one body.
+struct Observe {
+  std::string kind;
+  int body = -1;
+  int n = 0;  ///< for counted kinds (the n-th bounce), else 0
+  int line = 0;
+  /// `<kind>/<body>` or `<kind>/<body>/<n>`, as results name it.
+  std::string name;
+};
+
+/// A CI accuracy gate, checked at report_dt.
+struct Gate {
+  std::string backend;
+  std::string metric;
+  double max = 0.0;
+  int line = 0;
+};
+
+struct Scene {
+  std::string file;  ///< where it was loaded from, for messages
+  std::string name;
+  std::string title;
+  std::string seed;  ///< section of the course text, may be empty
+  int dims = 2;
+  double duration = 0.0;     ///< simulated seconds
+  double sample = 0.0;       ///< seconds between samples
+  std::vector<double> dt;    ///< fixed steps to sweep, seconds
+  double report_dt = 0.0;    ///< the game-frame step for tables and gates
+  Vec3 gravity{0.0, -9.81, 0.0};
+  std::optional<Air> air;
+  std::optional<Ground> ground;
+  std::vector<Body> bodies;
+  std::vector<Contact> contacts;
+  std::vector<Spring> springs;
+  std::optional<Grid> grid;
+  std::vector<Hinge> hinges;
+  CourseOptions course;
+  std::map<std::string, std::map<std::string, EngineValue>> engines;
+  std::vector<Observe> observes;
+  std::vector<Gate> gates;
+
+  /// Number of samples after t = 0 (duration / sample).
+  int sample_count() const;
+  /// Steps of size `dt` between two samples (sample / dt).
+  int steps_per_sample(double dt) const;
+  /// The features this scene uses; a backend must support all of them.
+  FeatureSet features() const;
+  /// Index of the body called `name`, or -1.
+  int body_index(const std::string& name) const;
+};
+
+/// Principal moments of inertia (kg m^2) of a body about its centre.
+Vec3 principal_inertia(const Body& body);
+
+/// Frontal area (m^2) that drag acts on: pi r^2 for a sphere.
+double frontal_area(const Body& body);
+
+}  // namespace bb
