@@ -12,7 +12,9 @@ namespace bb {
 
 namespace {
 
-b2Vec2 to_b2(const Vec3& v) { return {float(v.x), float(v.y)}; }
+b2Vec2 to_b2(const Vec3& v) {
+  return {float(v.x), float(v.y)};
+}
 
 class Box2dSimulation : public Simulation {
  public:
@@ -89,8 +91,8 @@ class Box2dBackend : public Backend {
  public:
   std::string name() const override { return "box2d"; }
   FeatureSet supports() const override {
-    return {Feature::Gravity, Feature::Drag, Feature::Magnus, Feature::Wind, Feature::Rotation,
-            Feature::Boxes};
+    return {Feature::Gravity, Feature::Drag,     Feature::Magnus,
+            Feature::Wind,    Feature::Rotation, Feature::Boxes};
   }
   std::pair<std::string, std::string> library_version() const override {
     return {"box2d", std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) +
@@ -105,4 +107,6 @@ class Box2dBackend : public Backend {
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() { return new bb::Box2dBackend(); }
+extern "C" bb::Backend* beachball_create_backend() {
+  return new bb::Box2dBackend();
+}

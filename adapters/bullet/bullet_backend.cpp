@@ -13,8 +13,12 @@ namespace bb {
 
 namespace {
 
-btVector3 to_bt(const Vec3& v) { return {btScalar(v.x), btScalar(v.y), btScalar(v.z)}; }
-Vec3 from_bt(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+btVector3 to_bt(const Vec3& v) {
+  return {btScalar(v.x), btScalar(v.y), btScalar(v.z)};
+}
+Vec3 from_bt(const btVector3& v) {
+  return {v.x(), v.y(), v.z()};
+}
 
 class BulletSimulation : public Simulation {
  public:
@@ -32,9 +36,9 @@ class BulletSimulation : public Simulation {
       btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, &empty_shape_,
                                                     to_bt(principal_inertia(b)));
       info.m_startWorldTransform.setOrigin(to_bt(b.position));
-      info.m_startWorldTransform.setRotation(btQuaternion(
-          btScalar(b.orientation.x), btScalar(b.orientation.y), btScalar(b.orientation.z),
-          btScalar(b.orientation.w)));
+      info.m_startWorldTransform.setRotation(
+          btQuaternion(btScalar(b.orientation.x), btScalar(b.orientation.y),
+                       btScalar(b.orientation.z), btScalar(b.orientation.w)));
       info.m_linearDamping = linear_damping;
       info.m_angularDamping = angular_damping;
       auto body = std::make_unique<btRigidBody>(info);
@@ -69,14 +73,17 @@ class BulletSimulation : public Simulation {
       const btRigidBody& body = *bodies_[i];
       const btTransform& t = body.getWorldTransform();
       const btQuaternion q = t.getRotation();
-      out[i] = {from_bt(t.getOrigin()), from_bt(body.getLinearVelocity()),
-                {q.w(), q.x(), q.y(), q.z()}, from_bt(body.getAngularVelocity())};
+      out[i] = {from_bt(t.getOrigin()),
+                from_bt(body.getLinearVelocity()),
+                {q.w(), q.x(), q.y(), q.z()},
+                from_bt(body.getAngularVelocity())};
     }
   }
 
   Settings settings() const override {
     Settings s = engine_key_settings(scene_, "bullet");
-    s.push_back({"precision", sizeof(btScalar) == 8 ? std::string("double") : std::string("float")});
+    s.push_back(
+        {"precision", sizeof(btScalar) == 8 ? std::string("double") : std::string("float")});
     s.push_back({"step", std::string("stepSimulation(dt, 1, dt): one fixed substep")});
     s.push_back({"sleeping", false});
     s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
@@ -100,7 +107,7 @@ class BulletBackend : public Backend {
  public:
   std::string name() const override { return BB_BULLET_NAME; }
   FeatureSet supports() const override {
-    return {Feature::ThreeD, Feature::Gravity, Feature::Drag,    Feature::Magnus,
+    return {Feature::ThreeD, Feature::Gravity,  Feature::Drag, Feature::Magnus,
             Feature::Wind,   Feature::Rotation, Feature::Boxes};
   }
   std::pair<std::string, std::string> library_version() const override {
@@ -116,4 +123,6 @@ class BulletBackend : public Backend {
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() { return new bb::BulletBackend(); }
+extern "C" bb::Backend* beachball_create_backend() {
+  return new bb::BulletBackend();
+}

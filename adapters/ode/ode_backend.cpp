@@ -13,7 +13,9 @@ namespace bb {
 
 namespace {
 
-Vec3 from_ode(const dReal* v) { return {v[0], v[1], v[2]}; }
+Vec3 from_ode(const dReal* v) {
+  return {v[0], v[1], v[2]};
+}
 
 class OdeSimulation : public Simulation {
  public:
@@ -30,7 +32,8 @@ class OdeSimulation : public Simulation {
     dWorldSetGravity(world_, scene.gravity.x, scene.gravity.y, scene.gravity.z);
     dWorldSetERP(world_, engine_setting(scene, "ode", "erp"));
     dWorldSetCFM(world_, engine_setting(scene, "ode", "cfm"));
-    dWorldSetQuickStepNumIterations(world_, static_cast<int>(engine_setting(scene, "ode", "quick_step_iterations")));
+    dWorldSetQuickStepNumIterations(
+        world_, static_cast<int>(engine_setting(scene, "ode", "quick_step_iterations")));
     dWorldSetLinearDamping(world_, engine_setting(scene, "ode", "linear_damping"));
     dWorldSetAngularDamping(world_, engine_setting(scene, "ode", "angular_damping"));
     dWorldSetAutoDisableFlag(world_, 0);
@@ -79,8 +82,10 @@ class OdeSimulation : public Simulation {
   void read(State& out) const override {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       const dReal* q = dBodyGetQuaternion(bodies_[i]);
-      out[i] = {from_ode(dBodyGetPosition(bodies_[i])), from_ode(dBodyGetLinearVel(bodies_[i])),
-                {q[0], q[1], q[2], q[3]}, from_ode(dBodyGetAngularVel(bodies_[i]))};
+      out[i] = {from_ode(dBodyGetPosition(bodies_[i])),
+                from_ode(dBodyGetLinearVel(bodies_[i])),
+                {q[0], q[1], q[2], q[3]},
+                from_ode(dBodyGetAngularVel(bodies_[i]))};
     }
   }
 
@@ -105,7 +110,7 @@ class OdeBackend : public Backend {
  public:
   std::string name() const override { return "ode"; }
   FeatureSet supports() const override {
-    return {Feature::ThreeD, Feature::Gravity, Feature::Drag,    Feature::Magnus,
+    return {Feature::ThreeD, Feature::Gravity,  Feature::Drag, Feature::Magnus,
             Feature::Wind,   Feature::Rotation, Feature::Boxes};
   }
   std::pair<std::string, std::string> library_version() const override {
@@ -124,4 +129,6 @@ class OdeBackend : public Backend {
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() { return new bb::OdeBackend(); }
+extern "C" bb::Backend* beachball_create_backend() {
+  return new bb::OdeBackend();
+}

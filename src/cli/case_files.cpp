@@ -7,6 +7,19 @@
 
 namespace bb::cli {
 
+namespace {
+
+/// A path relative to the working folder when it lies inside it, so that messages and
+/// report pages read "cases/drag_fall.toml" rather than a machine's absolute path.
+std::string shortest_name(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto relative = std::filesystem::relative(path, std::filesystem::current_path(), ec);
+  if (ec || relative.empty() || *relative.begin() == "..") return path.string();
+  return relative.string();
+}
+
+}  // namespace
+
 std::string bundled_cases_folder() {
   if (const char* env = std::getenv("BEACHBALL_CASES"); env && *env) return env;
   return BEACHBALL_CASES_DIR;
@@ -15,13 +28,14 @@ std::string bundled_cases_folder() {
 std::vector<Scene> load_cases(const std::vector<std::string>& paths) {
   namespace fs = std::filesystem;
   std::vector<std::string> files;
-  const std::vector<std::string> roots = paths.empty() ? std::vector{bundled_cases_folder()} : paths;
+  const std::vector<std::string> roots =
+      paths.empty() ? std::vector{bundled_cases_folder()} : paths;
   for (const std::string& p : roots) {
     // A folder stands for every .toml file in it, in name order.
     if (fs::is_directory(p)) {
       std::vector<std::string> found;
       for (const auto& entry : fs::directory_iterator(p))
-        if (entry.path().extension() == ".toml") found.push_back(entry.path().string());
+        if (entry.path().extension() == ".toml") found.push_back(shortest_name(entry.path()));
       std::sort(found.begin(), found.end());
       if (found.empty()) throw CaseError(p, 0, "folder holds no .toml case files");
       files.insert(files.end(), found.begin(), found.end());

@@ -12,11 +12,20 @@ std::string xml_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -37,16 +46,18 @@ std::string junit_xml(const std::vector<CaseResults>& all) {
         continue;
       }
       ++suite_failures;
-      const std::string message =
-          g.value ? fmt::format("{} = {} exceeds max {}", g.gate.metric, format_value(g.value),
-                                format_value(g.gate.max))
-                  : g.note;
-      cases += fmt::format(">\n      <failure message=\"{}\"/>\n    </testcase>\n", xml_escape(message));
+      const std::string message = g.value
+                                      ? fmt::format("{} = {} exceeds max {}", g.gate.metric,
+                                                    format_value(g.value), format_value(g.gate.max))
+                                      : g.note;
+      cases +=
+          fmt::format(">\n      <failure message=\"{}\"/>\n    </testcase>\n", xml_escape(message));
     }
     tests += static_cast<int>(r.gates.size());
     failures += suite_failures;
-    suites += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\">\n{}  </testsuite>\n",
-                          r.scene->name, r.gates.size(), suite_failures, cases);
+    suites +=
+        fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\">\n{}  </testsuite>\n",
+                    r.scene->name, r.gates.size(), suite_failures, cases);
   }
   return fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"beachball gates\" "

@@ -27,7 +27,8 @@ int list_command(const std::vector<std::string>& paths) {
              feature_list(CourseBackend(CourseVariant{}).supports()));
   for (const Backend* e : registry.engines()) {
     const auto [library, version] = e->library_version();
-    fmt::print("  {:<28} built ({} {}): {}\n", e->name(), library, version, feature_list(e->supports()));
+    fmt::print("  {:<28} built ({} {}): {}\n", e->name(), library, version,
+               feature_list(e->supports()));
   }
   for (const auto& [name, why] : registry.missing_engines()) fmt::print("  {:<28} {}\n", name, why);
   fmt::print("  course integrators: ");
@@ -39,7 +40,8 @@ int list_command(const std::vector<std::string>& paths) {
     const BackendSet set = backends_for(scene, registry);
     for (const Backend* b : set.all) {
       const std::string missing = missing_features(*b, scene);
-      fmt::print("    {:<28} {}\n", b->name(), missing.empty() ? "runs" : "unsupported: " + missing);
+      fmt::print("    {:<28} {}\n", b->name(),
+                 missing.empty() ? "runs" : "unsupported: " + missing);
     }
   }
   return kExitOk;

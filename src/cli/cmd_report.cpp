@@ -21,8 +21,8 @@ std::string index_page(const std::vector<CaseResults>& all) {
       ok += run.status == RunStatus::Ok;
     }
     for (const GateResult& g : r.gates) passed += g.passed;
-    const std::string gates = r.gates.empty() ? "none"
-                              : fmt::format("{}/{} pass", passed, r.gates.size());
+    const std::string gates =
+        r.gates.empty() ? "none" : fmt::format("{}/{} pass", passed, r.gates.size());
     t.rows.push_back({fmt::format("[{0}]({0}.md)", r.scene->name), r.scene->title,
                       r.scene->seed.empty() ? "-" : r.scene->seed, fmt::format("{}/{}", ok, total),
                       gates});
@@ -30,7 +30,8 @@ std::string index_page(const std::vector<CaseResults>& all) {
   return "# beachball report\n\nThe standard suite, one page per case. Each page shows the scene, "
          "every backend's error against the reference and its cost at the game-frame step, the "
          "whole dt sweep, the gates and the engine settings used. Regenerate with the README's "
-         "report command.\n\n" + render_markdown(t);
+         "report command.\n\n" +
+         render_markdown(t);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // beachball: compare the course text's methods with Bullet, Box2D and ODE on the same scenes.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <thread>
 
 #include "cli/commands.hpp"
@@ -44,8 +44,9 @@ double parse_step(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"beachball: the course text's game-physics methods beside Bullet, Box2D and ODE, "
-               "measured against a GSL reference"};
+  CLI::App app{
+      "beachball: the course text's game-physics methods beside Bullet, Box2D and ODE, "
+      "measured against a GSL reference"};
   app.require_subcommand(1);
   std::vector<std::string> cases;
   std::string out, backends, dts, junit;
@@ -72,7 +73,8 @@ int main(int argc, char** argv) {
   report->add_option("--out", out, "report folder")->default_val("reports");
   report->add_option("--jobs", jobs, "accuracy runs in parallel")->default_val(default_jobs);
   report->add_flag("--no-cost", no_cost, "skip the timing pass");
-  report->add_option("--cost-time", cost_seconds, "minimum timed seconds per run")->default_val(0.05);
+  report->add_option("--cost-time", cost_seconds, "minimum timed seconds per run")
+      ->default_val(0.05);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", cases, "case files or folders (default: the bundled suite)");

@@ -17,8 +17,8 @@ struct PointState {
 };
 
 /// a(x, v) for every body.
-using AccelerationFn =
-    std::function<void(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a)>;
+using AccelerationFn = std::function<void(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                          std::vector<Vec3>& a)>;
 
 /// Buffers an integrator reuses from step to step, so a step allocates nothing.
 struct Workspace {
@@ -29,8 +29,7 @@ struct Workspace {
 };
 
 /// One step of `dt` seconds with the named integrator.
-using StepFn = void (*)(PointState& s, double dt, const AccelerationFn& acceleration,
-                        Workspace& w);
+using StepFn = void (*)(PointState& s, double dt, const AccelerationFn& acceleration, Workspace& w);
 
 /// The stepping rule called `name` ("explicit-euler", ...); throws std::invalid_argument.
 StepFn integrator(const std::string& name);

@@ -23,7 +23,8 @@ ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory
   const std::size_t bodies = scene.bodies.size();
   ErrorMetrics m;
   std::vector<double> sum_squares(bodies, 0.0);
-  const double energy_scale = std::max(std::abs(total_energy(scene, reference.states.front())), 1.0);
+  const double energy_scale =
+      std::max(std::abs(total_energy(scene, reference.states.front())), 1.0);
   for (std::size_t j = 0; j < run.states.size(); ++j) {
     const State& s = run.states[j];
     const State& r = reference.states[j];
@@ -38,7 +39,8 @@ ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory
     m.energy_max = std::max(m.energy_max, de);
   }
   for (double ss : sum_squares)
-    m.position_rms = std::max(m.position_rms, std::sqrt(ss / static_cast<double>(run.states.size())));
+    m.position_rms =
+        std::max(m.position_rms, std::sqrt(ss / static_cast<double>(run.states.size())));
   return m;
 }
 

@@ -1,8 +1,17 @@
 #include "metrics/order.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bb {
+
+double error_floor(const Trajectory& reference, double self_check) {
+  double largest = 0.0;
+  for (const State& state : reference.states)
+    for (const BodyState& b : state) largest = std::max(largest, norm(b.position));
+  return std::max(10.0 * self_check, 100.0 * std::numeric_limits<double>::epsilon() * largest);
+}
 
 std::optional<double> fit_order(const std::vector<ErrorPoint>& points, double floor) {
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;

@@ -4,12 +4,19 @@
 #include <optional>
 #include <vector>
 
+#include "metrics/trajectory.hpp"
+
 namespace bb {
 
 struct ErrorPoint {
   double dt;     ///< seconds
   double error;  ///< any error metric
 };
+
+/// The error below which differences are noise, not truncation error: ten times the
+/// reference's self-check, or the rounding of a few hundred double operations on the
+/// largest position in the reference, whichever is larger (metres).
+double error_floor(const Trajectory& reference, double self_check);
 
 /// Slope fitted over the points whose error lies above `floor` (the reference's own error,
 /// below which errors are noise); nullopt with fewer than two such points.

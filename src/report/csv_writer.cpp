@@ -6,7 +6,9 @@ namespace bb {
 
 namespace {
 
-std::string number(std::optional<double> v) { return v ? fmt::format("{:.17g}", *v) : ""; }
+std::string number(std::optional<double> v) {
+  return v ? fmt::format("{:.17g}", *v) : "";
+}
 
 /// Quotes a field when it holds a comma, a quote or a line break.
 std::string field(const std::string& s) {
@@ -26,7 +28,8 @@ std::string row(const Scene& scene, const RunRecord& run) {
       number(error("position_rms")), number(error("position_final")), number(error("velocity_max")),
       number(error("energy_max")),
       number(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt),
-      number(run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second) : std::nullopt),
+      number(run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second)
+                      : std::nullopt),
       run.cost ? std::to_string(run.cost->repeats) : "");
   for (const ObservableResult& o : run.observables) out += "," + number(o.measured.value);
   return out + "," + field(run.reason) + "\n";

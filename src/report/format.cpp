@@ -8,7 +8,8 @@ namespace bb {
 
 std::string format_dt(double dt) {
   const double rate = 1.0 / dt;
-  if (std::abs(rate - std::round(rate)) < 1e-6 * rate) return fmt::format("1/{}", std::llround(rate));
+  if (std::abs(rate - std::round(rate)) < 1e-6 * rate)
+    return fmt::format("1/{}", std::llround(rate));
   return fmt::format("{:.6g}", dt);
 }
 

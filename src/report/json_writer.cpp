@@ -45,7 +45,8 @@ Json run_json(const RunRecord& run) {
     Json v;
     v["value"] = optional_json(o.measured.value);
     v["reference"] = optional_json(o.reference);
-    v["error"] = o.measured.value && o.reference ? Json(*o.measured.value - *o.reference) : Json(nullptr);
+    v["error"] =
+        o.measured.value && o.reference ? Json(*o.measured.value - *o.reference) : Json(nullptr);
     if (!o.measured.note.empty()) v["note"] = o.measured.note;
     j["observables"][o.name] = v;
   }

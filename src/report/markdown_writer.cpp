@@ -18,9 +18,12 @@ std::string settings_text(const Settings& settings) {
     std::string v = std::visit(
         [](const auto& x) -> std::string {
           using T = std::decay_t<decltype(x)>;
-          if constexpr (std::is_same_v<T, bool>) return x ? "true" : "false";
-          else if constexpr (std::is_same_v<T, double>) return fmt::format("{:g}", x);
-          else return x;
+          if constexpr (std::is_same_v<T, bool>)
+            return x ? "true" : "false";
+          else if constexpr (std::is_same_v<T, double>)
+            return fmt::format("{:g}", x);
+          else
+            return x;
         },
         value);
     out += (out.empty() ? "" : ", ") + key + " = " + v;
@@ -33,21 +36,28 @@ std::string settings_text(const Settings& settings) {
 std::string results_markdown(const CaseResults& results) {
   const Scene& scene = *results.scene;
   std::string out = fmt::format("# {}\n\nCase `{}`", scene.title, scene.name);
-  if (!scene.seed.empty()) out += fmt::format(", from section \"{}\" of the course text", scene.seed);
+  if (!scene.seed.empty())
+    out += fmt::format(", from section \"{}\" of the course text", scene.seed);
   out += fmt::format(". Case file: `{}`.\n\n## Scene\n\n{}\n", scene.file, describe_scene(scene));
 
   out += fmt::format("## Results at report_dt = {} s\n\n", format_dt(scene.report_dt));
-  out += "Errors are against the reference at every sample, worst body; energy_max is relative "
-         "to the initial energy (at least 1 J). Observables show the value and, in brackets, its "
-         "difference from the reference.\n\n";
+  out +=
+      "Errors are against the reference at every sample, worst body: pos max, pos rms and "
+      "pos final are position_max, position_rms and position_final (m), vel max is "
+      "velocity_max (m/s), energy max is energy_max (relative to the initial energy, at "
+      "least 1 J). Observables show the value and, in brackets, its difference from the "
+      "reference.\n\n";
   out += render_markdown(summary_table(results, scene.report_dt));
   const auto notes = run_notes(results, scene.report_dt);
   if (!notes.empty()) {
     out += "\n";
     for (const std::string& n : notes) out += "- " + n + "\n";
   }
-  out += "\nThe order column is the least-squares slope of log position_max against log dt over "
-         "the sweep, using the points above ten times the reference's self-check.\n";
+  out +=
+      "\nThe order column is the least-squares slope of log position_max against log dt over "
+      "the sweep, using the points above the error floor: ten times the reference's self-check, "
+      "or the rounding of about 100 double-precision operations on the largest position, "
+      "whichever is larger.\n";
 
   out += "\n## Every dt\n\n" + render_markdown(sweep_table(results));
   if (!results.gates.empty()) out += "\n## Gates\n\n" + render_markdown(gate_table(results));
@@ -56,10 +66,12 @@ std::string results_markdown(const CaseResults& results) {
       "\n## Reference and cost\n\n- reference: {}, absolute and relative tolerance {:g}; solved "
       "again 100 times tighter, the largest position change was {:.3g} m (self-check)\n",
       results.reference.method, results.reference.tolerance, results.reference.self_check);
-  out += "- cost: time spent in step() only, in a serial pass after the accuracy runs; each run "
-         "is repeated until the timed total reaches a minimum and the median is reported\n";
+  out +=
+      "- cost: time spent in step() only, in a serial pass after the accuracy runs; each run "
+      "is repeated until the timed total reaches a minimum and the median is reported\n";
   out += "- versions:";
-  for (const auto& [library, version] : results.versions) out += " " + library + " " + version + ";";
+  for (const auto& [library, version] : results.versions)
+    out += " " + library + " " + version + ";";
   out += "\n\n## Engine settings\n\n";
   std::set<std::string> seen;
   for (const RunRecord& run : results.runs)

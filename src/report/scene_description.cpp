@@ -16,11 +16,13 @@ std::string vec(const Vec3& v, int dims) {
 
 std::string shape_cell(const Body& b) {
   switch (b.shape) {
-    case Shape::Sphere: return fmt::format("{} r = {:g} m", b.shell ? "shell" : "solid sphere", b.radius);
+    case Shape::Sphere:
+      return fmt::format("{} r = {:g} m", b.shell ? "shell" : "solid sphere", b.radius);
     case Shape::Box:
       return fmt::format("box {:g} x {:g} x {:g} m", 2 * b.half_extents.x, 2 * b.half_extents.y,
                          2 * b.half_extents.z);
-    case Shape::Point: return "point";
+    case Shape::Point:
+      return "point";
   }
   return "?";
 }
@@ -36,21 +38,23 @@ std::string describe_scene(const Scene& scene) {
       scene.dims, scene.duration, format_dt(scene.sample), dts, format_dt(scene.report_dt),
       vec(scene.gravity, scene.dims));
   if (scene.air)
-    out += fmt::format("- air density {:g} kg/m^3, wind {} m/s; drag F = -1/2 Cd A rho |v - w| (v - w), "
-                       "A = pi r^2; Magnus F = k (omega x (v - w))\n",
-                       scene.air->density, vec(scene.air->wind, scene.dims));
+    out += fmt::format(
+        "- air density {:g} kg/m^3, wind {} m/s; drag F = -1/2 Cd A rho |v - w| (v - w), "
+        "A = pi r^2; Magnus F = k (omega x (v - w))\n",
+        scene.air->density, vec(scene.air->wind, scene.dims));
   else
     out += "- no air: no drag, no wind, no Magnus\n";
   out += scene.ground ? "- a ground plane\n" : "- no ground: nothing to touch\n";
   Table t;
-  t.headers = {"body", "shape", "mass kg", "Cd", "magnus k", "position m", "velocity m/s", "spin rad/s"};
+  t.headers = {"body",     "shape",      "mass kg",      "Cd",
+               "magnus k", "position m", "velocity m/s", "spin rad/s"};
   t.right_aligned = {false, false, true, true, true, false, false, false};
   for (const Body& b : scene.bodies)
-    t.rows.push_back({b.name, shape_cell(b), b.fixed ? "fixed" : fmt::format("{:g}", b.mass),
-                      fmt::format("{:g}", b.drag_coefficient), fmt::format("{:g}", b.magnus),
-                      vec(b.position, scene.dims), vec(b.velocity, scene.dims),
-                      scene.dims == 2 ? fmt::format("{:g}", b.angular_velocity.z)
-                                      : vec(b.angular_velocity, 3)});
+    t.rows.push_back(
+        {b.name, shape_cell(b), b.fixed ? "fixed" : fmt::format("{:g}", b.mass),
+         fmt::format("{:g}", b.drag_coefficient), fmt::format("{:g}", b.magnus),
+         vec(b.position, scene.dims), vec(b.velocity, scene.dims),
+         scene.dims == 2 ? fmt::format("{:g}", b.angular_velocity.z) : vec(b.angular_velocity, 3)});
   return out + "\n" + render_markdown(t);
 }
 

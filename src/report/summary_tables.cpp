@@ -21,7 +21,8 @@ std::string status_cell(const RunRecord& run) {
 std::string observable_cell(const ObservableResult& o, bool is_reference) {
   if (!o.measured.value) return "-";
   if (is_reference || !o.reference) return format_value(o.measured.value);
-  return format_value(o.measured.value) + " (" + format_value(*o.measured.value - *o.reference) + ")";
+  return format_value(o.measured.value) + " (" + format_value(*o.measured.value - *o.reference) +
+         ")";
 }
 
 }  // namespace
@@ -29,20 +30,23 @@ std::string observable_cell(const ObservableResult& o, bool is_reference) {
 Table summary_table(const CaseResults& results, double dt) {
   const Scene& scene = *results.scene;
   Table t;
-  t.headers = {"backend", "status", "position_max m", "position_rms m", "position_final m",
-               "velocity_max m/s", "energy_max"};
-  for (const Observe& o : scene.observes) t.headers.push_back(o.name + " (error)");
+  t.headers = {"backend",     "status",      "pos max m", "pos rms m",
+               "pos final m", "vel max m/s", "energy max"};
+  for (const Observe& o : scene.observes) t.headers.push_back(o.name);
   for (const char* h : {"ns/step", "s per sim s", "order"}) t.headers.push_back(h);
   t.right_aligned.assign(t.headers.size(), true);
   t.right_aligned[0] = t.right_aligned[1] = false;
   const auto add = [&](const RunRecord& run, bool is_reference) {
     std::vector<std::string> row = {run.backend, status_cell(run)};
-    for (const char* m : {"position_max", "position_rms", "position_final", "velocity_max", "energy_max"})
+    for (const char* m :
+         {"position_max", "position_rms", "position_final", "velocity_max", "energy_max"})
       row.push_back(is_reference ? "-" : format_value(error_of(run, m)));
-    for (const ObservableResult& o : run.observables) row.push_back(observable_cell(o, is_reference));
-    row.push_back(format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt));
-    row.push_back(format_value(run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second)
-                                        : std::nullopt));
+    for (const ObservableResult& o : run.observables)
+      row.push_back(observable_cell(o, is_reference));
+    row.push_back(
+        format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt));
+    row.push_back(format_value(
+        run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second) : std::nullopt));
     const auto order = results.order.find(run.backend);
     row.push_back(order == results.order.end() ? "-" : fmt::format("{:.2f}", order->second));
     t.rows.push_back(row);
@@ -63,18 +67,18 @@ std::vector<std::string> run_notes(const CaseResults& results, double dt) {
 
 Table sweep_table(const CaseResults& results) {
   Table t;
-  t.headers = {"backend", "dt s", "status", "steps", "position_max m", "velocity_max m/s",
-               "energy_max", "ns/step", "s per sim s"};
+  t.headers = {"backend",     "dt s",       "status",  "steps",      "pos max m",
+               "vel max m/s", "energy max", "ns/step", "s per sim s"};
   t.right_aligned = {false, true, false, true, true, true, true, true, true};
   for (const RunRecord& run : results.runs) {
     if (run.status == RunStatus::Unsupported) continue;
-    t.rows.push_back({run.backend, format_dt(*run.dt), status_cell(run), std::to_string(run.steps),
-                      format_value(error_of(run, "position_max")),
-                      format_value(error_of(run, "velocity_max")),
-                      format_value(error_of(run, "energy_max")),
-                      format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt),
-                      format_value(run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second)
-                                            : std::nullopt)});
+    t.rows.push_back(
+        {run.backend, format_dt(*run.dt), status_cell(run), std::to_string(run.steps),
+         format_value(error_of(run, "position_max")), format_value(error_of(run, "velocity_max")),
+         format_value(error_of(run, "energy_max")),
+         format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt),
+         format_value(run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second)
+                               : std::nullopt)});
   }
   return t;
 }
@@ -84,7 +88,8 @@ Table gate_table(const CaseResults& results) {
   t.headers = {"backend", "metric", "value", "max", "result"};
   t.right_aligned = {false, false, true, true, false};
   for (const GateResult& g : results.gates)
-    t.rows.push_back({g.gate.backend, g.gate.metric, format_value(g.value), format_value(g.gate.max),
+    t.rows.push_back({g.gate.backend, g.gate.metric, format_value(g.value),
+                      format_value(g.gate.max),
                       g.passed ? "pass" : "FAIL" + (g.note.empty() ? "" : ": " + g.note)});
   return t;
 }

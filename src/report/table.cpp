@@ -6,13 +6,16 @@ namespace bb {
 
 namespace {
 
-bool right(const Table& t, std::size_t c) { return c < t.right_aligned.size() && t.right_aligned[c]; }
+bool right(const Table& t, std::size_t c) {
+  return c < t.right_aligned.size() && t.right_aligned[c];
+}
 
 std::vector<std::size_t> widths(const Table& t) {
   std::vector<std::size_t> w(t.headers.size(), 0);
   for (std::size_t c = 0; c < t.headers.size(); ++c) w[c] = t.headers[c].size();
   for (const auto& row : t.rows)
-    for (std::size_t c = 0; c < row.size() && c < w.size(); ++c) w[c] = std::max(w[c], row[c].size());
+    for (std::size_t c = 0; c < row.size() && c < w.size(); ++c)
+      w[c] = std::max(w[c], row[c].size());
   return w;
 }
 
@@ -26,7 +29,8 @@ std::string pad(const std::string& s, std::size_t width, bool to_right) {
 std::string render_markdown(const Table& t) {
   const auto w = widths(t);
   std::string out = "|";
-  for (std::size_t c = 0; c < t.headers.size(); ++c) out += " " + pad(t.headers[c], w[c], false) + " |";
+  for (std::size_t c = 0; c < t.headers.size(); ++c)
+    out += " " + pad(t.headers[c], w[c], false) + " |";
   out += "\n|";
   for (std::size_t c = 0; c < t.headers.size(); ++c)
     out += right(t, c) ? " " + std::string(std::max<std::size_t>(w[c], 2) - 1, '-') + ": |"
@@ -47,7 +51,8 @@ std::string render_text(const Table& t) {
   for (std::size_t c = 0; c < t.headers.size(); ++c)
     out += (c ? "  " : "") + pad(t.headers[c], w[c], right(t, c));
   out += "\n";
-  for (std::size_t c = 0; c < t.headers.size(); ++c) out += (c ? "  " : "") + std::string(w[c], '-');
+  for (std::size_t c = 0; c < t.headers.size(); ++c)
+    out += (c ? "  " : "") + std::string(w[c], '-');
   out += "\n";
   for (const auto& row : t.rows) {
     for (std::size_t c = 0; c < t.headers.size(); ++c)

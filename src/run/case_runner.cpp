@@ -14,9 +14,6 @@ namespace bb {
 
 namespace {
 
-/// Reference errors below this many times its self-check are noise for the order fit.
-constexpr double kFloorFactor = 10.0;
-
 std::string joined(const std::vector<std::string>& words) {
   std::string out;
   for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
@@ -24,8 +21,8 @@ std::string joined(const std::vector<std::string>& words) {
 }
 
 bool wanted(const RunOptions& options, const std::string& name) {
-  return options.backends.empty() ||
-         std::find(options.backends.begin(), options.backends.end(), name) != options.backends.end();
+  return options.backends.empty() || std::find(options.backends.begin(), options.backends.end(),
+                                               name) != options.backends.end();
 }
 
 /// The case's steps that the options select, largest first.
@@ -36,7 +33,8 @@ std::vector<double> selected_dts(const Scene& scene, const RunOptions& options) 
     const auto match = std::find_if(scene.dt.begin(), scene.dt.end(),
                                     [&](double d) { return std::abs(d - asked) <= 1e-9 * d; });
     if (match == scene.dt.end())
-      throw CaseError(scene.file, 0, "--dt " + std::to_string(asked) + " is not one of the case's dt");
+      throw CaseError(scene.file, 0,
+                      "--dt " + std::to_string(asked) + " is not one of the case's dt");
     if (std::find(out.begin(), out.end(), *match) == out.end()) out.push_back(*match);
   }
   std::sort(out.begin(), out.end(), std::greater<>());
@@ -47,7 +45,9 @@ void check_backend_names(const Scene& scene, const RunOptions& options) {
   const std::vector<std::string> known = backend_names(scene);
   for (const std::string& name : options.backends)
     if (std::find(known.begin(), known.end(), name) == known.end())
-      throw CaseError(scene.file, 0, "--backends names '" + name + "', which this case does not run; it runs: " + joined(known));
+      throw CaseError(scene.file, 0,
+                      "--backends names '" + name +
+                          "', which this case does not run; it runs: " + joined(known));
 }
 
 void add_observables(const Scene& scene, RunRecord& run, const RunRecord& reference) {
@@ -106,9 +106,8 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     for (double dt : dts) jobs.push_back({b, dt});
   }
   out.runs.resize(jobs.size());
-  parallel_for(static_cast<int>(jobs.size()), options.jobs, [&](int i) {
-    out.runs[i] = run_accuracy(*jobs[i].first, scene, jobs[i].second);
-  });
+  parallel_for(static_cast<int>(jobs.size()), options.jobs,
+               [&](int i) { out.runs[i] = run_accuracy(*jobs[i].first, scene, jobs[i].second); });
   // Engines that were not built still get a row, so a reader sees why they are absent.
   for (const auto& [name, why] : registry.missing_engines()) {
     const bool asked = !options.backends.empty() && wanted(options, name);
@@ -137,7 +136,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   }
 
   // Observed order of position_max over the dt sweep, per backend.
-  const double floor = kFloorFactor * out.reference.self_check;
+  const double floor = error_floor(out.reference_run.trajectory, out.reference.self_check);
   std::map<std::string, std::vector<ErrorPoint>> points;
   for (const RunRecord& run : out.runs)
     if (run.errors) points[run.backend].push_back({*run.dt, run.errors->position_max});

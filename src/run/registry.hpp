@@ -22,7 +22,9 @@ class Registry {
   /// Engines whose plugin loaded, in engine_backend_names() order.
   std::vector<const Backend*> engines() const;
   /// Engine names whose plugin is missing, with why.
-  const std::vector<std::pair<std::string, std::string>>& missing_engines() const { return missing_; }
+  const std::vector<std::pair<std::string, std::string>>& missing_engines() const {
+    return missing_;
+  }
   const ReferenceBackend& reference() const { return reference_; }
   /// Add a backend that is not a plugin (tests register fakes this way).
   void add_engine(std::unique_ptr<Backend> backend);

@@ -4,12 +4,18 @@ namespace bb {
 
 std::string status_name(RunStatus status) {
   switch (status) {
-    case RunStatus::Ok: return "ok";
-    case RunStatus::Diverged: return "diverged";
-    case RunStatus::Unsupported: return "unsupported";
-    case RunStatus::Crashed: return "crashed";
-    case RunStatus::Timeout: return "timeout";
-    case RunStatus::Error: return "error";
+    case RunStatus::Ok:
+      return "ok";
+    case RunStatus::Diverged:
+      return "diverged";
+    case RunStatus::Unsupported:
+      return "unsupported";
+    case RunStatus::Crashed:
+      return "crashed";
+    case RunStatus::Timeout:
+      return "timeout";
+    case RunStatus::Error:
+      return "error";
   }
   return "?";
 }

@@ -54,7 +54,7 @@ struct GateResult {
   Gate gate;
   std::optional<double> value;  ///< nullopt when the run has no such value
   bool passed = false;
-  std::string note;             ///< why it failed without a value
+  std::string note;  ///< why it failed without a value
 };
 
 struct CaseResults {
@@ -62,8 +62,8 @@ struct CaseResults {
   std::map<std::string, std::string> versions;
   ReferenceInfo reference;
   RunRecord reference_run;
-  std::vector<RunRecord> runs;            ///< backends in registry order, dt largest first
-  std::map<std::string, double> order;    ///< fitted slope of log position_max vs log dt
+  std::vector<RunRecord> runs;          ///< backends in registry order, dt largest first
+  std::map<std::string, double> order;  ///< fitted slope of log position_max vs log dt
   std::vector<GateResult> gates;
 };
 

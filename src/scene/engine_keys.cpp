@@ -26,7 +26,9 @@ const std::vector<EngineKey>& engine_keys() {
   return keys;
 }
 
-std::vector<std::string> engine_names() { return {"bullet", "box2d", "ode", "mujoco"}; }
+std::vector<std::string> engine_names() {
+  return {"bullet", "box2d", "ode", "mujoco"};
+}
 
 const EngineKey* find_engine_key(const std::string& engine, const std::string& key) {
   for (const EngineKey& k : engine_keys())

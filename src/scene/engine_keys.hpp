@@ -16,8 +16,8 @@ struct EngineKey {
   std::string engine;  ///< "bullet", "box2d", "ode", "mujoco"
   std::string key;
   KeyKind kind;
-  double fallback;     ///< the default; booleans are 0 or 1
-  std::string meaning; ///< one line, with the unit
+  double fallback;      ///< the default; booleans are 0 or 1
+  std::string meaning;  ///< one line, with the unit
 };
 
 /// Every known key of every engine.

@@ -11,20 +11,34 @@ std::vector<Feature> FeatureSet::missing_from(const FeatureSet& other) const {
 
 std::string feature_name(Feature f) {
   switch (f) {
-    case Feature::ThreeD: return "3d";
-    case Feature::Gravity: return "gravity";
-    case Feature::Drag: return "drag";
-    case Feature::Magnus: return "magnus";
-    case Feature::Wind: return "wind";
-    case Feature::GroundContact: return "ground-contact";
-    case Feature::BodyContact: return "body-contact";
-    case Feature::Restitution: return "restitution";
-    case Feature::Friction: return "friction";
-    case Feature::Springs: return "springs";
-    case Feature::Hinge: return "hinge";
-    case Feature::Rotation: return "rotation";
-    case Feature::Boxes: return "boxes";
-    case Feature::Count: break;
+    case Feature::ThreeD:
+      return "3d";
+    case Feature::Gravity:
+      return "gravity";
+    case Feature::Drag:
+      return "drag";
+    case Feature::Magnus:
+      return "magnus";
+    case Feature::Wind:
+      return "wind";
+    case Feature::GroundContact:
+      return "ground-contact";
+    case Feature::BodyContact:
+      return "body-contact";
+    case Feature::Restitution:
+      return "restitution";
+    case Feature::Friction:
+      return "friction";
+    case Feature::Springs:
+      return "springs";
+    case Feature::Hinge:
+      return "hinge";
+    case Feature::Rotation:
+      return "rotation";
+    case Feature::Boxes:
+      return "boxes";
+    case Feature::Count:
+      break;
   }
   return "?";
 }

@@ -20,8 +20,8 @@ Shape read_shape(TomlReader& r) {
 /// Keys that belong to one shape only, rejected with a clear word on the others.
 void reject_foreign_key(TomlReader& r, const std::string& key, const std::string& owner) {
   if (r.has(key))
-    r.fail(r.line_of(key), "'" + key + "' belongs to a " + owner + "; " + r.where() +
-                               " is not one");
+    r.fail(r.line_of(key),
+           "'" + key + "' belongs to a " + owner + "; " + r.where() + " is not one");
 }
 
 void read_geometry(TomlReader& r, Body& b) {
@@ -34,8 +34,8 @@ void read_geometry(TomlReader& r, Body& b) {
   if (b.shape == Shape::Box) {
     b.half_extents = r.vec3("half_extents");
     if (b.half_extents.x <= 0.0 || b.half_extents.y <= 0.0 || b.half_extents.z <= 0.0)
-      r.fail(r.line_of("half_extents"), "every 'half_extents' in " + r.where() +
-                                            " must be greater than 0");
+      r.fail(r.line_of("half_extents"),
+             "every 'half_extents' in " + r.where() + " must be greater than 0");
   } else {
     reject_foreign_key(r, "half_extents", "box");
   }
@@ -46,12 +46,14 @@ void read_geometry(TomlReader& r, Body& b) {
 void read_orientation(TomlReader& r, const Scene& scene, Body& b) {
   if (scene.dims == 2) {
     if (r.has("orientation"))
-      r.fail(r.line_of("orientation"), "'orientation' is for 3D cases; a 2D body uses 'angle' (degrees about z)");
+      r.fail(r.line_of("orientation"),
+             "'orientation' is for 3D cases; a 2D body uses 'angle' (degrees about z)");
     const double degrees = r.number_or("angle", 0.0);
     b.orientation = quat_from_axis_angle({0, 0, 1}, degrees * std::numbers::pi / 180.0);
   } else {
     if (r.has("angle"))
-      r.fail(r.line_of("angle"), "'angle' is for 2D cases; a 3D body uses 'orientation' = [w, x, y, z]");
+      r.fail(r.line_of("angle"),
+             "'angle' is for 2D cases; a 3D body uses 'orientation' = [w, x, y, z]");
     if (r.has("orientation")) {
       const std::vector<double> q = r.numbers("orientation", 4);
       const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -70,7 +72,8 @@ void read_air_coefficients(TomlReader& r, const Scene& scene, Body& b) {
   require_range(r, "drag_coefficient", b.drag_coefficient, 0.0, 0.0);
   b.magnus = r.number_or("magnus", 0.0);
   if (b.drag_coefficient > 0.0 && b.shape != Shape::Sphere)
-    r.fail(r.line_of("drag_coefficient"), "drag needs a frontal area: only a sphere has one (A = pi r^2)");
+    r.fail(r.line_of("drag_coefficient"),
+           "drag needs a frontal area: only a sphere has one (A = pi r^2)");
   if (b.magnus != 0.0 && b.shape == Shape::Point)
     r.fail(r.line_of("magnus"), "a point does not spin, so it feels no Magnus force");
   if ((b.drag_coefficient > 0.0 || b.magnus != 0.0) && !scene.air)

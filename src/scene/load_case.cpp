@@ -33,9 +33,9 @@ void read_timing(TomlReader& root, Scene& scene) {
   scene.sample = root.number("sample");
   load::require_range(root, "sample", scene.sample, 0.0, 0.0, false);
   if (!is_whole(scene.duration / scene.sample))
-    root.fail(root.line_of("duration"),
-              "'duration' (" + show(scene.duration) + " s) must be a whole number of samples of " +
-                  show(scene.sample) + " s");
+    root.fail(root.line_of("duration"), "'duration' (" + show(scene.duration) +
+                                            " s) must be a whole number of samples of " +
+                                            show(scene.sample) + " s");
   scene.dt = root.numbers("dt");
   for (double step : scene.dt) {
     if (step <= 0.0) root.fail(root.line_of("dt"), "every 'dt' must be greater than 0");
@@ -50,7 +50,8 @@ void read_timing(TomlReader& root, Scene& scene) {
   if (std::adjacent_find(scene.dt.begin(), scene.dt.end()) != scene.dt.end())
     root.fail(root.line_of("dt"), "'dt' lists the same step twice");
   if (!root.has("report_dt") && scene.dt.size() > 1)
-    root.fail(root.line(), "the case needs the key 'report_dt' (one of 'dt') when 'dt' has several steps");
+    root.fail(root.line(),
+              "the case needs the key 'report_dt' (one of 'dt') when 'dt' has several steps");
   const double report = root.number_or("report_dt", scene.dt.front());
   const auto match = std::find_if(scene.dt.begin(), scene.dt.end(), [&](double step) {
     return std::abs(step - report) <= 1e-12 * step;
@@ -136,7 +137,8 @@ Scene load_case(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (text.str().find_first_not_of(" \t\r\n") == std::string::npos)
-    throw CaseError(path, 0, "is empty; a case needs at least name, dims, duration, sample, dt and a [[body]]");
+    throw CaseError(
+        path, 0, "is empty; a case needs at least name, dims, duration, sample, dt and a [[body]]");
   return parse_case(text.str(), path);
 }
 

@@ -84,8 +84,9 @@ void read_grid(TomlReader& root, Scene& scene) {
   const bool ok = scene.dims == 2 ? (g.neighbours == 4 || g.neighbours == 6 || g.neighbours == 8)
                                   : (g.neighbours == 6 || g.neighbours == 18 || g.neighbours == 26);
   if (!ok)
-    r.fail(r.line_of("neighbours"), scene.dims == 2 ? "'neighbours' in a 2D [grid] must be 4, 6 or 8"
-                                                    : "'neighbours' in a 3D [grid] must be 6, 18 or 26");
+    r.fail(r.line_of("neighbours"), scene.dims == 2
+                                        ? "'neighbours' in a 2D [grid] must be 4, 6 or 8"
+                                        : "'neighbours' in a 3D [grid] must be 6, 18 or 26");
   g.stiffness = r.number_or("stiffness", g.stiffness);
   require_range(r, "stiffness", g.stiffness, 0.0, 0.0, false);
   g.damping = r.number_or("damping", g.damping);
@@ -131,7 +132,8 @@ void read_grid(TomlReader& root, Scene& scene) {
           if (i2 < 0 || i2 >= nx || j2 < 0 || j2 >= ny || k2 < 0 || k2 >= nz) continue;
           const int a = index(i, j, k), b = index(i2, j2, k2);
           if (scene.bodies[a].fixed && scene.bodies[b].fixed) continue;
-          const double rest = g.spacing * std::sqrt(double(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+          const double rest =
+              g.spacing * std::sqrt(double(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
           scene.springs.push_back({a, b, g.stiffness, g.damping, rest, g.line});
         }
   scene.grid = g;

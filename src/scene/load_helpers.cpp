@@ -13,13 +13,16 @@ std::string show(double v) {
 }
 }  // namespace
 
-TomlReader sub_reader(const TomlReader& parent, const toml::table& table, const std::string& where) {
+TomlReader sub_reader(const TomlReader& parent, const toml::table& table,
+                      const std::string& where) {
   return TomlReader(table, parent.file(), where, node_line(table, parent.line()));
 }
 
 int require_body(const TomlReader& reader, const Scene& scene, const std::string& name, int line) {
   const int index = scene.body_index(name);
-  if (index < 0) reader.fail(line, reader.where() + " names body '" + name + "', which the case does not define");
+  if (index < 0)
+    reader.fail(line,
+                reader.where() + " names body '" + name + "', which the case does not define");
   return index;
 }
 
@@ -46,8 +49,8 @@ void require_range(const TomlReader& reader, const std::string& key, double valu
   if (too_low || too_high) {
     std::string rule = low_inclusive ? "at least " + show(low) : "greater than " + show(low);
     if (high > low) rule = "between " + show(low) + " and " + show(high);
-    reader.fail(reader.line_of(key), "'" + key + "' in " + reader.where() + " must be " + rule +
-                                         ", not " + show(value));
+    reader.fail(reader.line_of(key),
+                "'" + key + "' in " + reader.where() + " must be " + rule + ", not " + show(value));
   }
 }
 

@@ -82,7 +82,8 @@ void read_springs(TomlReader& root, Scene& scene) {
     require_range(r, "stiffness", s.stiffness, 0.0, 0.0, false);
     s.damping = r.number_or("damping", 0.0);
     require_range(r, "damping", s.damping, 0.0, 0.0);
-    s.rest_length = r.number_or("rest_length", norm(scene.bodies[a].position - scene.bodies[b].position));
+    s.rest_length =
+        r.number_or("rest_length", norm(scene.bodies[a].position - scene.bodies[b].position));
     require_range(r, "rest_length", s.rest_length, 0.0, 0.0);
     r.finish();
     scene.springs.push_back(s);

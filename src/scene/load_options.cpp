@@ -27,7 +27,8 @@ std::vector<std::string> read_choices(TomlReader& r, const std::string& key,
   if (chosen.empty()) r.fail(r.line_of(key), "'" + key + "' in [course] must not be empty");
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     if (!contains(known, chosen[i]))
-      r.fail(r.line_of(key), "'" + key + "' in [course] has '" + chosen[i] + "'; known: " + joined(known));
+      r.fail(r.line_of(key),
+             "'" + key + "' in [course] has '" + chosen[i] + "'; known: " + joined(known));
     if (std::find(chosen.begin(), chosen.begin() + i, chosen[i]) != chosen.begin() + i)
       r.fail(r.line_of(key), "'" + key + "' in [course] lists '" + chosen[i] + "' twice");
   }
@@ -40,7 +41,8 @@ void read_course(TomlReader& root, Scene& scene) {
   const toml::table empty;
   const toml::table* t = root.table("course");
   TomlReader r = sub_reader(root, t ? *t : empty, "[course]");
-  scene.course.integrators = read_choices(r, "integrators", known_integrators(), known_integrators());
+  scene.course.integrators =
+      read_choices(r, "integrators", known_integrators(), known_integrators());
   scene.course.ground = read_choices(r, "ground", known_ground_rules(), {"mirror"});
   scene.course.friction = read_choices(r, "friction", known_friction_rules(), {"clamp"});
   r.finish();
@@ -84,7 +86,8 @@ void read_observes(TomlReader& root, Scene& scene) {
     o.line = r.line();
     o.kind = r.string("kind");
     if (!contains(observable_kinds(), o.kind))
-      r.fail(r.line_of("kind"), "unknown observable kind '" + o.kind + "'; known: " + joined(observable_kinds()));
+      r.fail(r.line_of("kind"),
+             "unknown observable kind '" + o.kind + "'; known: " + joined(observable_kinds()));
     const std::string body = r.string("body");
     o.body = require_body(r, scene, body, r.line_of("body"));
     o.name = o.kind + "/" + body;
@@ -108,13 +111,16 @@ void read_gates(TomlReader& root, Scene& scene) {
     g.line = r.line();
     g.backend = r.string("backend");
     if (!contains(backends, g.backend))
-      r.fail(r.line_of("backend"), "[[gate]] names backend '" + g.backend + "', which this case does not run; it runs: " + joined(backends));
+      r.fail(r.line_of("backend"),
+             "[[gate]] names backend '" + g.backend +
+                 "', which this case does not run; it runs: " + joined(backends));
     g.metric = r.string("metric");
     const bool observable = std::any_of(scene.observes.begin(), scene.observes.end(),
                                         [&](const Observe& o) { return o.name == g.metric; });
     if (!contains(error_metric_names(), g.metric) && !observable)
-      r.fail(r.line_of("metric"), "[[gate]] metric '" + g.metric + "' is neither an error metric (" +
-                                      joined(error_metric_names()) + ") nor an [[observe]] of this case");
+      r.fail(r.line_of("metric"),
+             "[[gate]] metric '" + g.metric + "' is neither an error metric (" +
+                 joined(error_metric_names()) + ") nor an [[observe]] of this case");
     g.max = r.number("max");
     require_range(r, "max", g.max, 0.0, 0.0);
     r.finish();

@@ -5,7 +5,9 @@
 
 namespace bb {
 
-int Scene::sample_count() const { return static_cast<int>(std::llround(duration / sample)); }
+int Scene::sample_count() const {
+  return static_cast<int>(std::llround(duration / sample));
+}
 
 int Scene::steps_per_sample(double step) const {
   return static_cast<int>(std::llround(sample / step));
@@ -63,7 +65,8 @@ Vec3 principal_inertia(const Body& body) {
       return {m / 12.0 * (s.y * s.y + s.z * s.z), m / 12.0 * (s.x * s.x + s.z * s.z),
               m / 12.0 * (s.x * s.x + s.y * s.y)};
     }
-    case Shape::Point: return {};
+    case Shape::Point:
+      return {};
   }
   return {};
 }

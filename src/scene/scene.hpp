@@ -18,18 +18,18 @@ enum class Shape { Sphere, Box, Point };
 struct Body {
   std::string name;
   Shape shape = Shape::Sphere;
-  double radius = 0.0;       ///< metres (sphere)
-  Vec3 half_extents;         ///< metres (box)
-  double mass = 0.0;         ///< kilograms; 0 for a fixed body
-  bool shell = false;        ///< sphere inertia 2/3 m r^2 when true, 2/5 m r^2 otherwise
-  Vec3 position;             ///< metres
-  Vec3 velocity;             ///< metres per second
-  Quat orientation;          ///< unit quaternion; 2D scenes rotate about z only
-  Vec3 angular_velocity;     ///< radians per second, world frame
+  double radius = 0.0;            ///< metres (sphere)
+  Vec3 half_extents;              ///< metres (box)
+  double mass = 0.0;              ///< kilograms; 0 for a fixed body
+  bool shell = false;             ///< sphere inertia 2/3 m r^2 when true, 2/5 m r^2 otherwise
+  Vec3 position;                  ///< metres
+  Vec3 velocity;                  ///< metres per second
+  Quat orientation;               ///< unit quaternion; 2D scenes rotate about z only
+  Vec3 angular_velocity;          ///< radians per second, world frame
   double drag_coefficient = 0.0;  ///< Cd, dimensionless
-  double magnus = 0.0;       ///< k in F = k (omega x (v - wind)), kilograms
-  bool fixed = false;        ///< infinite mass, never moves
-  int line = 0;              ///< line of the [[body]] header in the case file
+  double magnus = 0.0;            ///< k in F = k (omega x (v - wind)), kilograms
+  bool fixed = false;             ///< infinite mass, never moves
+  int line = 0;                   ///< line of the [[body]] header in the case file
 };
 
 /// Still air with an optional uniform wind.
@@ -128,10 +128,10 @@ struct Scene {
   std::string title;
   std::string seed;  ///< section of the course text, may be empty
   int dims = 2;
-  double duration = 0.0;     ///< simulated seconds
-  double sample = 0.0;       ///< seconds between samples
-  std::vector<double> dt;    ///< fixed steps to sweep, seconds
-  double report_dt = 0.0;    ///< the game-frame step for tables and gates
+  double duration = 0.0;   ///< simulated seconds
+  double sample = 0.0;     ///< seconds between samples
+  std::vector<double> dt;  ///< fixed steps to sweep, seconds
+  double report_dt = 0.0;  ///< the game-frame step for tables and gates
   Vec3 gravity{0.0, -9.81, 0.0};
   std::optional<Air> air;
   std::optional<Ground> ground;

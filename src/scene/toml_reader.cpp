@@ -9,17 +9,26 @@ namespace {
 
 std::string type_word(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a number";
-    case toml::node_type::boolean: return "true or false";
-    case toml::node_type::array: return "a list";
-    case toml::node_type::table: return "a table";
-    default: return "a date or time";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::boolean:
+      return "true or false";
+    case toml::node_type::array:
+      return "a list";
+    case toml::node_type::table:
+      return "a table";
+    default:
+      return "a date or time";
   }
 }
 
-std::string quoted(const std::string& key) { return "'" + key + "'"; }
+std::string quoted(const std::string& key) {
+  return "'" + key + "'";
+}
 
 }  // namespace
 
@@ -64,7 +73,9 @@ double TomlReader::as_number(const std::string& key, const toml::node& node) con
   return value;
 }
 
-double TomlReader::number(const std::string& key) { return as_number(key, require(key)); }
+double TomlReader::number(const std::string& key) {
+  return as_number(key, require(key));
+}
 
 double TomlReader::number_or(const std::string& key, double fallback) {
   const toml::node* node = find(key);
@@ -110,7 +121,8 @@ std::vector<double> TomlReader::numbers(const std::string& key, std::size_t coun
   const toml::node& node = require(key);
   const auto* array = node.as_array();
   if (array == nullptr)
-    fail(node_line(node, line_), quoted(key) + " must be a list of numbers, not " + type_word(node));
+    fail(node_line(node, line_),
+         quoted(key) + " must be a list of numbers, not " + type_word(node));
   if (count > 0 && array->size() != count) {
     std::ostringstream s;
     s << quoted(key) << " must have " << count << " numbers, not " << array->size();
@@ -135,7 +147,8 @@ std::vector<std::string> TomlReader::strings(const std::string& key) {
   const toml::node& node = require(key);
   const auto* array = node.as_array();
   if (array == nullptr)
-    fail(node_line(node, line_), quoted(key) + " must be a list of strings, not " + type_word(node));
+    fail(node_line(node, line_),
+         quoted(key) + " must be a list of strings, not " + type_word(node));
   std::vector<std::string> out;
   for (const toml::node& element : *array) {
     const auto* s = element.as_string();

@@ -2,12 +2,12 @@
 // remembered, so finish() can reject the keys nobody asked for.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "scene/case_error.hpp"
 #include "scene/vec3.hpp"

@@ -32,17 +32,33 @@ struct Vec3 {
   bool operator==(const Vec3&) const = default;
 };
 
-inline Vec3 operator+(Vec3 a, const Vec3& b) { return a += b; }
-inline Vec3 operator-(Vec3 a, const Vec3& b) { return a -= b; }
-inline Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
-inline Vec3 operator*(Vec3 a, double s) { return a *= s; }
-inline Vec3 operator*(double s, Vec3 a) { return a *= s; }
-inline Vec3 operator/(const Vec3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec3 operator+(Vec3 a, const Vec3& b) {
+  return a += b;
+}
+inline Vec3 operator-(Vec3 a, const Vec3& b) {
+  return a -= b;
+}
+inline Vec3 operator-(const Vec3& a) {
+  return {-a.x, -a.y, -a.z};
+}
+inline Vec3 operator*(Vec3 a, double s) {
+  return a *= s;
+}
+inline Vec3 operator*(double s, Vec3 a) {
+  return a *= s;
+}
+inline Vec3 operator/(const Vec3& a, double s) {
+  return {a.x / s, a.y / s, a.z / s};
+}
+inline double dot(const Vec3& a, const Vec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 inline Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline double norm(const Vec3& a) {
+  return std::sqrt(dot(a, a));
+}
 inline bool is_finite(const Vec3& a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
@@ -57,10 +73,9 @@ struct Quat {
 };
 
 inline Quat operator*(const Quat& a, const Quat& b) {
-  return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-          a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+  return {
+      a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+      a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 
 inline Quat normalized(const Quat& q) {
@@ -68,7 +83,9 @@ inline Quat normalized(const Quat& q) {
   return {q.w / n, q.x / n, q.y / n, q.z / n};
 }
 
-inline Quat conjugate(const Quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
+inline Quat conjugate(const Quat& q) {
+  return {q.w, -q.x, -q.y, -q.z};
+}
 
 /// `v` rotated by the unit quaternion `q`.
 inline Vec3 rotate(const Quat& q, const Vec3& v) {
@@ -90,6 +107,8 @@ inline Quat quat_from_rotation_vector(const Vec3& omega, double t) {
 }
 
 /// Angle about z (radians) of a rotation that is about z, as in a 2D scene.
-inline double angle_about_z(const Quat& q) { return 2.0 * std::atan2(q.z, q.w); }
+inline double angle_about_z(const Quat& q) {
+  return 2.0 * std::atan2(q.z, q.w);
+}
 
 }  // namespace bb

@@ -1,0 +1,123 @@
+// Every engine adapter runs every bundled drag case, converges towards the reference as dt
+// halves, and steps like semi-implicit Euler (which Bullet, Box2D and ODE all use).
+#include <gtest/gtest.h>
+
+#include "cli/commands.hpp"
+#include "course/course_backend.hpp"
+#include "metrics/errors.hpp"
+#include "reference/gsl_reference.hpp"
+#include "run/accuracy_run.hpp"
+#include "run/registry.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+const Registry& registry() {
+  static const Registry r = Registry::load();
+  return r;
+}
+
+const Backend* engine(const std::string& name) {
+  for (const Backend* b : registry().engines())
+    if (b->name() == name) return b;
+  return nullptr;
+}
+
+bool single_precision(const std::string& name) {
+  return name == "bullet-float" || name == "box2d";
+}
+
+struct EngineCase {
+  std::string engine;
+  std::string case_name;
+};
+
+void PrintTo(const EngineCase& c, std::ostream* os) {
+  *os << c.engine << " on " << c.case_name;
+}
+
+class EngineConvergence : public ::testing::TestWithParam<EngineCase> {};
+
+TEST_P(EngineConvergence, ConvergesAndStepsLikeSemiImplicitEuler) {
+  const Backend* backend = engine(GetParam().engine);
+  if (backend == nullptr) GTEST_SKIP() << GetParam().engine << " was not built";
+  const Scene scene = load_case(test::source_path("cases/" + GetParam().case_name + ".toml"));
+  if (!missing_features(*backend, scene).empty()) GTEST_SKIP() << "case not supported";
+  const RunRecord reference = run_accuracy(ReferenceBackend(), scene, scene.sample);
+  const CourseBackend euler(
+      {"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"});
+  // Single precision rounds every step; its error stops shrinking near this many metres.
+  const double precision_floor = single_precision(backend->name()) ? 5e-3 : 1e-9;
+  std::vector<double> errors;
+  for (double dt : scene.dt) {
+    const RunRecord run = run_accuracy(*backend, scene, dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << dt << ": " << run.reason;
+    errors.push_back(compare(scene, run.trajectory, reference.trajectory).position_max);
+    const RunRecord same_method = run_accuracy(euler, scene, dt);
+    EXPECT_LT(max_position_difference(run.trajectory, same_method.trajectory), precision_floor)
+        << "dt = " << dt << ": the engine does not step like semi-implicit Euler";
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i)
+    if (errors[i - 1] > 10 * precision_floor) {
+      EXPECT_LT(errors[i], 0.75 * errors[i - 1]) << i;
+    }
+  EXPECT_LT(errors.back(), errors.front() / 16.0);
+}
+
+std::vector<EngineCase> engine_cases() {
+  std::vector<EngineCase> out;
+  for (const char* e : {"bullet", "bullet-float", "box2d", "ode"})
+    for (const char* c : {"drag_fall", "beachball_shells", "three_beachballs_2", "magnus_throw"})
+      // Box2D is 2D only; Engines.Box2dSaysItCannotRunA3dCase covers the 3D case.
+      if (std::string(e) != "box2d" || std::string(c) != "beachball_shells") out.push_back({e, c});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(DragCases, EngineConvergence, ::testing::ValuesIn(engine_cases()),
+                         [](const auto& info) {
+                           std::string n = info.param.engine + "_" + info.param.case_name;
+                           std::replace(n.begin(), n.end(), '-', '_');
+                           return n;
+                         });
+
+TEST(Engines, TheStandardEnginesAreBuilt) {
+  for (const char* name : {"bullet", "bullet-float", "box2d", "ode"})
+    EXPECT_NE(engine(name), nullptr) << name << " plugin missing from " << plugin_folder();
+}
+
+TEST(Engines, Box2dSaysItCannotRunA3dCase) {
+  const Backend* box2d = engine("box2d");
+  if (box2d == nullptr) GTEST_SKIP() << "box2d was not built";
+  const Scene scene = load_case(test::source_path("cases/beachball_shells.toml"));
+  const RunRecord run = run_accuracy(*box2d, scene, scene.report_dt);
+  EXPECT_EQ(run.status, RunStatus::Unsupported);
+  EXPECT_EQ(run.reason, "does not support: 3d");
+}
+
+TEST(Engines, FloatAndDoubleBulletDifferOnlyByRounding) {
+  const Backend* d = engine("bullet");
+  const Backend* f = engine("bullet-float");
+  if (d == nullptr || f == nullptr) GTEST_SKIP() << "bullet not built";
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const RunRecord rd = run_accuracy(*d, scene, scene.dt.back());
+  const RunRecord rf = run_accuracy(*f, scene, scene.dt.back());
+  const double difference = max_position_difference(rd.trajectory, rf.trajectory);
+  // Both plugins live in one process; different results show each got its own library.
+  EXPECT_GT(difference, 1e-7);
+  EXPECT_LT(difference, 5e-3);
+}
+
+TEST(Engines, SettingsThatChangeResultsAreReported) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  for (const Backend* b : registry().engines()) {
+    const Settings s = b->start(scene, scene.report_dt)->settings();
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : s) keys.push_back(k);
+    for (const char* k : {"linear_damping", "angular_damping", "precision"})
+      EXPECT_NE(std::find(keys.begin(), keys.end(), k), keys.end()) << b->name() << " lacks " << k;
+  }
+}
+
+}  // namespace
+}  // namespace bb

@@ -1,0 +1,173 @@
+// The `beachball` program end to end: outputs, exit codes, messages.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;  ///< stdout and stderr together
+};
+
+Outcome beachball(const std::string& args) {
+  const std::string command = std::string(BEACHBALL_PROGRAM) + " " + args + " 2>&1";
+  Outcome o;
+  FILE* pipe = popen(command.c_str(), "r");
+  std::array<char, 4096> buffer{};
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+    o.out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+std::string fresh_dir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/beachball_" + name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string write_case(const std::string& dir, const std::string& file, const std::string& text) {
+  fs::create_directories(dir);
+  const std::string path = dir + "/" + file;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Cli, RunWritesTheContractAndPrintsEveryBackend) {
+  const std::string out = fresh_dir("run");
+  const Outcome o = beachball("run " + test::source_path("cases/drag_fall.toml") + " --out " + out +
+                              " --cost-time 0.001");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  for (const char* name :
+       {"reference", "course/explicit-euler", "course/semi-implicit-euler",
+        "course/velocity-verlet", "course/rk4", "bullet", "bullet-float", "box2d", "ode"})
+    EXPECT_NE(o.out.find(std::string("\n") + name + " "), std::string::npos) << name << "\n"
+                                                                             << o.out;
+  for (const char* ext : {".json", ".csv", ".md"})
+    EXPECT_TRUE(fs::exists(out + "/drag_fall" + ext)) << ext;
+
+  const auto j = nlohmann::json::parse(std::ifstream(out + "/drag_fall.json"));
+  EXPECT_EQ(j["schema"], "beachball-results/1");
+  EXPECT_EQ(j["case"], "drag_fall");
+  for (const char* lib : {"beachball", "gsl", "bullet", "box2d", "ode"})
+    EXPECT_TRUE(j["versions"].contains(lib)) << lib;
+  for (const char* key : {"method", "tolerance", "self_check"})
+    EXPECT_TRUE(j["reference"].contains(key)) << key;
+  EXPECT_TRUE(j["order"].is_object());
+  EXPECT_TRUE(j["stability"].is_object());
+  ASSERT_GE(j["runs"].size(), 1u + 8u * 6u);
+  EXPECT_EQ(j["runs"][0]["backend"], "reference");
+  EXPECT_TRUE(j["runs"][0]["dt"].is_null());
+  for (const auto& run : j["runs"]) {
+    for (const char* key : {"backend", "dt", "status", "reason", "diverged_at", "steps", "cost",
+                            "errors", "observables", "engine_settings"})
+      EXPECT_TRUE(run.contains(key)) << key;
+    if (run["status"] != "ok") continue;
+    for (const char* key : {"ns_per_step", "seconds_per_simulated_second", "repeats"})
+      EXPECT_TRUE(run["cost"].contains(key)) << key;
+    if (run["backend"] == "reference") continue;
+    for (const char* key :
+         {"position_max", "position_rms", "position_final", "velocity_max", "energy_max"})
+      EXPECT_TRUE(run["errors"][key].is_number()) << key;
+    EXPECT_TRUE(run["observables"]["terminal_velocity/elephant"]["value"].is_number());
+  }
+  EXPECT_NEAR(j["order"]["course/rk4"].get<double>(), 4.0, 0.2);
+
+  // The CSV has a header and one row per run.
+  std::ifstream csv(out + "/drag_fall.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("case,backend,dt,status,", 0), 0u);
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, static_cast<int>(j["runs"].size()));
+}
+
+TEST(Cli, ACaseWrittenFromTheFormatAloneRunsOnEveryBackend) {
+  const std::string out = fresh_dir("external");
+  const Outcome o = beachball("run " + test::source_path("tests/cases/thrown_into_wind.toml") +
+                              " --out " + out + " --no-cost");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  const auto j = nlohmann::json::parse(std::ifstream(out + "/thrown_into_wind.json"));
+  for (const auto& run : j["runs"])
+    EXPECT_EQ(run["status"], "ok") << run["backend"] << ": " << run["reason"];
+}
+
+TEST(Cli, BadInputExitsTwoNamingFileAndLineAndWritesNothing) {
+  const std::string dir = fresh_dir("bad");
+  const std::string good = write_case(dir, "good.toml", test::kMinimalCase);
+  std::string text = test::kMinimalCase;
+  const std::size_t at = text.find("mass = 1.0");
+  text.replace(at, 10, "mass = -2.0");
+  const auto line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+  const std::string bad = write_case(dir, "bad.toml", text);
+  const std::string out = dir + "/out";
+  // The good case comes first: still nothing may be written.
+  const Outcome o = beachball("run " + good + " " + bad + " --out " + out);
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.out.find(bad + ":" + std::to_string(line) +
+                       ": 'mass' in [[body]] 'ball' must be greater than 0"),
+            std::string::npos)
+      << o.out;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(beachball("run").exit_code, 2);
+  EXPECT_EQ(beachball("frobnicate").exit_code, 2);
+  EXPECT_EQ(beachball("run " + test::source_path("cases/drag_fall.toml") +
+                      " --backends physx --no-cost --out " + fresh_dir("usage"))
+                .exit_code,
+            2);
+  EXPECT_EQ(beachball("run " + test::source_path("cases/drag_fall.toml") + " --dt abc --out " +
+                      fresh_dir("usage"))
+                .exit_code,
+            2);
+}
+
+TEST(Cli, CheckFailsOnATightGateAndPassesOnALooseOne) {
+  const std::string dir = fresh_dir("check");
+  const auto gated = [&](double max) {
+    return std::string(test::kMinimalCase) +
+           "\n[[gate]]\nbackend = \"course/semi-implicit-euler\"\nmetric = \"position_max\"\nmax "
+           "= " +
+           std::to_string(max) + "\n";
+  };
+  const std::string tight = write_case(dir, "tight.toml", gated(1e-9));
+  const std::string loose = write_case(dir, "loose.toml", gated(1.0));
+  const std::string junit = dir + "/gates.xml";
+  const Outcome failed = beachball("check " + tight + " --junit " + junit);
+  EXPECT_EQ(failed.exit_code, 1) << failed.out;
+  EXPECT_NE(failed.out.find("FAIL"), std::string::npos);
+  std::ifstream xml(junit);
+  const std::string text((std::istreambuf_iterator<char>(xml)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("<failure message=\"position_max"), std::string::npos) << text;
+  EXPECT_NE(text.find("course/semi-implicit-euler position_max"), std::string::npos) << text;
+  const Outcome passed = beachball("check " + loose);
+  EXPECT_EQ(passed.exit_code, 0) << passed.out;
+}
+
+TEST(Cli, ListSaysWhatWasBuiltAndWhoRunsWhat) {
+  const Outcome o = beachball("list");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  for (const char* name : {"bullet ", "bullet-float ", "box2d ", "ode "})
+    EXPECT_NE(o.out.find(std::string(name)), std::string::npos) << name;
+  EXPECT_NE(o.out.find("built (bullet 3."), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("unsupported: 3d"), std::string::npos) << o.out;
+}
+
+}  // namespace
+}  // namespace bb

@@ -1,0 +1,129 @@
+// The runner: capability matching, the sample grid, divergence and backend failures.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "course/course_backend.hpp"
+#include "run/accuracy_run.hpp"
+#include "run/case_runner.hpp"
+#include "scene/case_error.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+/// A test-only backend: a body that flies off exponentially once the run passes `blow_up_at`,
+/// or that throws from step() when `throw_at` is reached.
+class FaultyBackend : public Backend {
+ public:
+  FaultyBackend(std::string name, double blow_up_at, double throw_at = 1e9)
+      : name_(std::move(name)), blow_up_at_(blow_up_at), throw_at_(throw_at) {}
+  std::string name() const override { return name_; }
+  FeatureSet supports() const override {
+    return {Feature::Gravity, Feature::Drag, Feature::ThreeD, Feature::Wind};
+  }
+  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
+    struct Sim : Simulation {
+      State state;
+      double dt, t = 0, blow_up_at, throw_at;
+      long n = 0;
+      void step() override {
+        t = static_cast<double>(++n) * dt;
+        if (t >= throw_at) throw std::runtime_error("engine gave up");
+        if (t > blow_up_at)
+          for (auto& b : state) b.position.y = b.position.y * 2.0 + 1.0;
+      }
+      void read(State& out) const override { out = state; }
+    };
+    auto sim = std::make_unique<Sim>();
+    sim->state.resize(scene.bodies.size());
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+      sim->state[i].position = scene.bodies[i].position;
+    sim->dt = dt;
+    sim->blow_up_at = blow_up_at_;
+    sim->throw_at = throw_at_;
+    return sim;
+  }
+
+ private:
+  std::string name_;
+  double blow_up_at_, throw_at_;
+};
+
+TEST(Runner, SamplesOnTheGridWithTimeAsStepsTimesDt) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const CourseBackend backend({"course/rk4", "rk4", "mirror", "clamp"});
+  const double dt = scene.dt.back();
+  const RunRecord run = run_accuracy(backend, scene, dt);
+  ASSERT_EQ(run.status, RunStatus::Ok);
+  ASSERT_EQ(static_cast<int>(run.trajectory.times.size()), scene.sample_count() + 1);
+  EXPECT_EQ(run.steps, static_cast<long>(scene.sample_count()) * scene.steps_per_sample(dt));
+  for (std::size_t j = 0; j < run.trajectory.times.size(); ++j)
+    EXPECT_EQ(run.trajectory.times[j], static_cast<double>(j * scene.steps_per_sample(dt)) * dt);
+}
+
+TEST(Runner, DivergenceIsAResultWithItsTime) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const RunRecord run = run_accuracy(FaultyBackend("faulty", 2.0), scene, scene.report_dt);
+  EXPECT_EQ(run.status, RunStatus::Diverged);
+  ASSERT_TRUE(run.diverged_at.has_value());
+  EXPECT_GT(*run.diverged_at, 2.0);
+  // Found within a few samples of the blow-up, once the body passes the scene's bound.
+  EXPECT_LT(*run.diverged_at, 2.0 + 5 * scene.sample);
+  EXPECT_FALSE(run.reason.empty());
+}
+
+TEST(Runner, AnExceptionInsideABackendIsAnErrorResult) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const RunRecord run = run_accuracy(FaultyBackend("faulty", 1e9, 1.0), scene, scene.report_dt);
+  EXPECT_EQ(run.status, RunStatus::Error);
+  EXPECT_NE(run.reason.find("engine gave up"), std::string::npos);
+}
+
+TEST(Runner, MissingFeaturesAreNamed) {
+  std::string text = test::kMinimalCase;
+  text += "magnus = 0.01\nangular_velocity = [0.0, 0.0, 3.0]\n";
+  const Scene scene = test::scene_from(text);
+  const RunRecord run = run_accuracy(FaultyBackend("faulty", 1e9), scene, 0.05);
+  EXPECT_EQ(run.status, RunStatus::Unsupported);
+  EXPECT_EQ(run.reason, "does not support: magnus, rotation");
+  EXPECT_EQ(run.steps, 0);
+}
+
+TEST(Runner, ADivergingBackendDoesNotStopTheOthers) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  Registry registry = Registry::load();
+  registry.add_engine(std::make_unique<FaultyBackend>("faulty", 1.0));
+  RunOptions options;
+  options.cost = false;
+  options.dts = {scene.report_dt};
+  const CaseResults results = run_case(scene, registry, options);
+  int ok = 0, diverged = 0;
+  for (const RunRecord& r : results.runs) {
+    if (r.backend == "faulty") {
+      EXPECT_EQ(r.status, RunStatus::Diverged);
+      EXPECT_FALSE(r.errors.has_value());
+      ++diverged;
+    } else if (r.status == RunStatus::Ok) {
+      EXPECT_TRUE(r.errors.has_value());
+      ++ok;
+    }
+  }
+  EXPECT_EQ(diverged, 1);
+  EXPECT_GE(ok, 4);  // at least the four course integrators
+}
+
+TEST(Runner, OptionsNamingUnknownBackendsOrStepsAreBadInput) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const Registry registry = Registry::load();
+  RunOptions options;
+  options.cost = false;
+  options.backends = {"physx"};
+  EXPECT_THROW(run_case(scene, registry, options), CaseError);
+  options.backends = {};
+  options.dts = {0.0123};
+  EXPECT_THROW(run_case(scene, registry, options), CaseError);
+}
+
+}  // namespace
+}  // namespace bb

@@ -1,0 +1,39 @@
+// Helpers shared by the tests: scenes from inline TOML, paths into the source tree.
+#pragma once
+
+#include <string>
+
+#include "scene/load_case.hpp"
+
+namespace bb::test {
+
+/// The source tree, for cases/ and tests/cases/.
+inline std::string source_path(const std::string& relative) {
+  return std::string(BEACHBALL_SOURCE_DIR) + "/" + relative;
+}
+
+/// A scene parsed from inline case text, named "inline.toml" in messages.
+inline Scene scene_from(const std::string& toml) {
+  return parse_case(toml, "inline.toml");
+}
+
+/// The smallest valid 2D drag case, for tests to extend.
+inline const char* kMinimalCase = R"(name = "minimal"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.1, 0.05]
+report_dt = 0.05
+
+[air]
+density = 1.2
+
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 10.0, 0.0]
+drag_coefficient = 0.47
+)";
+
+}  // namespace bb::test
