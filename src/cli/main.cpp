@@ -63,18 +63,20 @@ int main(int argc, char** argv) {
   run->add_option("--out", out, "output folder")->default_val("out");
   run->add_option("--backends", backends, "comma-separated backend names (default: all)");
   run->add_option("--dt", dts, "comma-separated steps from the case's dt, e.g. 1/60,1/120");
-  run->add_option("--jobs", jobs, "accuracy runs in parallel")->default_val(default_jobs);
-  run->add_flag("--no-cost", no_cost, "skip the timing pass");
-  run->add_option("--cost-time", cost_seconds, "minimum timed seconds per run in the cost pass")
-      ->default_val(0.05);
+  // Options shared by the commands that run and time a sweep.
+  const auto add_sweep_options = [&](CLI::App* command) {
+    command->add_option("--jobs", jobs, "accuracy runs in parallel")->default_val(default_jobs);
+    command->add_flag("--no-cost", no_cost, "skip the timing pass");
+    command
+        ->add_option("--cost-time", cost_seconds, "minimum timed seconds per run in the cost pass")
+        ->default_val(0.05);
+  };
+  add_sweep_options(run);
 
   auto* report = app.add_subcommand("report", "run the suite and write the report pages");
   report->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
   report->add_option("--out", out, "report folder")->default_val("reports");
-  report->add_option("--jobs", jobs, "accuracy runs in parallel")->default_val(default_jobs);
-  report->add_flag("--no-cost", no_cost, "skip the timing pass");
-  report->add_option("--cost-time", cost_seconds, "minimum timed seconds per run")
-      ->default_val(0.05);
+  add_sweep_options(report);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", cases, "case files or folders (default: the bundled suite)");

@@ -9,16 +9,11 @@
 #include "run/parallel.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
 namespace {
-
-std::string joined(const std::vector<std::string>& words) {
-  std::string out;
-  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
 
 bool wanted(const RunOptions& options, const std::string& name) {
   return options.backends.empty() || std::find(options.backends.begin(), options.backends.end(),

@@ -9,7 +9,6 @@ const std::vector<EngineKey>& engine_keys() {
       {"bullet", "solver_iterations", KeyKind::Integer, 10, "sequential-impulse iterations"},
       {"bullet", "erp", KeyKind::Number, 0.2, "error reduction per step, contacts and joints"},
       {"bullet", "split_impulse", KeyKind::Boolean, 1, "split-impulse position correction"},
-      {"bullet", "collision_margin", KeyKind::Number, 0.04, "collision margin, metres"},
       {"bullet", "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
       {"bullet", "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"},
       {"box2d", "velocity_iterations", KeyKind::Integer, 8, "velocity solver iterations"},

@@ -5,16 +5,11 @@
 #include "scene/engine_keys.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/metric_names.hpp"
+#include "scene/text.hpp"
 
 namespace bb::load {
 
 namespace {
-
-std::string joined(const std::vector<std::string>& words) {
-  std::string out;
-  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
