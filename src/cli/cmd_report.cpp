@@ -1,36 +1,70 @@
 #include <fmt/format.h>
 
+#include <map>
+
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "report/atomic_file.hpp"
 #include "report/format.hpp"
 #include "report/table.hpp"
+#include "run/stability.hpp"
 
 namespace bb::cli {
 
 namespace {
 
+/// "0.291 m, 1.00, 76 ns" with a gate mark: the error at report_dt, the order, the cost.
+std::string index_cell(const CaseResults& r, const RunRecord& run) {
+  if (run.status != RunStatus::Ok) return status_name(run.status);
+  std::string cell =
+      format_value(run.errors ? std::optional<double>(run.errors->position_max) : std::nullopt) +
+      " m";
+  if (const auto o = r.order.find(run.backend); o != r.order.end())
+    cell += fmt::format(", p {:.2f}", o->second);
+  if (run.cost) cell += ", " + format_ns(run.cost->ns_per_step) + " ns";
+  for (const GateResult& g : r.gates)
+    if (g.gate.backend == run.backend) cell += g.passed ? " ✓" : " ✗";
+  return cell;
+}
+
 std::string index_page(const std::vector<CaseResults>& all) {
+  // Columns: every backend that appears in any case, in first-seen order.
+  std::vector<std::string> backends;
+  for (const CaseResults& r : all)
+    for (const RunRecord& run : r.runs)
+      if (std::find(backends.begin(), backends.end(), run.backend) == backends.end())
+        backends.push_back(run.backend);
   Table t;
-  t.headers = {"case", "title", "course section", "runs ok", "gates"};
-  t.right_aligned = {false, false, false, true, false};
+  t.headers = {"case", "gates"};
+  t.headers.insert(t.headers.end(), backends.begin(), backends.end());
+  t.right_aligned.assign(t.headers.size(), false);
   for (const CaseResults& r : all) {
-    int ok = 0, total = 0, passed = 0;
-    for (const RunRecord& run : r.runs) {
-      if (run.status == RunStatus::Unsupported) continue;
-      ++total;
-      ok += run.status == RunStatus::Ok;
-    }
+    int passed = 0;
     for (const GateResult& g : r.gates) passed += g.passed;
-    const std::string gates =
-        r.gates.empty() ? "none" : fmt::format("{}/{} pass", passed, r.gates.size());
-    t.rows.push_back({fmt::format("[{0}]({0}.md)", r.scene->name), r.scene->title,
-                      r.scene->seed.empty() ? "-" : r.scene->seed, fmt::format("{}/{}", ok, total),
-                      gates});
+    std::vector<std::string> row = {
+        fmt::format("[{0}]({0}.md)", r.scene->name),
+        r.gates.empty() ? "none" : fmt::format("{}/{} pass", passed, r.gates.size())};
+    for (const std::string& b : backends) {
+      std::string cell = "-";
+      for (const RunRecord& run : r.runs)
+        if (run.backend == b && run.dt && *run.dt == r.scene->report_dt) cell = index_cell(r, run);
+      row.push_back(cell);
+    }
+    t.rows.push_back(row);
   }
-  return "# beachball report\n\nThe standard suite, one page per case. Each page shows the scene, "
-         "every backend's error against the reference and its cost at the game-frame step, the "
-         "whole dt sweep, the gates and the engine settings used. Regenerate with the README's "
-         "report command.\n\n" +
+  Table titles;
+  titles.headers = {"case", "title", "course section"};
+  for (const CaseResults& r : all)
+    titles.rows.push_back({fmt::format("[{0}]({0}.md)", r.scene->name), r.scene->title,
+                           r.scene->seed.empty() ? "-" : r.scene->seed});
+  return "# beachball report\n\nThe bundled suite, one page per case: the scene, every backend's "
+         "error against the GSL reference and its cost, the whole dt sweep with work-precision "
+         "diagrams, trajectories and energy, the stability search, the gates and the engine "
+         "settings used. Regenerate with `scripts/report`; only cost figures change.\n\n" +
+         render_markdown(titles) +
+         "\n## At report_dt\n\nEach cell: position_max against the reference at the case's "
+         "report_dt, the observed order of convergence p over the sweep, the median cost of one "
+         "step, and ✓ or ✗ where a gate covers the backend.\n\n" +
          render_markdown(t);
 }
 
@@ -40,11 +74,19 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
                    const RunOptions& options) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
+  int units = 0;
+  for (const Scene& scene : scenes)
+    units += progress_units(scene, registry, options) +
+             static_cast<int>(backends_for(scene, registry).all.size());
+  Progress progress(units);
+  RunOptions with_progress = options;
+  with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
   std::vector<CaseResults> all;
   for (const Scene& scene : scenes) {
-    fmt::print("running {} ...\n", scene.name);
-    std::fflush(stdout);
-    all.push_back(run_case(scene, registry, options));
+    all.push_back(run_case(scene, registry, with_progress));
+    all.back().stability = find_stability_all(
+        scene, registry, options.backends, options.jobs,
+        [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); });
   }
   // Pages are written only when every case has run.
   for (const CaseResults& r : all) write_case_outputs(r, out);

@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "report/format.hpp"
 #include "report/summary_tables.hpp"
 
@@ -12,7 +13,10 @@ int run_command(const std::vector<std::string>& paths, const std::string& out,
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
   for (const Scene& scene : scenes) {
-    const CaseResults results = run_case(scene, registry, options);
+    Progress progress(progress_units(scene, registry, options));
+    RunOptions with_progress = options;
+    with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
+    const CaseResults results = run_case(scene, registry, with_progress);
     write_case_outputs(results, out);
     fmt::print("{} - {}  (report_dt = {} s)\n\n{}", scene.name, scene.title,
                format_dt(scene.report_dt), render_text(summary_table(results, scene.report_dt)));

@@ -27,6 +27,8 @@ int run_command(const std::vector<std::string>& paths, const std::string& out,
                 const RunOptions& options);
 int report_command(const std::vector<std::string>& paths, const std::string& out,
                    const RunOptions& options);
+int stability_command(const std::vector<std::string>& paths, const std::string& out,
+                      const std::vector<std::string>& backends, int jobs);
 int check_command(const std::vector<std::string>& paths, const std::string& junit, int jobs);
 
 }  // namespace bb::cli

@@ -78,6 +78,13 @@ int main(int argc, char** argv) {
   report->add_option("--out", out, "report folder")->default_val("reports");
   add_sweep_options(report);
 
+  auto* stability =
+      app.add_subcommand("stability", "largest stable step per backend, by bisection");
+  stability->add_option("CASES", cases, "case files or folders")->required();
+  stability->add_option("--out", out, "output folder")->default_val("out/stability");
+  stability->add_option("--backends", backends, "comma-separated backend names (default: all)");
+  stability->add_option("--jobs", jobs, "backends searched in parallel")->default_val(default_jobs);
+
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
   check->add_option("--junit", junit, "also write the gate results as JUnit XML");
@@ -100,6 +107,7 @@ int main(int argc, char** argv) {
     if (*list) return bb::cli::list_command(cases);
     if (*run) return bb::cli::run_command(cases, out, options);
     if (*report) return bb::cli::report_command(cases, out, options);
+    if (*stability) return bb::cli::stability_command(cases, out, options.backends, options.jobs);
     if (*check) return bb::cli::check_command(cases, junit, options.jobs);
   } catch (const bb::CaseError& e) {
     fmt::print(stderr, "beachball: {}\n", e.what());

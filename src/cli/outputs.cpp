@@ -13,7 +13,8 @@ void write_case_outputs(const CaseResults& results, const std::string& dir) {
   const std::string base = (std::filesystem::path(dir) / results.scene->name).string();
   write_file_atomically(base + ".json", results_json(results).dump(2) + "\n");
   write_file_atomically(base + ".csv", results_csv(results));
-  write_file_atomically(base + ".md", results_markdown(results));
+  const PlotFiles plots = write_plots(results, dir);
+  write_file_atomically(base + ".md", results_markdown(results, plots));
 }
 
 }  // namespace bb::cli

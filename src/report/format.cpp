@@ -6,13 +6,6 @@
 
 namespace bb {
 
-std::string format_dt(double dt) {
-  const double rate = 1.0 / dt;
-  if (std::abs(rate - std::round(rate)) < 1e-6 * rate)
-    return fmt::format("1/{}", std::llround(rate));
-  return fmt::format("{:.6g}", dt);
-}
-
 std::string format_value(std::optional<double> value) {
   if (!value) return "-";
   return fmt::format("{:.3g}", *value);

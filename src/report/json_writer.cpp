@@ -66,15 +66,28 @@ Json results_json(const CaseResults& results) {
   j["sample"] = scene.sample;
   j["report_dt"] = scene.report_dt;
   j["versions"] = results.versions;
-  j["reference"] = {{"method", results.reference.method},
-                    {"tolerance", results.reference.tolerance},
-                    {"self_check", results.reference.self_check}};
+  // A stability search alone has no reference and no runs.
+  const bool has_runs = !results.reference_run.backend.empty();
+  if (has_runs)
+    j["reference"] = {{"method", results.reference.method},
+                      {"tolerance", results.reference.tolerance},
+                      {"self_check", results.reference.self_check}};
+  else
+    j["reference"] = nullptr;
   j["runs"] = Json::array();
-  j["runs"].push_back(run_json(results.reference_run));
+  if (has_runs) j["runs"].push_back(run_json(results.reference_run));
   for (const RunRecord& run : results.runs) j["runs"].push_back(run_json(run));
   j["order"] = Json::object();
   for (const auto& [name, slope] : results.order) j["order"][name] = slope;
   j["stability"] = Json::object();
+  for (const StabilityResult& r : results.stability)
+    j["stability"][r.backend] = {{"critical_dt", optional_json(r.critical_dt)},
+                                 {"unstable_dt", optional_json(r.unstable_dt)},
+                                 {"status", r.status},
+                                 {"reason", r.reason},
+                                 {"theory", optional_json(r.theory)},
+                                 {"theory_formula", r.theory_formula},
+                                 {"trials", r.trials}};
   j["gates"] = Json::array();
   for (const GateResult& g : results.gates)
     j["gates"].push_back({{"backend", g.gate.backend},

@@ -7,6 +7,7 @@
 #include "report/format.hpp"
 #include "report/scene_description.hpp"
 #include "report/summary_tables.hpp"
+#include "report/work_precision.hpp"
 
 namespace bb {
 
@@ -33,7 +34,7 @@ std::string settings_text(const Settings& settings) {
 
 }  // namespace
 
-std::string results_markdown(const CaseResults& results) {
+std::string results_markdown(const CaseResults& results, const PlotFiles& plots) {
   const Scene& scene = *results.scene;
   std::string out = fmt::format("# {}\n\nCase `{}`", scene.title, scene.name);
   if (!scene.seed.empty())
@@ -58,6 +59,41 @@ std::string results_markdown(const CaseResults& results) {
       "the sweep, using the points above the error floor: ten times the reference's self-check, "
       "or the rounding of about 100 double-precision operations on the largest position, "
       "whichever is larger.\n";
+
+  if (!plots.trajectory.empty() || !plots.energy.empty()) {
+    out += fmt::format("\n## Trajectories and energy at report_dt = {} s\n\n",
+                       format_dt(scene.report_dt));
+    out +=
+        "The reference is the thick black line; a method that drifts, gains energy or sinks "
+        "leaves it.\n\n";
+    if (!plots.trajectory.empty()) out += "![trajectories](" + plots.trajectory + ")\n\n";
+    if (!plots.energy.empty()) out += "![energy](" + plots.energy + ")\n";
+  }
+
+  out += "\n## Work precision\n\n";
+  out +=
+      "Error against the cost of computing one simulated second, one marker per dt of the "
+      "sweep; lower and further left is better. The dashed line is the reference's own "
+      "error (its self-check), below which differences are noise.\n\n";
+  for (const auto& [metric, file] : plots.work_precision)
+    out += "![work-precision " + metric + "](" + file + ")\n\n";
+  const std::string& first = scene.report.metrics.front();
+  out += fmt::format("Cheapest step of the sweep that keeps {} within {:g}:\n\n", first,
+                     scene.report.target);
+  out += render_markdown(cheapest_step_table(results, first, scene.report.target));
+  if (!plots.note.empty()) out += "\n" + plots.note + "\n";
+
+  if (!results.stability.empty()) {
+    out += fmt::format(
+        "\n## Stability\n\nThe largest stable step per backend, by bisection in log dt between "
+        "{:g} s and {:g} s. Stable means no divergence over the {:g} s of the case and energy "
+        "never "
+        "more than {:g} times its scale above its start. Theory, where the scene allows one, is "
+        "derived from the case's own numbers.\n\n",
+        scene.stability.dt_min, scene.stability.dt_max, scene.duration,
+        scene.stability.energy_factor);
+    out += render_markdown(stability_table(results));
+  }
 
   out += "\n## Every dt\n\n" + render_markdown(sweep_table(results));
   if (!results.gates.empty()) out += "\n## Gates\n\n" + render_markdown(gate_table(results));

@@ -3,10 +3,12 @@
 
 #include <string>
 
+#include "report/plots.hpp"
 #include "run/results.hpp"
 
 namespace bb {
 
-std::string results_markdown(const CaseResults& results);
+/// `plots` names the SVG files drawn beside the page (none when empty).
+std::string results_markdown(const CaseResults& results, const PlotFiles& plots = {});
 
 }  // namespace bb

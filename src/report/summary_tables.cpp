@@ -83,6 +83,20 @@ Table sweep_table(const CaseResults& results) {
   return t;
 }
 
+Table stability_table(const CaseResults& results) {
+  Table t;
+  t.headers = {"backend", "largest stable dt s", "smallest unstable dt s", "theory s", "result"};
+  t.right_aligned = {false, true, true, true, false};
+  for (const StabilityResult& r : results.stability) {
+    std::string result = r.status;
+    if (!r.reason.empty()) result += ": " + r.reason;
+    t.rows.push_back({r.backend, format_value(r.critical_dt), format_value(r.unstable_dt),
+                      r.theory ? format_value(r.theory) + " (" + r.theory_formula + ")" : "-",
+                      result});
+  }
+  return t;
+}
+
 Table gate_table(const CaseResults& results) {
   Table t;
   t.headers = {"backend", "metric", "value", "max", "result"};

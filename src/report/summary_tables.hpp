@@ -15,6 +15,8 @@ Table summary_table(const CaseResults& results, double dt);
 std::vector<std::string> run_notes(const CaseResults& results, double dt);
 /// Every run of the sweep, one row per (backend, dt).
 Table sweep_table(const CaseResults& results);
+/// One row per backend of the stability search, with theory beside it.
+Table stability_table(const CaseResults& results);
 /// One row per gate: backend, metric, value, limit, pass or fail.
 Table gate_table(const CaseResults& results);
 

@@ -6,6 +6,13 @@ namespace bb {
 
 namespace {
 
+/// Characters as shown: UTF-8 continuation bytes do not count.
+std::size_t shown_width(const std::string& s) {
+  std::size_t n = 0;
+  for (unsigned char c : s) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
 bool right(const Table& t, std::size_t c) {
   return c < t.right_aligned.size() && t.right_aligned[c];
 }
@@ -20,7 +27,8 @@ std::vector<std::size_t> widths(const Table& t) {
 }
 
 std::string pad(const std::string& s, std::size_t width, bool to_right) {
-  const std::string fill(width > s.size() ? width - s.size() : 0, ' ');
+  const std::size_t n = shown_width(s);
+  const std::string fill(width > n ? width - n : 0, ' ');
   return to_right ? fill + s : s + fill;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "metrics/order.hpp"
 #include "run/accuracy_run.hpp"
@@ -72,7 +73,19 @@ void add_cost(const Backend& backend, const Scene& scene, RunRecord& run,
   run.cost = c;
 }
 
+std::string label(const std::string& backend, std::optional<double> dt) {
+  return dt ? backend + " at dt " + format_dt(*dt) : backend;
+}
+
 }  // namespace
+
+int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options) {
+  int backends = 0;
+  for (const Backend* b : backends_for(scene, registry).all) backends += wanted(options, b->name());
+  const int dts = options.dts.empty() ? static_cast<int>(scene.dt.size())
+                                      : static_cast<int>(options.dts.size());
+  return (backends * dts + 1) * (options.cost ? 2 : 1);
+}
 
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options) {
   check_backend_names(scene, options);
@@ -89,6 +102,14 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   const RunRecord tight = run_accuracy(tighter, scene, scene.sample);
   out.reference = {ReferenceBackend::method(), reference.tolerance(),
                    max_position_difference(out.reference_run.trajectory, tight.trajectory)};
+  if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
+    out.reference_floor = compare(scene, out.reference_run.trajectory, tight.trajectory);
+    for (const Observe& o : scene.observes) {
+      const auto a = measure(scene, o, out.reference_run.trajectory).value;
+      const auto b = measure(scene, o, tight.trajectory).value;
+      if (a && b) out.observable_floor[o.name] = std::abs(*a - *b);
+    }
+  }
   out.versions[reference.library_version().first] = reference.library_version().second;
   add_observables(scene, out.reference_run, out.reference_run);
 
@@ -100,9 +121,18 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
     for (double dt : dts) jobs.push_back({b, dt});
   }
+  std::mutex progress_lock;
+  const auto progress = [&](const std::string& what) {
+    if (!options.on_progress) return;
+    const std::lock_guard<std::mutex> lock(progress_lock);
+    options.on_progress(scene.name + ": " + what);
+  };
+  progress("reference");
   out.runs.resize(jobs.size());
-  parallel_for(static_cast<int>(jobs.size()), options.jobs,
-               [&](int i) { out.runs[i] = run_accuracy(*jobs[i].first, scene, jobs[i].second); });
+  parallel_for(static_cast<int>(jobs.size()), options.jobs, [&](int i) {
+    out.runs[i] = run_accuracy(*jobs[i].first, scene, jobs[i].second);
+    progress(label(jobs[i].first->name(), jobs[i].second));
+  });
   // Engines that were not built still get a row, so a reader sees why they are absent.
   for (const auto& [name, why] : registry.missing_engines()) {
     const bool asked = !options.backends.empty() && wanted(options, name);
@@ -126,8 +156,11 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
   if (options.cost) {
     add_cost(reference, scene, out.reference_run, options.cost_options);
-    for (std::size_t i = 0; i < jobs.size(); ++i)
+    progress("cost of the reference");
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
       add_cost(*jobs[i].first, scene, out.runs[i], options.cost_options);
+      progress("cost of " + label(jobs[i].first->name(), jobs[i].second));
+    }
   }
 
   // Observed order of position_max over the dt sweep, per backend.

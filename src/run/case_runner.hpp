@@ -2,6 +2,7 @@
 // the metrics against the reference, the cost pass, the fitted orders and the gates.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,13 @@ struct RunOptions {
   int jobs = 1;                       ///< accuracy runs in parallel
   bool cost = true;                   ///< run the serial cost pass
   CostOptions cost_options;
+  /// Called after each piece of work with what was done, e.g. "bullet 1/60"; may be called
+  /// from several threads at once, never concurrently.
+  std::function<void(const std::string&)> on_progress;
 };
+
+/// How many times run_case calls on_progress for this scene and these options.
+int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options);
 
 /// Throws CaseError when an option names a backend or dt the case does not have.
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options);

@@ -22,7 +22,8 @@ DivergenceBounds divergence_bounds(const Scene& scene) {
   const double travel = speed * t + size;
   DivergenceBounds bounds;
   bounds.travel = 10.0 * travel;
-  bounds.energy = 10.0 * (0.5 * mass * speed * speed + mass * g * travel) + 1.0;
+  bounds.energy_scale = 0.5 * mass * speed * speed + mass * g * travel + 1.0;
+  bounds.energy = 10.0 * bounds.energy_scale;
   return bounds;
 }
 

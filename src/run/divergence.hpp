@@ -11,8 +11,9 @@ namespace bb {
 
 /// Bounds derived from the scene, each ten times what the physics can reach.
 struct DivergenceBounds {
-  double travel = 0.0;  ///< metres from a body's start
-  double energy = 0.0;  ///< joules of |E - E(0)|
+  double travel = 0.0;        ///< metres from a body's start
+  double energy = 0.0;        ///< joules of |E - E(0)|
+  double energy_scale = 0.0;  ///< joules the scene can plausibly trade (one tenth of `energy`)
 };
 
 DivergenceBounds divergence_bounds(const Scene& scene);

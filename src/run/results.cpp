@@ -1,6 +1,21 @@
 #include "run/results.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "scene/metric_names.hpp"
+
 namespace bb {
+
+std::optional<double> metric_value(const RunRecord& run, const std::string& metric) {
+  const auto& names = error_metric_names();
+  if (std::find(names.begin(), names.end(), metric) != names.end())
+    return run.errors ? std::optional<double>(run.errors->get(metric)) : std::nullopt;
+  for (const ObservableResult& o : run.observables)
+    if (o.name == metric && o.measured.value && o.reference)
+      return std::abs(*o.measured.value - *o.reference);
+  return std::nullopt;
+}
 
 std::string status_name(RunStatus status) {
   switch (status) {

@@ -57,14 +57,35 @@ struct GateResult {
   std::string note;  ///< why it failed without a value
 };
 
+struct StabilityResult {
+  std::string backend;
+  /// "bracketed", "stable at every dt tried", "unstable at every dt tried", "unsupported"
+  std::string status;
+  std::optional<double> critical_dt;  ///< largest step found stable
+  std::optional<double> unstable_dt;  ///< smallest step found unstable
+  std::string reason;                 ///< why unstable_dt failed, or why unsupported
+  std::optional<double> theory;       ///< seconds, where theory covers the scene
+  std::string theory_formula;
+  int trials = 0;
+};
+
+/// A run's value for an error metric, or the size of an observable's difference from the
+/// reference; nullopt when the run has none.
+std::optional<double> metric_value(const RunRecord& run, const std::string& metric);
+
 struct CaseResults {
   const Scene* scene = nullptr;
   std::map<std::string, std::string> versions;
   ReferenceInfo reference;
+  /// The reference against itself solved 100 times tighter: the floor of every error metric.
+  ErrorMetrics reference_floor;
+  /// The same for each observable: |value - value at the tighter tolerance|.
+  std::map<std::string, double> observable_floor;
   RunRecord reference_run;
   std::vector<RunRecord> runs;          ///< backends in registry order, dt largest first
   std::map<std::string, double> order;  ///< fitted slope of log position_max vs log dt
   std::vector<GateResult> gates;
+  std::vector<StabilityResult> stability;  ///< empty unless a stability search ran
 };
 
 }  // namespace bb

@@ -98,6 +98,13 @@ void read_observes(TomlReader& root, Scene& scene) {
   }
 }
 
+/// An error metric, or the name of one of the case's observables.
+bool is_metric(const Scene& scene, const std::string& name) {
+  return contains(error_metric_names(), name) ||
+         std::any_of(scene.observes.begin(), scene.observes.end(),
+                     [&](const Observe& o) { return o.name == name; });
+}
+
 void read_gates(TomlReader& root, Scene& scene) {
   const std::vector<std::string> backends = backend_names(scene);
   for (const toml::table* t : root.tables("gate")) {
@@ -110,9 +117,7 @@ void read_gates(TomlReader& root, Scene& scene) {
              "[[gate]] names backend '" + g.backend +
                  "', which this case does not run; it runs: " + joined(backends));
     g.metric = r.string("metric");
-    const bool observable = std::any_of(scene.observes.begin(), scene.observes.end(),
-                                        [&](const Observe& o) { return o.name == g.metric; });
-    if (!contains(error_metric_names(), g.metric) && !observable)
+    if (!is_metric(scene, g.metric))
       r.fail(r.line_of("metric"),
              "[[gate]] metric '" + g.metric + "' is neither an error metric (" +
                  joined(error_metric_names()) + ") nor an [[observe]] of this case");
@@ -121,6 +126,45 @@ void read_gates(TomlReader& root, Scene& scene) {
     r.finish();
     scene.gates.push_back(g);
   }
+}
+
+void read_report_and_stability(TomlReader& root, Scene& scene) {
+  if (const toml::table* t = root.table("report")) {
+    TomlReader r = sub_reader(root, *t, "[report]");
+    scene.report.metrics = r.strings_or("metrics", scene.report.metrics);
+    if (scene.report.metrics.empty())
+      r.fail(r.line_of("metrics"), "'metrics' in [report] must not be empty");
+    for (const std::string& m : scene.report.metrics)
+      if (!is_metric(scene, m))
+        r.fail(r.line_of("metrics"), "[report] metric '" + m + "' is neither an error metric (" +
+                                         joined(error_metric_names()) +
+                                         ") nor an [[observe]] of this case");
+    scene.report.target = r.number_or("target", scene.report.target);
+    require_range(r, "target", scene.report.target, 0.0, 0.0, false);
+    r.finish();
+  }
+  StabilityOptions& s = scene.stability;
+  if (const toml::table* t = root.table("stability")) {
+    TomlReader r = sub_reader(root, *t, "[stability]");
+    s.energy_factor = r.number_or("energy_factor", s.energy_factor);
+    require_range(r, "energy_factor", s.energy_factor, 1.0, 0.0, false);
+    // Absent bounds stay 0 and get their defaults below.
+    if (r.has("dt_min")) {
+      s.dt_min = r.number("dt_min");
+      require_range(r, "dt_min", s.dt_min, 0.0, 0.0, false);
+    }
+    if (r.has("dt_max")) {
+      s.dt_max = r.number("dt_max");
+      require_range(r, "dt_max", s.dt_max, s.dt_min, 0.0, false);
+      if (s.dt_max > scene.duration)
+        r.fail(r.line_of("dt_max"), "'dt_max' in [stability] is longer than the duration");
+    }
+    r.finish();
+  }
+  // Defaults: from a quarter of the finest step to a quarter of the run.
+  if (s.dt_min == 0.0)
+    s.dt_min = std::min(scene.dt.back() / 4.0, s.dt_max > 0 ? s.dt_max / 2 : 1e300);
+  if (s.dt_max == 0.0) s.dt_max = std::max(scene.duration / 4.0, 2.0 * s.dt_min);
 }
 
 }  // namespace bb::load

@@ -19,6 +19,7 @@ void read_course(TomlReader& root, Scene& scene);
 void read_engines(TomlReader& root, Scene& scene);
 void read_observes(TomlReader& root, Scene& scene);
 void read_gates(TomlReader& root, Scene& scene);
+void read_report_and_stability(TomlReader& root, Scene& scene);
 
 /// Index of a named body, or a CaseError at `line` naming what is missing.
 int require_body(const TomlReader& reader, const Scene& scene, const std::string& name, int line);

@@ -122,6 +122,22 @@ struct Gate {
   int line = 0;
 };
 
+/// How the report presents the case ([report], optional).
+struct ReportOptions {
+  /// Error metrics or observable names to draw work-precision diagrams for.
+  std::vector<std::string> metrics{"position_max"};
+  /// Error to reach, in the first metric's unit, for the "cheapest dt" table.
+  double target = 0.01;
+};
+
+/// How `beachball stability` searches ([stability], optional).
+struct StabilityOptions {
+  /// Unstable when the energy rises above its start by more than (factor - 1) energy scales.
+  double energy_factor = 10.0;
+  double dt_min = 0.0;  ///< seconds; 0: a quarter of the case's smallest dt
+  double dt_max = 0.0;  ///< seconds; 0: a quarter of the duration
+};
+
 struct Scene {
   std::string file;  ///< where it was loaded from, for messages
   std::string name;
@@ -144,6 +160,8 @@ struct Scene {
   std::map<std::string, std::map<std::string, EngineValue>> engines;
   std::vector<Observe> observes;
   std::vector<Gate> gates;
+  ReportOptions report;
+  StabilityOptions stability;
 
   /// Number of samples after t = 0 (duration / sample).
   int sample_count() const;

@@ -169,5 +169,54 @@ TEST(Cli, ListSaysWhatWasBuiltAndWhoRunsWhat) {
   EXPECT_NE(o.out.find("unsupported: 3d"), std::string::npos) << o.out;
 }
 
+TEST(Cli, ReportWritesAnIndexPagesPlotsAndStability) {
+  const std::string out = fresh_dir("report");
+  const Outcome o =
+      beachball("report " + test::source_path("cases/three_beachballs_2.toml") + " " +
+                test::source_path("cases/beachball_shells.toml") + " --out " + out + " --no-cost");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  std::ifstream index(out + "/README.md");
+  const std::string text((std::istreambuf_iterator<char>(index)), std::istreambuf_iterator<char>());
+  for (const char* name : {"three_beachballs_2", "beachball_shells"}) {
+    EXPECT_NE(text.find(std::string("(") + name + ".md)"), std::string::npos) << name;
+    std::ifstream page(out + "/" + name + ".md");
+    const std::string md((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+    // Every image the page shows exists beside it.
+    int images = 0;
+    for (std::size_t at = md.find("]("); at != std::string::npos; at = md.find("](", at + 1)) {
+      const std::string file = md.substr(at + 2, md.find(')', at) - at - 2);
+      if (!file.ends_with(".svg")) continue;
+      ++images;
+      EXPECT_TRUE(fs::exists(out + "/" + file)) << file;
+    }
+    EXPECT_EQ(images, 3) << name;  // work precision, trajectory, energy
+    for (const char* section :
+         {"## Stability", "## Work precision", "## Gates", "## Engine settings"})
+      EXPECT_NE(md.find(section), std::string::npos) << name << " lacks " << section;
+    const auto j = nlohmann::json::parse(std::ifstream(out + "/" + name + ".json"));
+    EXPECT_TRUE(j["stability"].contains("course/rk4")) << name;
+    EXPECT_TRUE(j["stability"]["course/rk4"]["theory"].is_number()) << name;
+  }
+  EXPECT_NE(text.find("unsupported"), std::string::npos);  // box2d on the 3D case
+}
+
+TEST(Cli, StabilityWritesTheStabilitySection) {
+  const std::string out = fresh_dir("stability");
+  const Outcome o = beachball("stability " + test::source_path("cases/drag_fall.toml") +
+                              " --backends course/rk4,ode --out " + out);
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  const auto j = nlohmann::json::parse(std::ifstream(out + "/drag_fall.json"));
+  EXPECT_EQ(j["schema"], "beachball-results/1");
+  EXPECT_EQ(j["stability"].size(), 2u);
+  for (const char* b : {"course/rk4", "ode"}) {
+    EXPECT_TRUE(j["stability"][b]["status"].is_string()) << b;
+    EXPECT_GE(j["stability"][b]["trials"].get<int>(), 1) << b;
+  }
+  EXPECT_EQ(beachball("stability " + test::source_path("cases/drag_fall.toml") +
+                      " --backends reference --out " + out)
+                .exit_code,
+            2);
+}
+
 }  // namespace
 }  // namespace bb

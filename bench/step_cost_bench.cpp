@@ -1,0 +1,52 @@
+// Nanoseconds per step of every backend on every bundled case at its report_dt, measured
+// outside the harness with Google Benchmark. The scene is built once per run; only step()
+// is inside the timed loop. When a run reaches the case's duration it restarts, outside
+// the timer, so every step is a step of the case.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "cli/commands.hpp"
+#include "run/registry.hpp"
+
+namespace {
+
+void step_cost(benchmark::State& state, const bb::Backend* backend, const bb::Scene* scene) {
+  const double dt = scene->report_dt;
+  const long steps_per_run = std::lround(scene->duration / dt);
+  auto sim = backend->start(*scene, dt);
+  long steps = 0;
+  for (auto _ : state) {
+    if (steps == steps_per_run) {
+      state.PauseTiming();
+      sim = backend->start(*scene, dt);
+      steps = 0;
+      state.ResumeTiming();
+    }
+    sim->step();
+    ++steps;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["dt_s"] = dt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  // The bundled suite and the engine plugins next to this program.
+  static const std::vector<bb::Scene> scenes = bb::cli::load_cases({});
+  static const bb::Registry registry = bb::Registry::load();
+  static std::vector<bb::BackendSet> sets;
+  for (const bb::Scene& scene : scenes) {
+    sets.push_back(bb::backends_for(scene, registry));
+    for (const bb::Backend* backend : sets.back().all) {
+      if (!scene.features().missing_from(backend->supports()).empty()) continue;
+      benchmark::RegisterBenchmark((scene.name + "/" + backend->name()).c_str(), step_cost, backend,
+                                   &scene);
+    }
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

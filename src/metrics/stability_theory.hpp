@@ -1,0 +1,21 @@
+// Theoretical stability limits of the course integrators, derived from the scene.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace bb {
+
+struct TheoreticalLimit {
+  double dt = 0.0;      ///< seconds
+  std::string formula;  ///< how it was derived, in words
+};
+
+/// The largest stable step theory predicts for `integrator` on `scene`, when the scene is
+/// one theory covers; nullopt otherwise.
+std::optional<TheoreticalLimit> theoretical_limit(const Scene& scene,
+                                                  const std::string& integrator);
+
+}  // namespace bb
