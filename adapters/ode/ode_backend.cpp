@@ -1,6 +1,9 @@
 // ODE as a backend, double precision.
 #include <ode/ode.h>
 
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -12,6 +15,23 @@
 namespace bb {
 
 namespace {
+
+/// ODE's fatal errors and debug checks: said on stderr, which the runner's child process
+/// captures into the run's reason, then the run ends as ODE requires.
+[[noreturn]] void ode_fatal(int number, const char* message, va_list args) {
+  char text[1024];
+  std::vsnprintf(text, sizeof text, message, args);
+  std::fprintf(stderr, "ODE error %d: %s\n", number, text);
+  std::fflush(stderr);
+  std::abort();
+}
+
+/// ODE's warnings: said on stderr, and the run goes on.
+void ode_message(int number, const char* message, va_list args) {
+  char text[1024];
+  std::vsnprintf(text, sizeof text, message, args);
+  std::fprintf(stderr, "ODE message %d: %s\n", number, text);
+}
 
 Vec3 from_ode(const dReal* v) {
   return {v[0], v[1], v[2]};
@@ -118,7 +138,12 @@ class OdeBackend : public Backend {
   }
   std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
     static std::once_flag initialised;
-    std::call_once(initialised, [] { dInitODE2(0); });
+    std::call_once(initialised, [] {
+      dInitODE2(0);
+      dSetErrorHandler(ode_fatal);
+      dSetDebugHandler(ode_fatal);
+      dSetMessageHandler(ode_message);
+    });
     // ODE keeps per-thread data; each thread that steps a world must allocate it.
     dAllocateODEDataForThread(dAllocateMaskAll);
     return std::make_unique<OdeSimulation>(scene, dt);

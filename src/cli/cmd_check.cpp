@@ -67,13 +67,14 @@ std::string junit_xml(const std::vector<CaseResults>& all) {
 
 }  // namespace
 
-int check_command(const std::vector<std::string>& paths, const std::string& junit, int jobs) {
+int check_command(const std::vector<std::string>& paths, const std::string& junit,
+                  const RunOptions& options) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
   std::vector<CaseResults> all;
   bool failed = false;
   for (const Scene& scene : scenes) {
-    all.push_back(run_gates(scene, registry, jobs));
+    all.push_back(run_gates(scene, registry, options));
     for (const GateResult& g : all.back().gates) {
       failed = failed || !g.passed;
       fmt::print("{:<4} {:<22} {:<28} {:<16} {:>10} <= {:<10} {}\n", g.passed ? "ok" : "FAIL",

@@ -3,10 +3,12 @@
 #include <map>
 
 #include "cli/commands.hpp"
+#include "cli/folder_lock.hpp"
 #include "cli/progress.hpp"
 #include "report/atomic_file.hpp"
 #include "report/format.hpp"
 #include "report/table.hpp"
+#include "run/interrupt.hpp"
 #include "run/stability.hpp"
 
 namespace bb::cli {
@@ -74,6 +76,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
                    const RunOptions& options) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
+  const FolderLock lock(out);
   int units = 0;
   for (const Scene& scene : scenes)
     units += progress_units(scene, registry, options) +
@@ -86,11 +89,15 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
     all.push_back(run_case(scene, registry, with_progress));
     all.back().stability = find_stability_all(
         scene, registry, options.backends, options.jobs,
-        [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); });
+        [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
+        options.isolation, options.timeout);
   }
-  // Pages are written only when every case has run.
-  for (const CaseResults& r : all) write_case_outputs(r, out);
-  write_file_atomically(out + "/README.md", index_page(all));
+  // Pages are written only when every case has run, and a signal waits until all are.
+  {
+    const DeferSignals writing;
+    for (const CaseResults& r : all) write_case_outputs(r, out);
+    write_file_atomically(out + "/README.md", index_page(all));
+  }
   fmt::print("written: {}/README.md and one page per case\n", out);
   return kExitOk;
 }

@@ -1,12 +1,12 @@
 #include <fmt/format.h>
 
-#include <filesystem>
-
 #include "cli/commands.hpp"
+#include "cli/folder_lock.hpp"
 #include "cli/progress.hpp"
 #include "report/atomic_file.hpp"
 #include "report/json_writer.hpp"
 #include "report/summary_tables.hpp"
+#include "run/interrupt.hpp"
 #include "run/stability.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
@@ -15,7 +15,8 @@
 namespace bb::cli {
 
 int stability_command(const std::vector<std::string>& paths, const std::string& out,
-                      const std::vector<std::string>& backends, int jobs) {
+                      const RunOptions& options) {
+  const std::vector<std::string>& backends = options.backends;
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
   for (const Scene& scene : scenes) {
@@ -26,15 +27,19 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
                         "--backends names '" + b + "'; the stability search runs: " +
                             joined(known) + " (not the adaptive reference)");
   }
+  const FolderLock lock(out);
   for (const Scene& scene : scenes) {
     Progress progress(static_cast<int>(backends_for(scene, registry).all.size()));
     CaseResults results;
     results.scene = &scene;
-    results.stability =
-        find_stability_all(scene, registry, backends, jobs,
-                           [&](const std::string& b) { progress.advance(scene.name + ": " + b); });
-    std::filesystem::create_directories(out);
-    write_file_atomically(out + "/" + scene.name + ".json", results_json(results).dump(2) + "\n");
+    results.stability = find_stability_all(
+        scene, registry, backends, options.jobs,
+        [&](const std::string& b) { progress.advance(scene.name + ": " + b); }, options.isolation,
+        options.timeout);
+    {
+      const DeferSignals writing;
+      write_file_atomically(out + "/" + scene.name + ".json", results_json(results).dump(2) + "\n");
+    }
     fmt::print(
         "{} - {}: largest stable step, dt from {:g} s to {:g} s\n\n{}\nwritten: {}/{}.json\n\n",
         scene.name, scene.title, scene.stability.dt_min, scene.stability.dt_max,

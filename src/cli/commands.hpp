@@ -28,7 +28,8 @@ int run_command(const std::vector<std::string>& paths, const std::string& out,
 int report_command(const std::vector<std::string>& paths, const std::string& out,
                    const RunOptions& options);
 int stability_command(const std::vector<std::string>& paths, const std::string& out,
-                      const std::vector<std::string>& backends, int jobs);
-int check_command(const std::vector<std::string>& paths, const std::string& junit, int jobs);
+                      const RunOptions& options);
+int check_command(const std::vector<std::string>& paths, const std::string& junit,
+                  const RunOptions& options);
 
 }  // namespace bb::cli

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "cli/commands.hpp"
+#include "run/interrupt.hpp"
 #include "scene/case_error.hpp"
 
 namespace {
@@ -53,6 +54,8 @@ int main(int argc, char** argv) {
   const int default_jobs = std::max(1u, std::thread::hardware_concurrency());
   int jobs = default_jobs;
   bool no_cost = false;
+  bool no_isolation = false;
+  double timeout = 0.0;
   double cost_seconds = 0.05;
 
   auto* list = app.add_subcommand("list", "cases, backends, and who supports what");
@@ -72,11 +75,21 @@ int main(int argc, char** argv) {
         ->default_val(0.05);
   };
   add_sweep_options(run);
+  // Options of every command that runs backends.
+  const auto add_isolation_options = [&](CLI::App* command) {
+    command->add_option("--timeout", timeout,
+                        "seconds a run may take (default: from the case's size)");
+    command->add_flag(
+        "--no-isolation", no_isolation,
+        "run in this process, not in child processes (for debugging: a crash ends the program)");
+  };
+  add_isolation_options(run);
 
   auto* report = app.add_subcommand("report", "run the suite and write the report pages");
   report->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
   report->add_option("--out", out, "report folder")->default_val("reports");
   add_sweep_options(report);
+  add_isolation_options(report);
 
   auto* stability =
       app.add_subcommand("stability", "largest stable step per backend, by bisection");
@@ -84,11 +97,13 @@ int main(int argc, char** argv) {
   stability->add_option("--out", out, "output folder")->default_val("out/stability");
   stability->add_option("--backends", backends, "comma-separated backend names (default: all)");
   stability->add_option("--jobs", jobs, "backends searched in parallel")->default_val(default_jobs);
+  add_isolation_options(stability);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
   check->add_option("--junit", junit, "also write the gate results as JUnit XML");
   check->add_option("--jobs", jobs, "runs in parallel")->default_val(default_jobs);
+  add_isolation_options(check);
 
   try {
     app.parse(argc, argv);
@@ -104,11 +119,22 @@ int main(int argc, char** argv) {
     options.jobs = std::max(1, jobs);
     options.cost = !no_cost;
     options.cost_options.min_seconds = cost_seconds;
+    options.isolation = !no_isolation;
+    options.timeout = timeout;
+    if (timeout < 0)
+      throw bb::CaseError("--timeout", 0, "must be a number of seconds, not negative");
+    bb::install_interrupt_handlers();
     if (*list) return bb::cli::list_command(cases);
     if (*run) return bb::cli::run_command(cases, out, options);
     if (*report) return bb::cli::report_command(cases, out, options);
-    if (*stability) return bb::cli::stability_command(cases, out, options.backends, options.jobs);
-    if (*check) return bb::cli::check_command(cases, junit, options.jobs);
+    if (*stability) return bb::cli::stability_command(cases, out, options);
+    if (*check) return bb::cli::check_command(cases, junit, options);
+  } catch (const bb::Interrupted& e) {
+    fmt::print(stderr,
+               "\nbeachball: interrupted by signal {}, {}; nothing more was written and earlier "
+               "outputs are as they were\n",
+               bb::interrupt_signal(), e.what());
+    return 128 + bb::interrupt_signal();
   } catch (const bb::CaseError& e) {
     fmt::print(stderr, "beachball: {}\n", e.what());
     return bb::cli::kExitBadInput;

@@ -51,6 +51,7 @@ Json run_json(const RunRecord& run) {
     j["observables"][o.name] = v;
   }
   j["engine_settings"] = settings_json(run.engine_settings);
+  if (!run.messages.empty()) j["messages"] = run.messages;
   return j;
 }
 

@@ -1,5 +1,7 @@
 #include "run/accuracy_run.hpp"
 
+#include <new>
+
 #include "run/divergence.hpp"
 #include "scene/motion.hpp"
 
@@ -48,6 +50,9 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
       }
     }
     if (auto internal = sim->internal_steps()) record.steps = *internal;
+  } catch (const std::bad_alloc&) {
+    record.status = RunStatus::Crashed;
+    record.reason = "out of memory";
   } catch (const std::exception& e) {
     record.status = RunStatus::Error;
     record.reason = e.what();

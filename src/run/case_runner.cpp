@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 
 #include "metrics/order.hpp"
 #include "run/accuracy_run.hpp"
+#include "run/child_pool.hpp"
 #include "run/gates.hpp"
-#include "run/parallel.hpp"
+#include "run/wire.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
 #include "scene/text.hpp"
@@ -59,18 +59,53 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& refere
   }
 }
 
-void add_cost(const Backend& backend, const Scene& scene, RunRecord& run,
-              const CostOptions& options) {
+/// A run record from what its child process reported.
+RunRecord record_from(const ChildOutcome& outcome, const std::string& backend,
+                      std::optional<double> dt) {
+  RunRecord run;
+  if (outcome.kind == ChildOutcome::Kind::Done) {
+    run = wire::decode_run(outcome.payload);
+    if (run.status == RunStatus::Ok)
+      run.messages = outcome.console;
+    else if (!outcome.console.empty())
+      run.reason += "; it printed: " + outcome.console;
+    return run;
+  }
+  run.backend = backend;
+  run.dt = dt;
+  run.status =
+      outcome.kind == ChildOutcome::Kind::Timeout ? RunStatus::Timeout : RunStatus::Crashed;
+  run.reason = outcome.reason;
+  return run;
+}
+
+/// Queues the cost measurement of `run` (serial pool), filling run.cost when it is done.
+void queue_cost(ChildPool& pool, const Backend& backend, const Scene& scene, RunRecord& run,
+                const RunOptions& options,
+                const std::function<void(const std::string&)>& progress) {
   if (run.status != RunStatus::Ok && run.status != RunStatus::Diverged) return;
   // The reference is stepped sample by sample; its cost per step is per internal step.
   const double dt = run.dt ? *run.dt : scene.sample;
   const long calls = run.dt ? run.steps : scene.sample_count();
-  const Timing t = time_steps(backend, scene, dt, calls, options);
-  Cost c;
-  c.repeats = t.repeats;
-  c.ns_per_step = run.steps > 0 ? t.median_seconds * 1e9 / static_cast<double>(run.steps) : 0.0;
-  c.seconds_per_simulated_second = t.median_seconds / (static_cast<double>(calls) * dt);
-  run.cost = c;
+  const CostOptions cost = options.cost_options;
+  const double limit = 4.0 * time_limit(scene, dt, options.timeout) + 10.0 * cost.min_seconds;
+  pool.submit(
+      "cost of " + run.backend,
+      [&backend, &scene, dt, calls, cost] {
+        return wire::encode(time_steps(backend, scene, dt, calls, cost));
+      },
+      limit,
+      [&run, dt, calls, progress](const ChildOutcome& outcome) {
+        progress("cost of " + run.backend);
+        if (outcome.kind != ChildOutcome::Kind::Done) return;
+        const Timing t = wire::decode_timing(outcome.payload);
+        Cost c;
+        c.repeats = t.repeats;
+        c.ns_per_step =
+            run.steps > 0 ? t.median_seconds * 1e9 / static_cast<double>(run.steps) : 0.0;
+        c.seconds_per_simulated_second = t.median_seconds / (static_cast<double>(calls) * dt);
+        run.cost = c;
+      });
 }
 
 std::string label(const std::string& backend, std::optional<double> dt) {
@@ -79,12 +114,18 @@ std::string label(const std::string& backend, std::optional<double> dt) {
 
 }  // namespace
 
+double time_limit(const Scene& scene, double dt, double timeout) {
+  if (timeout > 0.0) return timeout;
+  const double steps = std::ceil(scene.duration / dt);
+  return 10.0 + 2e-5 * steps * static_cast<double>(scene.bodies.size() + scene.springs.size());
+}
+
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options) {
   int backends = 0;
   for (const Backend* b : backends_for(scene, registry).all) backends += wanted(options, b->name());
   const int dts = options.dts.empty() ? static_cast<int>(scene.dt.size())
                                       : static_cast<int>(options.dts.size());
-  return (backends * dts + 1) * (options.cost ? 2 : 1);
+  return backends * dts + 2 + (options.cost ? backends * dts + 1 : 0);
 }
 
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options) {
@@ -93,13 +134,45 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   CaseResults out;
   out.scene = &scene;
   out.versions["beachball"] = BEACHBALL_VERSION;
+  const auto progress = [&](const std::string& what) {
+    if (options.on_progress) options.on_progress(scene.name + ": " + what);
+  };
 
-  // The reference, and the same solve 100 times tighter to measure its own error.
+  // Every selected backend at every selected dt.
+  const BackendSet set = backends_for(scene, registry);
+  std::vector<std::pair<const Backend*, double>> jobs;
+  for (const Backend* b : set.all) {
+    if (!wanted(options, b->name())) continue;
+    if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
+    for (double dt : dts) jobs.push_back({b, dt});
+  }
+
+  // Accuracy runs, each in its own child process: the reference, the same solve 100 times
+  // tighter to measure the reference's own error, then every job.
   const ReferenceBackend& reference = registry.reference();
-  out.reference_run = run_accuracy(reference, scene, scene.sample);
-  out.reference_run.dt.reset();
   const ReferenceBackend tighter(reference.tolerance() / 100.0);
-  const RunRecord tight = run_accuracy(tighter, scene, scene.sample);
+  RunRecord tight;
+  out.runs.resize(jobs.size());
+  ChildPool pool(options.jobs, options.isolation);
+  const auto submit = [&](const Backend& b, double dt, RunRecord& slot,
+                          std::optional<double> shown_dt) {
+    const std::string what = label(b.name(), shown_dt);
+    pool.submit(
+        what, [&b, &scene, dt] { return wire::encode(run_accuracy(b, scene, dt)); },
+        time_limit(scene, dt, options.timeout),
+        [&slot, &b, shown_dt, what, &progress](const ChildOutcome& o) {
+          slot = record_from(o, b.name(), shown_dt);
+          progress(what);
+        });
+  };
+  submit(reference, scene.sample, out.reference_run, std::nullopt);
+  submit(tighter, scene.sample, tight, std::nullopt);
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    submit(*jobs[i].first, jobs[i].second, out.runs[i], jobs[i].second);
+  pool.run();
+  out.reference_run.dt.reset();
+  tight.dt.reset();
+
   out.reference = {ReferenceBackend::method(), reference.tolerance(),
                    max_position_difference(out.reference_run.trajectory, tight.trajectory)};
   if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
@@ -112,27 +185,6 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   }
   out.versions[reference.library_version().first] = reference.library_version().second;
   add_observables(scene, out.reference_run, out.reference_run);
-
-  // Every selected backend at every selected dt, accuracy runs in parallel.
-  const BackendSet set = backends_for(scene, registry);
-  std::vector<std::pair<const Backend*, double>> jobs;
-  for (const Backend* b : set.all) {
-    if (!wanted(options, b->name())) continue;
-    if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
-    for (double dt : dts) jobs.push_back({b, dt});
-  }
-  std::mutex progress_lock;
-  const auto progress = [&](const std::string& what) {
-    if (!options.on_progress) return;
-    const std::lock_guard<std::mutex> lock(progress_lock);
-    options.on_progress(scene.name + ": " + what);
-  };
-  progress("reference");
-  out.runs.resize(jobs.size());
-  parallel_for(static_cast<int>(jobs.size()), options.jobs, [&](int i) {
-    out.runs[i] = run_accuracy(*jobs[i].first, scene, jobs[i].second);
-    progress(label(jobs[i].first->name(), jobs[i].second));
-  });
   // Engines that were not built still get a row, so a reader sees why they are absent.
   for (const auto& [name, why] : registry.missing_engines()) {
     const bool asked = !options.backends.empty() && wanted(options, name);
@@ -155,12 +207,11 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
 
   // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
   if (options.cost) {
-    add_cost(reference, scene, out.reference_run, options.cost_options);
-    progress("cost of the reference");
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
-      add_cost(*jobs[i].first, scene, out.runs[i], options.cost_options);
-      progress("cost of " + label(jobs[i].first->name(), jobs[i].second));
-    }
+    ChildPool serial(1, options.isolation);
+    queue_cost(serial, reference, scene, out.reference_run, options, progress);
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+      queue_cost(serial, *jobs[i].first, scene, out.runs[i], options, progress);
+    serial.run();
   }
 
   // Observed order of position_max over the dt sweep, per backend.
@@ -175,14 +226,14 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   return out;
 }
 
-CaseResults run_gates(const Scene& scene, const Registry& registry, int jobs) {
-  RunOptions options;
+CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOptions& base) {
+  RunOptions options = base;
+  options.backends.clear();
   for (const Gate& g : scene.gates) {
     auto& names = options.backends;
     if (std::find(names.begin(), names.end(), g.backend) == names.end()) names.push_back(g.backend);
   }
   options.dts = {scene.report_dt};
-  options.jobs = jobs;
   options.cost = false;
   if (options.backends.empty()) options.backends.push_back("reference");
   return run_case(scene, registry, options);

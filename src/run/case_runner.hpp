@@ -18,10 +18,18 @@ struct RunOptions {
   int jobs = 1;                       ///< accuracy runs in parallel
   bool cost = true;                   ///< run the serial cost pass
   CostOptions cost_options;
+  /// Each run in its own child process with a time limit; false runs in this process.
+  bool isolation = true;
+  /// Seconds a run may take; 0 derives it from the case (see time_limit).
+  double timeout = 0.0;
   /// Called after each piece of work with what was done, e.g. "bullet 1/60"; may be called
   /// from several threads at once, never concurrently.
   std::function<void(const std::string&)> on_progress;
 };
+
+/// Seconds an accuracy run of `scene` at `dt` may take: `timeout` when given, else 10 s
+/// plus 20 microseconds per step per body and spring.
+double time_limit(const Scene& scene, double dt, double timeout);
 
 /// How many times run_case calls on_progress for this scene and these options.
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options);
@@ -29,7 +37,8 @@ int progress_units(const Scene& scene, const Registry& registry, const RunOption
 /// Throws CaseError when an option names a backend or dt the case does not have.
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options);
 
-/// Runs only what the case's gates need (report_dt, gated backends) and checks them.
-CaseResults run_gates(const Scene& scene, const Registry& registry, int jobs);
+/// Runs only what the case's gates need (report_dt, gated backends, no cost) and checks
+/// them; `base` gives jobs, isolation and timeout.
+CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOptions& base);
 
 }  // namespace bb

@@ -41,6 +41,7 @@ struct RunRecord {
   std::optional<ErrorMetrics> errors;
   std::vector<ObservableResult> observables;
   Settings engine_settings;
+  std::string messages;   ///< what the engine printed during an ok run, if anything
   Trajectory trajectory;  ///< kept in memory for metrics and plots; not written to JSON
 };
 

@@ -1,0 +1,238 @@
+#include "run/child_pool.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <new>
+
+#include "run/interrupt.hpp"
+
+#if defined(__SANITIZE_ADDRESS__)
+#define BB_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define BB_UNDER_ASAN 1
+#endif
+#endif
+
+namespace bb {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void write_all(int fd, const std::string& bytes) {
+  std::size_t at = 0;
+  while (at < bytes.size()) {
+    const ssize_t n = write(fd, bytes.data() + at, bytes.size() - at);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    at += static_cast<std::size_t>(n);
+  }
+}
+
+/// The last part of what a child printed, on one line, for a reason.
+std::string tail(const std::string& console) {
+  std::string t = console.size() > 600 ? "..." + console.substr(console.size() - 600) : console;
+  for (char& c : t)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!t.empty() && t.back() == ' ') t.pop_back();
+  return t;
+}
+
+std::string with_console(std::string reason, const std::string& console) {
+  const std::string printed = tail(console);
+  return printed.empty() ? reason : reason + "; it printed: " + printed;
+}
+
+/// Runs in the child: the work, its bytes to `result_fd`, then out without cleanup.
+[[noreturn]] void child_main(const ChildPool::Work& work, int result_fd, int console_fd) {
+  struct sigaction action {};
+  action.sa_handler = SIG_DFL;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  dup2(console_fd, STDOUT_FILENO);
+  dup2(console_fd, STDERR_FILENO);
+  close(console_fd);
+#ifndef BB_UNDER_ASAN
+  const rlimit memory{static_cast<rlim_t>(kChildMemoryBytes),
+                      static_cast<rlim_t>(kChildMemoryBytes)};
+  setrlimit(RLIMIT_AS, &memory);
+#endif
+  int code = 0;
+  try {
+    write_all(result_fd, work());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "out of memory (a child may use %ld GiB)\n", kChildMemoryBytes >> 30);
+    code = 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    code = 4;
+  }
+  std::fflush(nullptr);
+  _exit(code);
+}
+
+}  // namespace
+
+struct ChildPool::Active {
+  Job job;
+  pid_t pid = -1;
+  int result_fd = -1;
+  int console_fd = -1;
+  Clock::time_point deadline;
+  std::string payload;
+  std::string console;
+};
+
+void ChildPool::submit(std::string label, Work work, double timeout, Done done) {
+  queue_.push_back({std::move(label), std::move(work), timeout, std::move(done)});
+}
+
+void ChildPool::run() {
+  if (isolated_)
+    run_isolated();
+  else
+    run_in_process();
+}
+
+void ChildPool::run_in_process() {
+  while (!queue_.empty()) {
+    if (interrupt_signal() != 0) throw Interrupted("stopped before " + queue_.front().label);
+    Job job = std::move(queue_.front());
+    queue_.pop_front();
+    ChildOutcome outcome;
+    try {
+      outcome.payload = job.work();
+    } catch (const std::exception& e) {
+      outcome.kind = ChildOutcome::Kind::Crashed;
+      outcome.reason = e.what();
+    }
+    job.done(outcome);
+  }
+}
+
+void ChildPool::run_isolated() {
+  std::vector<Active> active;
+  const auto start = [&](Job job) {
+    int result[2], console[2];
+    if (pipe(result) != 0 || pipe(console) != 0)
+      throw std::runtime_error("cannot make a pipe for a child");
+    // Nothing buffered here may be printed again by the child.
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("cannot start a child process");
+    if (pid == 0) {
+      close(result[0]);
+      close(console[0]);
+      child_main(job.work, result[1], console[1]);
+    }
+    close(result[1]);
+    close(console[1]);
+    Active a;
+    a.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(job.timeout));
+    a.job = std::move(job);
+    a.pid = pid;
+    a.result_fd = result[0];
+    a.console_fd = console[0];
+    active.push_back(std::move(a));
+  };
+  const auto stop_all = [&] {
+    for (Active& a : active) {
+      kill(a.pid, SIGKILL);
+      waitpid(a.pid, nullptr, 0);
+      if (a.result_fd >= 0) close(a.result_fd);
+      if (a.console_fd >= 0) close(a.console_fd);
+    }
+  };
+
+  while (!queue_.empty() || !active.empty()) {
+    if (interrupt_signal() != 0) {
+      std::string what = active.empty() ? queue_.front().label : active.front().job.label;
+      stop_all();
+      queue_.clear();
+      throw Interrupted("stopped during " + what);
+    }
+    while (static_cast<int>(active.size()) < parallel_ && !queue_.empty()) {
+      start(std::move(queue_.front()));
+      queue_.pop_front();
+    }
+    // Wait for output, at most until the nearest deadline and never long, to notice signals.
+    std::vector<pollfd> fds;
+    auto wait = std::chrono::milliseconds(100);
+    for (const Active& a : active) {
+      if (a.result_fd >= 0) fds.push_back({a.result_fd, POLLIN, 0});
+      if (a.console_fd >= 0) fds.push_back({a.console_fd, POLLIN, 0});
+      wait = std::min(
+          wait, std::chrono::duration_cast<std::chrono::milliseconds>(a.deadline - Clock::now()));
+    }
+    if (!fds.empty())
+      poll(fds.data(), fds.size(), static_cast<int>(std::max<long>(wait.count(), 0)));
+    char buffer[65536];
+    for (Active& a : active)
+      for (int* fd : {&a.result_fd, &a.console_fd}) {
+        if (*fd < 0) continue;
+        pollfd one{*fd, POLLIN, 0};
+        if (poll(&one, 1, 0) <= 0) continue;
+        const ssize_t n = read(*fd, buffer, sizeof buffer);
+        if (n > 0) {
+          (fd == &a.result_fd ? a.payload : a.console).append(buffer, static_cast<std::size_t>(n));
+        } else if (n == 0 || errno != EINTR) {
+          close(*fd);
+          *fd = -1;
+        }
+      }
+    // Finish every child that closed its output or ran out of time.
+    for (std::size_t i = 0; i < active.size();) {
+      Active& a = active[i];
+      const bool closed = a.result_fd < 0 && a.console_fd < 0;
+      const bool late = Clock::now() >= a.deadline;
+      if (!closed && !late) {
+        ++i;
+        continue;
+      }
+      ChildOutcome outcome;
+      int status = 0;
+      if (!closed) {
+        kill(a.pid, SIGKILL);
+        waitpid(a.pid, &status, 0);
+        outcome.kind = ChildOutcome::Kind::Timeout;
+        outcome.reason =
+            with_console("no result within the time limit of " + std::to_string(a.job.timeout) +
+                             " s (--timeout changes it)",
+                         a.console);
+        for (int fd : {a.result_fd, a.console_fd})
+          if (fd >= 0) close(fd);
+      } else {
+        waitpid(a.pid, &status, 0);
+        if (WIFSIGNALED(status)) {
+          outcome.kind = ChildOutcome::Kind::Crashed;
+          outcome.reason = with_console("killed by signal " + std::to_string(WTERMSIG(status)) +
+                                            " (" + strsignal(WTERMSIG(status)) + ")",
+                                        a.console);
+        } else if (WEXITSTATUS(status) != 0) {
+          outcome.kind = ChildOutcome::Kind::Crashed;
+          outcome.reason =
+              with_console("exited with code " + std::to_string(WEXITSTATUS(status)), a.console);
+        } else {
+          outcome.payload = std::move(a.payload);
+        }
+      }
+      outcome.console = std::move(a.console);
+      Done done = std::move(a.job.done);
+      active.erase(active.begin() + static_cast<long>(i));
+      done(outcome);
+    }
+  }
+}
+
+}  // namespace bb

@@ -1,0 +1,42 @@
+#include "run/interrupt.hpp"
+
+#include <csignal>
+
+namespace bb {
+
+namespace {
+volatile std::sig_atomic_t arrived = 0;
+void on_signal(int signal) {
+  arrived = signal;
+}
+}  // namespace
+
+void install_interrupt_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int interrupt_signal() {
+  return arrived;
+}
+
+DeferSignals::DeferSignals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  sigprocmask(SIG_BLOCK, &set, nullptr);
+}
+
+DeferSignals::~DeferSignals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  sigprocmask(SIG_UNBLOCK, &set, nullptr);
+}
+
+}  // namespace bb

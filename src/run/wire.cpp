@@ -1,0 +1,163 @@
+#include "run/wire.hpp"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace bb::wire {
+
+namespace {
+
+class Writer {
+ public:
+  template <typename T>
+  void raw(const T& v) {
+    bytes_.append(reinterpret_cast<const char*>(&v), sizeof(T));
+  }
+  void text(const std::string& s) {
+    raw<std::uint64_t>(s.size());
+    bytes_ += s;
+  }
+  void maybe(const std::optional<double>& v) {
+    raw<char>(v.has_value());
+    raw<double>(v.value_or(0.0));
+  }
+  std::string take() { return std::move(bytes_); }
+
+ private:
+  std::string bytes_;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& bytes) : bytes_(bytes) {}
+  template <typename T>
+  T raw() {
+    if (at_ + sizeof(T) > bytes_.size())
+      throw std::runtime_error("truncated result from a child process");
+    T v;
+    std::memcpy(&v, bytes_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return v;
+  }
+  std::string text() {
+    const auto n = raw<std::uint64_t>();
+    if (at_ + n > bytes_.size()) throw std::runtime_error("truncated result from a child process");
+    std::string s = bytes_.substr(at_, n);
+    at_ += n;
+    return s;
+  }
+  std::optional<double> maybe() {
+    const bool has = raw<char>() != 0;
+    const double v = raw<double>();
+    return has ? std::optional<double>(v) : std::nullopt;
+  }
+
+ private:
+  const std::string& bytes_;
+  std::size_t at_ = 0;
+};
+
+void put(Writer& w, const Vec3& v) {
+  w.raw(v.x), w.raw(v.y), w.raw(v.z);
+}
+Vec3 get_vec(Reader& r) {
+  const double x = r.raw<double>(), y = r.raw<double>(), z = r.raw<double>();
+  return {x, y, z};
+}
+
+}  // namespace
+
+std::string encode(const RunRecord& run) {
+  Writer w;
+  w.text(run.backend);
+  w.maybe(run.dt);
+  w.raw<int>(static_cast<int>(run.status));
+  w.text(run.reason);
+  w.maybe(run.diverged_at);
+  w.raw<long>(run.steps);
+  w.raw<std::uint64_t>(run.engine_settings.size());
+  for (const auto& [key, value] : run.engine_settings) {
+    w.text(key);
+    w.raw<int>(static_cast<int>(value.index()));
+    if (const auto* d = std::get_if<double>(&value)) w.raw(*d);
+    if (const auto* b = std::get_if<bool>(&value)) w.raw<char>(*b);
+    if (const auto* s = std::get_if<std::string>(&value)) w.text(*s);
+  }
+  const Trajectory& t = run.trajectory;
+  w.raw<std::uint64_t>(t.times.size());
+  w.raw<std::uint64_t>(t.states.empty() ? 0 : t.states.front().size());
+  for (std::size_t j = 0; j < t.times.size(); ++j) {
+    w.raw(t.times[j]);
+    for (const BodyState& b : t.states[j]) {
+      put(w, b.position), put(w, b.velocity), put(w, b.angular_velocity);
+      w.raw(b.orientation.w), w.raw(b.orientation.x), w.raw(b.orientation.y),
+          w.raw(b.orientation.z);
+    }
+  }
+  return w.take();
+}
+
+RunRecord decode_run(const std::string& bytes) {
+  Reader r(bytes);
+  RunRecord run;
+  run.backend = r.text();
+  run.dt = r.maybe();
+  run.status = static_cast<RunStatus>(r.raw<int>());
+  run.reason = r.text();
+  run.diverged_at = r.maybe();
+  run.steps = r.raw<long>();
+  const auto settings = r.raw<std::uint64_t>();
+  for (std::uint64_t i = 0; i < settings; ++i) {
+    std::string key = r.text();
+    const int kind = r.raw<int>();
+    if (kind == 0) run.engine_settings.push_back({key, r.raw<double>()});
+    if (kind == 1) run.engine_settings.push_back({key, r.raw<char>() != 0});
+    if (kind == 2) run.engine_settings.push_back({key, r.text()});
+  }
+  const auto samples = r.raw<std::uint64_t>();
+  const auto bodies = r.raw<std::uint64_t>();
+  for (std::uint64_t j = 0; j < samples; ++j) {
+    run.trajectory.times.push_back(r.raw<double>());
+    State state(bodies);
+    for (BodyState& b : state) {
+      b.position = get_vec(r), b.velocity = get_vec(r), b.angular_velocity = get_vec(r);
+      const double w = r.raw<double>(), x = r.raw<double>(), y = r.raw<double>(),
+                   z = r.raw<double>();
+      b.orientation = {w, x, y, z};
+    }
+    run.trajectory.states.push_back(std::move(state));
+  }
+  return run;
+}
+
+std::string encode(const Timing& timing) {
+  Writer w;
+  w.raw(timing.median_seconds);
+  w.raw(timing.repeats);
+  return w.take();
+}
+
+Timing decode_timing(const std::string& bytes) {
+  Reader r(bytes);
+  Timing t;
+  t.median_seconds = r.raw<double>();
+  t.repeats = r.raw<int>();
+  return t;
+}
+
+std::string encode(const StabilityTrial& trial) {
+  Writer w;
+  w.raw<char>(trial.stable);
+  w.text(trial.reason);
+  return w.take();
+}
+
+StabilityTrial decode_trial(const std::string& bytes) {
+  Reader r(bytes);
+  StabilityTrial t;
+  t.stable = r.raw<char>() != 0;
+  t.reason = r.text();
+  return t;
+}
+
+}  // namespace bb::wire

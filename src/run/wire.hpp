@@ -1,0 +1,22 @@
+// Results crossing from a child process to its parent, as bytes. Doubles travel as their
+// exact bits, so an isolated run reports exactly what an in-process run would.
+#pragma once
+
+#include <string>
+
+#include "run/cost.hpp"
+#include "run/results.hpp"
+#include "run/stability.hpp"
+
+namespace bb::wire {
+
+std::string encode(const RunRecord& run);
+RunRecord decode_run(const std::string& bytes);
+
+std::string encode(const Timing& timing);
+Timing decode_timing(const std::string& bytes);
+
+std::string encode(const StabilityTrial& trial);
+StabilityTrial decode_trial(const std::string& bytes);
+
+}  // namespace bb::wire
