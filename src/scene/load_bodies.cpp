@@ -1,9 +1,9 @@
 // [[body]] tables of a case file.
 #include <cmath>
 #include <numbers>
-#include <regex>
 
 #include "scene/load_parts.hpp"
+#include "scene/text.hpp"
 
 namespace bb::load {
 
@@ -89,8 +89,7 @@ void read_bodies(TomlReader& root, Scene& scene) {
     Body b;
     b.line = r.line();
     b.name = r.string("name");
-    static const std::regex name_pattern("[A-Za-z0-9_.-]+");
-    if (!std::regex_match(b.name, name_pattern))
+    if (!is_name(b.name, true, ".-"))
       r.fail(r.line_of("name"),
              "a body name uses only letters, digits, '_', '.' and '-', not '" + b.name + "'");
     r.rename("[[body]] '" + b.name + "'");

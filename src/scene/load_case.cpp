@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <regex>
 #include <sstream>
 
 #include "scene/load_parts.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -63,8 +63,7 @@ void read_timing(TomlReader& root, Scene& scene) {
 
 void read_header(TomlReader& root, Scene& scene) {
   scene.name = root.string("name");
-  static const std::regex name_pattern("[a-z0-9_]+");
-  if (!std::regex_match(scene.name, name_pattern))
+  if (!is_name(scene.name, false))
     root.fail(root.line_of("name"),
               "'name' must use only a-z, 0-9 and _ (it names the output files), not '" +
                   scene.name + "'");
@@ -84,6 +83,38 @@ void reject_duplicate_bodies(const TomlReader& root, const Scene& scene) {
         root.fail(scene.bodies[i].line, "body name '" + scene.bodies[i].name +
                                             "' is used twice (first on line " +
                                             std::to_string(scene.bodies[j].line) + ")");
+}
+
+/// Limits that protect the machine, checked before any work starts.
+void check_size(const TomlReader& root, const Scene& scene) {
+  const double bodies = static_cast<double>(scene.bodies.size());
+  const double samples = scene.duration / scene.sample;
+  if (bodies > kMaxBodies)
+    root.fail(root.line(), "the case has " + show(bodies) + " bodies; beachball runs at most " +
+                               show(kMaxBodies));
+  if (samples > kMaxSamples)
+    root.fail(root.line_of("sample"), "'duration' / 'sample' gives " + show(samples) +
+                                          " samples; at most " + show(kMaxSamples) +
+                                          " are kept per run");
+  if (samples * bodies > kMaxBodySamples)
+    root.fail(root.line_of("sample"),
+              show(samples) + " samples of " + show(bodies) + " bodies is more than the " +
+                  show(kMaxBodySamples) +
+                  " body-samples a run keeps; sample less often or shorten the run");
+  double work = 0.0;
+  for (double step : scene.dt) {
+    const double steps = scene.duration / step;
+    if (steps > kMaxStepsPerRun)
+      root.fail(root.line_of("dt"), "'dt' " + show(step) + " s over " + show(scene.duration) +
+                                        " s is " + show(steps) + " steps; a run may take at most " +
+                                        show(kMaxStepsPerRun));
+    work += steps * (bodies + static_cast<double>(scene.springs.size()));
+  }
+  if (work > kMaxSweepWork)
+    root.fail(root.line_of("dt"),
+              "the dt sweep would advance bodies and springs " + show(work) +
+                  " times per backend (more than " + show(kMaxSweepWork) +
+                  ", hours of work); shorten the duration, drop the finest dt or use fewer bodies");
 }
 
 }  // namespace
@@ -110,6 +141,7 @@ Scene parse_case(std::string_view text, const std::string& file) {
   load::read_contacts(root, scene);
   load::read_springs(root, scene);
   load::read_hinges(root, scene);
+  check_size(root, scene);
   load::read_course(root, scene);
   load::read_engines(root, scene);
   load::read_observes(root, scene);

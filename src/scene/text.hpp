@@ -15,6 +15,19 @@ inline std::string joined(const std::vector<std::string>& words) {
   return out;
 }
 
+/// True when `s` is not empty and every character is a-z, 0-9, '_', or one of `extra`;
+/// `upper` allows A-Z too.
+inline bool is_name(const std::string& s, bool upper, const char* extra = "") {
+  if (s.empty()) return false;
+  for (char c : s) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+                    (upper && c >= 'A' && c <= 'Z') ||
+                    (c != '\0' && std::string(extra).find(c) != std::string::npos);
+    if (!ok) return false;
+  }
+  return true;
+}
+
 /// A step as people write it: "1/60" when 1/dt is a whole number, else seconds (6 digits).
 inline std::string format_dt(double dt) {
   const double rate = 1.0 / dt;

@@ -1,0 +1,50 @@
+// The bundled suite run twice, and with --jobs 1 and --jobs 2, writes byte-identical JSON
+// (cost is left out with --no-cost, as it is the one thing that may differ).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string run_suite(const std::string& name, int jobs) {
+  const std::string out = ::testing::TempDir() + "/determinism_" + name;
+  fs::remove_all(out);
+  const std::string command = std::string(BEACHBALL_PROGRAM) + " run " +
+                              test::source_path("cases") + " --no-cost --jobs " +
+                              std::to_string(jobs) + " --out " + out + " > /dev/null 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  return out;
+}
+
+std::string bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Determinism, SuiteJsonIsByteIdenticalAcrossRunsAndJobs) {
+  const std::string first = run_suite("first", 1);
+  const std::string second = run_suite("second", 1);
+  const std::string parallel = run_suite("parallel", 2);
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(first)) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string name = entry.path().filename().string();
+    const std::string a = bytes(entry.path());
+    EXPECT_EQ(a, bytes(fs::path(second) / name)) << name;
+    EXPECT_EQ(a, bytes(fs::path(parallel) / name)) << name;
+    ++files;
+  }
+  EXPECT_GE(files, 3);
+}
+
+}  // namespace
+}  // namespace bb
