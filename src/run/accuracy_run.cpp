@@ -42,7 +42,7 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
       const double t = static_cast<double>(record.steps) * dt;
       record.trajectory.times.push_back(t);
       record.trajectory.states.push_back(state);
-      if (auto why = divergence(scene, bounds, state, initial_energy)) {
+      if (auto why = divergence(scene, bounds, state, initial_energy, total_energy(scene, state))) {
         record.status = RunStatus::Diverged;
         record.reason = *why;
         record.diverged_at = t;

@@ -3,8 +3,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "scene/motion.hpp"
-
 namespace bb {
 
 DivergenceBounds divergence_bounds(const Scene& scene) {
@@ -28,7 +26,7 @@ DivergenceBounds divergence_bounds(const Scene& scene) {
 }
 
 std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds& bounds,
-                                      const State& state, double initial_energy) {
+                                      const State& state, double initial_energy, double energy) {
   for (std::size_t i = 0; i < state.size(); ++i) {
     const BodyState& s = state[i];
     const std::string& name = scene.bodies[i].name;
@@ -41,7 +39,7 @@ std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds
       return m.str();
     }
   }
-  const double change = std::abs(total_energy(scene, state) - initial_energy);
+  const double change = std::abs(energy - initial_energy);
   if (change > bounds.energy) {
     std::ostringstream m;
     m << "energy changed by " << change << " J, more than the bound of " << bounds.energy

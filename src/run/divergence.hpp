@@ -18,8 +18,8 @@ struct DivergenceBounds {
 
 DivergenceBounds divergence_bounds(const Scene& scene);
 
-/// Why `state` counts as diverged, or nullopt when it does not.
+/// Why `state`, whose total energy is `energy`, counts as diverged, or nullopt.
 std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds& bounds,
-                                      const State& state, double initial_energy);
+                                      const State& state, double initial_energy, double energy);
 
 }  // namespace bb

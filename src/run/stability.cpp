@@ -28,8 +28,9 @@ StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt) {
     for (long n = 1; n <= steps; ++n) {
       sim->step();
       sim->read(state);
-      if (auto why = divergence(scene, bounds, state, e0)) return {false, *why};
-      if (total_energy(scene, state) - e0 > allowed_gain)
+      const double energy = total_energy(scene, state);
+      if (auto why = divergence(scene, bounds, state, e0, energy)) return {false, *why};
+      if (energy - e0 > allowed_gain)
         return {false, "energy rose above " + std::to_string(scene.stability.energy_factor) +
                            " times its scale"};
     }
