@@ -120,6 +120,11 @@ double time_limit(const Scene& scene, double dt, double timeout) {
   return 10.0 + 2e-5 * steps * static_cast<double>(scene.bodies.size() + scene.springs.size());
 }
 
+void check_run_options(const Scene& scene, const RunOptions& options) {
+  check_backend_names(scene, options);
+  selected_dts(scene, options);
+}
+
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options) {
   int backends = 0;
   for (const Backend* b : backends_for(scene, registry).all) backends += wanted(options, b->name());

@@ -34,6 +34,10 @@ double time_limit(const Scene& scene, double dt, double timeout);
 /// How many times run_case calls on_progress for this scene and these options.
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options);
 
+/// Throws CaseError (exit 2) when `options` name a backend or a dt that `scene` does not
+/// have; commands call it for every case before they create or write anything.
+void check_run_options(const Scene& scene, const RunOptions& options);
+
 /// Throws CaseError when an option names a backend or dt the case does not have.
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options);
 
