@@ -2,47 +2,13 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <thread>
 
 #include "cli/commands.hpp"
+#include "cli/option_values.hpp"
 #include "run/interrupt.hpp"
 #include "scene/case_error.hpp"
-
-namespace {
-
-/// Splits "a,b,c" into its parts.
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    const std::string part = text.substr(start, comma == std::string::npos ? comma : comma - start);
-    if (!part.empty()) out.push_back(part);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
-
-/// "0.0166", "1/60" or "1e-3" as seconds.
-double parse_step(const std::string& text) {
-  std::size_t used = 0;
-  const auto slash = text.find('/');
-  try {
-    if (slash != std::string::npos) {
-      const double num = std::stod(text.substr(0, slash), &used);
-      const double den = std::stod(text.substr(slash + 1));
-      if (den > 0) return num / den;
-    } else {
-      const double v = std::stod(text, &used);
-      if (used == text.size() && v > 0) return v;
-    }
-  } catch (const std::exception&) {
-  }
-  throw bb::CaseError("--dt", 0, "'" + text + "' is not a step in seconds (write 0.01 or 1/60)");
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -51,7 +17,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<std::string> cases;
   std::string out, backends, dts, junit;
-  const int default_jobs = std::max(1u, std::thread::hardware_concurrency());
+  const int default_jobs =
+      static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
   int jobs = default_jobs;
   bool no_cost = false;
   bool no_isolation = false;
@@ -68,17 +35,19 @@ int main(int argc, char** argv) {
   run->add_option("--dt", dts, "comma-separated steps from the case's dt, e.g. 1/60,1/120");
   // Options shared by the commands that run and time a sweep.
   const auto add_sweep_options = [&](CLI::App* command) {
-    command->add_option("--jobs", jobs, "accuracy runs in parallel")->default_val(default_jobs);
+    command->add_option("--jobs", jobs, "accuracy runs in parallel (1 to 256)")
+        ->default_val(default_jobs);
     command->add_flag("--no-cost", no_cost, "skip the timing pass");
     command
-        ->add_option("--cost-time", cost_seconds, "minimum timed seconds per run in the cost pass")
+        ->add_option("--cost-time", cost_seconds,
+                     "minimum timed seconds per run in the cost pass (0.001 to 600)")
         ->default_val(0.05);
   };
   add_sweep_options(run);
   // Options of every command that runs backends.
   const auto add_isolation_options = [&](CLI::App* command) {
     command->add_option("--timeout", timeout,
-                        "seconds a run may take (default: from the case's size)");
+                        "seconds a run may take, 0.001 to 86400 (default: from the case's size)");
     command->add_flag(
         "--no-isolation", no_isolation,
         "run in this process, not in child processes (for debugging: a crash ends the program)");
@@ -96,13 +65,14 @@ int main(int argc, char** argv) {
   stability->add_option("CASES", cases, "case files or folders")->required();
   stability->add_option("--out", out, "output folder")->default_val("out/stability");
   stability->add_option("--backends", backends, "comma-separated backend names (default: all)");
-  stability->add_option("--jobs", jobs, "backends searched in parallel")->default_val(default_jobs);
+  stability->add_option("--jobs", jobs, "backends searched in parallel (1 to 256)")
+      ->default_val(default_jobs);
   add_isolation_options(stability);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
   check->add_option("--junit", junit, "also write the gate results as JUnit XML");
-  check->add_option("--jobs", jobs, "runs in parallel")->default_val(default_jobs);
+  check->add_option("--jobs", jobs, "runs in parallel (1 to 256)")->default_val(default_jobs);
   add_isolation_options(check);
 
   try {
@@ -113,16 +83,25 @@ int main(int argc, char** argv) {
   }
 
   try {
+    // The subcommand that was parsed, to tell an option given empty from one not given.
+    const CLI::App* command = app.get_subcommands().front();
+    const auto given = [&](const char* option) {
+      return command->get_option_no_throw(option) != nullptr && command->count(option) > 0;
+    };
     bb::RunOptions options;
-    options.backends = split(backends);
-    for (const std::string& d : split(dts)) options.dts.push_back(parse_step(d));
-    options.jobs = std::max(1, jobs);
+    if (given("--backends")) options.backends = bb::cli::split_list("--backends", backends);
+    if (given("--dt"))
+      for (const std::string& d : bb::cli::split_list("--dt", dts))
+        options.dts.push_back(bb::cli::parse_step(d));
+    if (given("--jobs")) bb::cli::check_range("--jobs", jobs, bb::cli::kJobsRange);
+    if (given("--timeout")) bb::cli::check_range("--timeout", timeout, bb::cli::kTimeoutRange);
+    if (given("--cost-time"))
+      bb::cli::check_range("--cost-time", cost_seconds, bb::cli::kCostTimeRange);
+    options.jobs = jobs;
     options.cost = !no_cost;
     options.cost_options.min_seconds = cost_seconds;
     options.isolation = !no_isolation;
     options.timeout = timeout;
-    if (timeout < 0)
-      throw bb::CaseError("--timeout", 0, "must be a number of seconds, not negative");
     bb::install_interrupt_handlers();
     if (*list) return bb::cli::list_command(cases);
     if (*run) return bb::cli::run_command(cases, out, options);

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "support/program.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -16,35 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;  ///< stdout and stderr together
-};
-
-Outcome beachball(const std::string& args) {
-  const std::string command = std::string(BEACHBALL_PROGRAM) + " " + args + " 2>&1";
-  Outcome o;
-  FILE* pipe = popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-    o.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
-
-std::string fresh_dir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/beachball_" + name;
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string write_case(const std::string& dir, const std::string& file, const std::string& text) {
-  fs::create_directories(dir);
-  const std::string path = dir + "/" + file;
-  std::ofstream(path) << text;
-  return path;
-}
+using test::beachball;
+using test::fresh_dir;
+using test::Outcome;
+using test::write_case;
 
 TEST(Cli, RunWritesTheContractAndPrintsEveryBackend) {
   const std::string out = fresh_dir("run");
