@@ -1,0 +1,80 @@
+// The scene as a hybrid system for the reference: rigid bodies in free flight between
+// contacts, each contact an event resolved by Newton's restitution along the normal.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "reference/hybrid_integrator.hpp"
+#include "scene/scene.hpp"
+#include "scene/state.hpp"
+
+namespace bb {
+
+/// Thrown when a scene reaches a configuration the reference cannot resolve exactly
+/// (several simultaneous contacts on one body, a body resting under another).
+struct BeyondExactAnswer : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// What the reference saw happen, for exact observables.
+struct ContactRecord {
+  enum class Kind { Contact, Apex };
+  Kind kind = Kind::Contact;
+  int body = -1;        ///< the body that touched or peaked
+  int other = -1;       ///< the other body of a contact, -1 for the ground or an apex
+  double time = 0.0;    ///< seconds
+  double height = 0.0;  ///< apex: height of the body's lowest point above the ground, metres
+};
+
+class SceneModel : public HybridModel {
+ public:
+  /// Values per body in the integrated state: position, velocity, orientation (w, x, y, z),
+  /// angular velocity (world frame).
+  static constexpr std::size_t kPerBody = 13;
+
+  explicit SceneModel(const Scene& scene);
+  /// The integrated state at t = 0.
+  std::vector<double> initial_state() const;
+  /// `y` as the runner's per-body state.
+  void read(const double* y, State& out) const;
+
+  std::size_t dimension() const override { return kPerBody * scene_.bodies.size(); }
+  void derivatives(double t, const double* y, double* dydt) override;
+  std::size_t event_count() const override { return sources_.size(); }
+  void events(double t, const double* y, double* g) override;
+  void apply(std::size_t k, double t, double* y) override;
+
+  const std::vector<ContactRecord>& log() const { return log_; }
+  /// A ground bounce whose rebound would keep the body off the ground for less than this
+  /// many seconds leaves it resting on the ground instead (ending a geometric series of
+  /// ever smaller bounces): a millionth of the sample interval.
+  double rest_flight_time() const { return 1e-6 * scene_.sample; }
+  /// Why the reference cannot answer this scene exactly, or "" when it can.
+  static std::string beyond_exact_answer(const Scene& scene);
+
+ private:
+  /// What one event function watches.
+  struct Source {
+    enum class Kind { Ground, Pair, Apex } kind;
+    int a = -1;  ///< the (first) body
+    int b = -1;  ///< the second body of a pair
+    double restitution = 0.0;
+  };
+  double gap(const Source& s, const double* y) const;
+  /// Newton's restitution along the contact normal; the ground and fixed bodies do not move.
+  void resolve(const Source& s, double* y, double t);
+  /// Throws BeyondExactAnswer when another contact on the bodies of `s` is closed and closing.
+  void check_simultaneous(const Source& s, const double* y, double t) const;
+
+  const Scene& scene_;
+  std::vector<Source> sources_;
+  std::vector<bool> resting_;       ///< per body: resting on the ground
+  std::vector<bool> after_bounce_;  ///< per body: an apex is awaited
+  std::vector<Eigen::Vector3d> force_;
+  std::vector<ContactRecord> log_;
+};
+
+}  // namespace bb

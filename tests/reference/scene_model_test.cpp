@@ -1,0 +1,127 @@
+// The reference's contact model: bounces at the exact times and heights, momentum kept
+// between bodies, the end of a geometric series of bounces, and what it refuses.
+#include "reference/scene_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+const char* kDrop = R"(name = "drop"
+dims = 2
+duration = 12.0
+sample = 0.0333333333333333333
+dt = [0.0333333333333333333]
+report_dt = 0.0333333333333333333
+
+[ground]
+restitution = 0.8
+
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 10.0, 0.0]
+)";
+
+/// Runs `scene` through the hybrid integrator sample by sample; returns the final state.
+State simulate(const Scene& scene, SceneModel& model) {
+  HybridIntegrator integrator(model, {}, model.initial_state());
+  for (int i = 1; i <= scene.sample_count(); ++i) integrator.advance_to(i * scene.sample);
+  State out(scene.bodies.size());
+  model.read(integrator.state().data(), out);
+  return out;
+}
+
+TEST(SceneModel, ADroppedBallBouncesAtTheClosedFormsTimesAndHeights) {
+  const Scene scene = test::scene_from(kDrop);
+  SceneModel model(scene);
+  simulate(scene, model);
+  // Constants from the scene: g, radius, drop height, restitution.
+  const double g = -scene.gravity.y, r = scene.bodies[0].radius, h = scene.bodies[0].position.y;
+  const double e = scene.ground->restitution, v0 = std::sqrt(2.0 * g * (h - r));
+  double contact = v0 / g;
+  int contacts = 0, apexes = 0;
+  for (const ContactRecord& rec : model.log()) {
+    if (rec.kind == ContactRecord::Kind::Contact && contacts < 12) {
+      EXPECT_NEAR(rec.time, contact, 1e-9) << "contact " << contacts;
+      contact += 2.0 * std::pow(e, contacts + 1) * v0 / g;
+      ++contacts;
+    } else if (rec.kind == ContactRecord::Kind::Apex && apexes < 12) {
+      ++apexes;
+      EXPECT_NEAR(rec.height, r + (h - r) * std::pow(e, 2.0 * apexes), 1e-9) << "apex " << apexes;
+    }
+  }
+  EXPECT_EQ(contacts, 12);
+  EXPECT_EQ(apexes, 12);
+}
+
+TEST(SceneModel, EverSmallerBouncesEndWithTheBallRestingOnTheGround) {
+  const Scene scene = test::scene_from(kDrop);
+  SceneModel model(scene);
+  const State end = simulate(scene, model);
+  // The bounces of e = 0.8 from 10 m add up to t0 (1 + 2e / (1 - e)) = 12.52 s: by 14 s the
+  // ball rests.
+  const Scene longer = test::scene_from(std::string(kDrop).replace(
+      std::string(kDrop).find("duration = 12.0"), 15, "duration = 14.0"));
+  SceneModel rests(longer);
+  const State at_rest = simulate(longer, rests);
+  EXPECT_NEAR(at_rest[0].position.y, 0.5, 1e-9);
+  EXPECT_EQ(at_rest[0].velocity.y, 0.0);
+  // Finitely many events: the rule ends the series after a few dozen bounces.
+  EXPECT_LT(rests.log().size(), 400u);
+  EXPECT_GT(end[0].position.y, 0.5 - 1e-9);
+}
+
+TEST(SceneModel, TwoBallsKeepTheirMomentumAndSeparateAtTheRestitution) {
+  const Scene scene = test::scene_from(R"(name = "two"
+dims = 2
+duration = 2.0
+sample = 0.1
+dt = [0.1]
+report_dt = 0.1
+gravity = [0.0, 0.0, 0.0]
+
+[[body]]
+name = "small"
+radius = 1.0
+mass = 1.0
+position = [-3.0, 0.0, 0.0]
+velocity = [2.0, 0.3, 0.0]
+
+[[body]]
+name = "big"
+radius = 1.5
+mass = 2.25
+position = [3.0, 0.5, 0.0]
+velocity = [-1.0, 0.0, 0.0]
+
+[[contact]]
+bodies = ["small", "big"]
+restitution = 0.6
+)");
+  SceneModel model(scene);
+  const State end = simulate(scene, model);
+  const double m1 = 1.0, m2 = 2.25;
+  const Vec3 before = Vec3{2.0, 0.3, 0.0} * m1 + Vec3{-1.0, 0.0, 0.0} * m2;
+  const Vec3 after = end[0].velocity * m1 + end[1].velocity * m2;
+  EXPECT_NEAR(after.x, before.x, 1e-12);
+  EXPECT_NEAR(after.y, before.y, 1e-12);
+  ASSERT_EQ(model.log().size(), 2u);  // one contact, logged for each body
+}
+
+TEST(SceneModel, AMovingBoxThatTouchesIsBeyondAnExactAnswer) {
+  const Scene scene = test::scene_from(std::string(kDrop) +
+                                       "\n[[body]]\nname = \"crate\"\nshape = \"box\"\n"
+                                       "half_extents = [0.5, 0.5, 0.5]\nmass = 1.0\n"
+                                       "position = [5.0, 3.0, 0.0]\n");
+  EXPECT_NE(SceneModel::beyond_exact_answer(scene).find("crate"), std::string::npos);
+  EXPECT_EQ(SceneModel::beyond_exact_answer(test::scene_from(kDrop)), "");
+}
+
+}  // namespace
+}  // namespace bb
