@@ -40,9 +40,6 @@ ConstVec spin(const double* y, int i) {
   return ConstVec(y + at(i) + 10);
 }
 
-double radius(const Body& b) {
-  return b.shape == Shape::Sphere ? b.radius : 0.0;
-}
 double inverse_mass(const Body& b) {
   return b.fixed ? 0.0 : 1.0 / b.mass;
 }
@@ -65,29 +62,13 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
 SceneModel::SceneModel(const Scene& scene)
     : scene_(scene),
       resting_(scene.bodies.size(), false),
-      after_bounce_(scene.bodies.size(), false),
-      force_(scene.bodies.size()) {
-  const int n = static_cast<int>(scene.bodies.size());
-  if (scene.ground)
-    for (int i = 0; i < n; ++i)
-      if (!scene.bodies[i].fixed)
-        sources_.push_back({Source::Kind::Ground, i, -1, scene.ground->restitution});
-  // Every pair a [[contact]] names once; the first entry naming a pair decides it.
-  std::vector<std::vector<bool>> paired(n, std::vector<bool>(n, false));
-  for (const Contact& c : scene.contacts)
-    for (int a = 0; a < n; ++a)
-      for (int b = a + 1; b < n; ++b) {
-        const bool named =
-            c.all_pairs || (c.body_a == a && c.body_b == b) || (c.body_a == b && c.body_b == a);
-        if (!named || paired[a][b] || (scene.bodies[a].fixed && scene.bodies[b].fixed)) continue;
-        paired[a][b] = true;
-        // A fixed box is always the second shape.
-        const bool swap = scene.bodies[a].shape == Shape::Box;
-        sources_.push_back({Source::Kind::Pair, swap ? b : a, swap ? a : b, c.restitution});
-      }
+      after_bounce_(scene.bodies.size(), false) {
+  for (const contact::ContactPair& pair : contact::contact_pairs(scene))
+    sources_.push_back({false, -1, pair});
+  // Apexes are heights above the ground, watched while gravity pulls towards it.
   if (scene.ground && -eigen(scene.gravity).dot(eigen(scene.ground->normal)) > 0.0)
-    for (int i = 0; i < n; ++i)
-      if (!scene.bodies[i].fixed) sources_.push_back({Source::Kind::Apex, i, -1, 0.0});
+    for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
+      if (!scene.bodies[i].fixed) sources_.push_back({true, i, {}});
 }
 
 std::vector<double> SceneModel::initial_state() const {
@@ -151,86 +132,63 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
   }
 }
 
-double SceneModel::gap(const Source& s, const double* y) const {
-  const Body& a = scene_.bodies[s.a];
-  switch (s.kind) {
-    case Source::Kind::Ground:
-      return contact::sphere_plane(position(y, s.a), radius(a), eigen(scene_.ground->point),
-                                   eigen(scene_.ground->normal))
-          .gap;
-    case Source::Kind::Pair: {
-      const Body& b = scene_.bodies[s.b];
-      if (b.shape == Shape::Box)
-        return contact::sphere_box(position(y, s.a), radius(a), position(y, s.b),
-                                   orientation(y, s.b), eigen(b.half_extents))
-            .gap;
-      return contact::sphere_sphere(position(y, s.a), radius(a), position(y, s.b), radius(b)).gap;
-    }
-    case Source::Kind::Apex:
-      return 0.0;
-  }
-  return 0.0;
+contact::Proximity SceneModel::proximity(const contact::ContactPair& pair, const double* y) const {
+  const int b = pair.ground() ? pair.a : pair.b;
+  return contact::measure(scene_, pair, position(y, pair.a), position(y, b), orientation(y, b));
 }
 
 void SceneModel::events(double, const double* y, double* g) {
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const Source& s = sources_[k];
-    if (s.kind == Source::Kind::Apex) {
+    if (s.apex) {
       // The normal velocity falling through zero after a bounce is the apex.
-      const bool watching = after_bounce_[s.a] && !resting_[s.a];
-      g[k] = watching ? velocity(y, s.a).dot(eigen(scene_.ground->normal)) : 1.0;
-    } else if (s.kind == Source::Kind::Ground && resting_[s.a]) {
+      const bool watching = after_bounce_[s.body] && !resting_[s.body];
+      g[k] = watching ? velocity(y, s.body).dot(eigen(scene_.ground->normal)) : 1.0;
+    } else if (s.pair.ground() && resting_[s.pair.a]) {
       g[k] = 1.0;
     } else {
-      g[k] = gap(s, y);
+      g[k] = proximity(s.pair, y).gap;
     }
   }
 }
 
-void SceneModel::check_simultaneous(const Source& s, const double* y, double t) const {
+void SceneModel::check_simultaneous(const contact::ContactPair& pair, const double* y,
+                                    double t) const {
   for (const Source& other : sources_) {
-    if (&other == &s || other.kind == Source::Kind::Apex) continue;
+    const contact::ContactPair& o = other.pair;
+    if (other.apex || (o.a == pair.a && o.b == pair.b)) continue;
     const bool shares =
-        other.a == s.a || other.a == s.b || other.b == s.a || (other.b >= 0 && other.b == s.b);
-    if (!shares || (other.kind == Source::Kind::Ground && resting_[other.a])) continue;
-    if (gap(other, y) <= kSimultaneousGap)
+        o.a == pair.a || o.a == pair.b || o.b == pair.a || (o.b >= 0 && o.b == pair.b);
+    if (!shares || (o.ground() && resting_[o.a])) continue;
+    if (proximity(o, y).gap <= kSimultaneousGap)
       throw BeyondExactAnswer(
-          "at t = " + std::to_string(t) + " s body '" + scene_.bodies[s.a].name +
+          "at t = " + std::to_string(t) + " s body '" + scene_.bodies[pair.a].name +
           "' touches two things at once: simultaneous contacts have no exact answer here");
   }
 }
 
-void SceneModel::resolve(const Source& s, double* y, double t) {
-  const Body& a = scene_.bodies[s.a];
-  const bool ground = s.kind == Source::Kind::Ground;
-  const int b_index = ground ? -1 : s.b;
-  contact::Proximity p;
-  if (ground) {
-    p = contact::sphere_plane(position(y, s.a), radius(a), eigen(scene_.ground->point),
-                              eigen(scene_.ground->normal));
-  } else if (scene_.bodies[s.b].shape == Shape::Box) {
-    p = contact::sphere_box(position(y, s.a), radius(a), position(y, s.b), orientation(y, s.b),
-                            eigen(scene_.bodies[s.b].half_extents));
-  } else {
-    p = contact::sphere_sphere(position(y, s.a), radius(a), position(y, s.b),
-                               radius(scene_.bodies[s.b]));
-  }
+void SceneModel::resolve(const contact::ContactPair& pair, double* y, double t) {
+  const bool ground = pair.ground();
+  const contact::Proximity p = proximity(pair, y);
   const Vector3d relative =
-      Vector3d(velocity(y, s.a)) - (ground ? Vector3d::Zero() : Vector3d(velocity(y, s.b)));
+      Vector3d(velocity(y, pair.a)) - (ground ? Vector3d::Zero() : Vector3d(velocity(y, pair.b)));
   const double closing = relative.dot(p.normal);
   // Touching while separating (a grazing root) needs no impulse.
   if (closing >= 0.0) return;
-  check_simultaneous(s, y, t);
-  const double wa = inverse_mass(a), wb = ground ? 0.0 : inverse_mass(scene_.bodies[s.b]);
-  const double j = -(1.0 + s.restitution) * closing / (wa + wb);
-  Vec(y + at(s.a) + 3) += j * wa * p.normal;
-  if (!ground) Vec(y + at(s.b) + 3) -= j * wb * p.normal;
-  log_.push_back({ContactRecord::Kind::Contact, s.a, b_index, t, 0.0});
-  if (!ground) log_.push_back({ContactRecord::Kind::Contact, s.b, s.a, t, 0.0});
-  after_bounce_[s.a] = true;
-  if (!ground) after_bounce_[s.b] = true;
-  for (int body : {s.a, b_index}) {
-    if (body < 0 || !resting_[body] || !scene_.ground) continue;
+  check_simultaneous(pair, y, t);
+  const double wa = inverse_mass(scene_.bodies[pair.a]);
+  const double wb = ground ? 0.0 : inverse_mass(scene_.bodies[pair.b]);
+  const double j = -(1.0 + pair.restitution) * closing / (wa + wb);
+  Vec(y + at(pair.a) + 3) += j * wa * p.normal;
+  if (!ground) Vec(y + at(pair.b) + 3) -= j * wb * p.normal;
+  log_.push_back({ContactRecord::Kind::Contact, pair.a, pair.b, t, 0.0});
+  after_bounce_[pair.a] = true;
+  if (!ground) {
+    log_.push_back({ContactRecord::Kind::Contact, pair.b, pair.a, t, 0.0});
+    after_bounce_[pair.b] = true;
+  }
+  for (int body : {pair.a, pair.b}) {
+    if (body < 0 || !resting_[body]) continue;
     // An impulse may lift a resting body off the ground, but not press it in.
     const double up = velocity(y, body).dot(eigen(scene_.ground->normal));
     if (up < 0.0)
@@ -239,29 +197,26 @@ void SceneModel::resolve(const Source& s, double* y, double t) {
                               "' is pushed into the ground while resting on it");
     resting_[body] = up <= 0.0;
   }
-  if (!ground || !scene_.ground) return;
+  if (!ground) return;
   // Ever smaller bounces end: a rebound this short leaves the body resting on the ground.
   const Vector3d n = eigen(scene_.ground->normal);
   const double pull = -eigen(scene_.gravity).dot(n);
-  const double rebound = velocity(y, s.a).dot(n);
+  const double rebound = velocity(y, pair.a).dot(n);
   if (pull > 0.0 && 2.0 * rebound / pull < rest_flight_time()) {
-    resting_[s.a] = true;
-    after_bounce_[s.a] = false;
-    Vec(y + at(s.a) + 3) -= rebound * n;
-    Vec(y + at(s.a)) -= p.gap * n;
+    resting_[pair.a] = true;
+    after_bounce_[pair.a] = false;
+    Vec(y + at(pair.a) + 3) -= rebound * n;
+    Vec(y + at(pair.a)) -= p.gap * n;
   }
 }
 
 void SceneModel::apply(std::size_t k, double t, double* y) {
   const Source& s = sources_[k];
-  if (s.kind == Source::Kind::Apex) {
-    const double height = (Vector3d(position(y, s.a)) - eigen(scene_.ground->point))
-                              .dot(eigen(scene_.ground->normal));
-    log_.push_back({ContactRecord::Kind::Apex, s.a, -1, t, height});
-    after_bounce_[s.a] = false;
-    return;
-  }
-  resolve(s, y, t);
+  if (!s.apex) return resolve(s.pair, y, t);
+  const Vector3d above = Vector3d(position(y, s.body)) - eigen(scene_.ground->point);
+  log_.push_back(
+      {ContactRecord::Kind::Apex, s.body, -1, t, above.dot(eigen(scene_.ground->normal))});
+  after_bounce_[s.body] = false;
 }
 
 }  // namespace bb

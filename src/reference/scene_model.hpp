@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_pairs.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "scene/scene.hpp"
 #include "scene/state.hpp"
@@ -56,24 +57,22 @@ class SceneModel : public HybridModel {
   static std::string beyond_exact_answer(const Scene& scene);
 
  private:
-  /// What one event function watches.
+  /// What one event function watches: a contact pair's gap, or a body's apex.
   struct Source {
-    enum class Kind { Ground, Pair, Apex } kind;
-    int a = -1;  ///< the (first) body
-    int b = -1;  ///< the second body of a pair
-    double restitution = 0.0;
+    bool apex = false;
+    int body = -1;  ///< the apex's body
+    contact::ContactPair pair;
   };
-  double gap(const Source& s, const double* y) const;
+  contact::Proximity proximity(const contact::ContactPair& pair, const double* y) const;
   /// Newton's restitution along the contact normal; the ground and fixed bodies do not move.
-  void resolve(const Source& s, double* y, double t);
-  /// Throws BeyondExactAnswer when another contact on the bodies of `s` is closed and closing.
-  void check_simultaneous(const Source& s, const double* y, double t) const;
+  void resolve(const contact::ContactPair& pair, double* y, double t);
+  /// Throws BeyondExactAnswer when another contact on the bodies of `pair` is closed.
+  void check_simultaneous(const contact::ContactPair& pair, const double* y, double t) const;
 
   const Scene& scene_;
   std::vector<Source> sources_;
   std::vector<bool> resting_;       ///< per body: resting on the ground
   std::vector<bool> after_bounce_;  ///< per body: an apex is awaited
-  std::vector<Eigen::Vector3d> force_;
   std::vector<ContactRecord> log_;
 };
 
