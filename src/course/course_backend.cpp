@@ -1,5 +1,6 @@
 #include "course/course_backend.hpp"
 
+#include "course/course_step.hpp"
 #include "course/integrators.hpp"
 #include "scene/motion.hpp"
 
@@ -10,7 +11,10 @@ namespace {
 class CourseSimulation : public Simulation {
  public:
   CourseSimulation(const Scene& scene, double dt, const CourseVariant& variant)
-      : scene_(scene), dt_(dt), step_(course::integrator(variant.integrator)) {
+      : scene_(scene),
+        dt_(dt),
+        phases_{course::integrator(variant.integrator), course::ground_rule(variant.ground)},
+        contacts_(scene, phases_.ground) {
     const State start = initial_state(scene);
     for (const BodyState& b : start) {
       points_.x.push_back(b.position);
@@ -21,12 +25,19 @@ class CourseSimulation : public Simulation {
     }
     work_.resize(start.size());
     settings_ = {{"integrator", variant.integrator}};
+    if (!contacts_.empty()) settings_.push_back({"ground_rule", variant.ground});
     acceleration_ = [this](const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                            std::vector<Vec3>& a) { accelerations(scene_, x, v, omega_, a); };
   }
 
   void step() override {
-    step_(points_, dt_, acceleration_, work_);
+    // Forces and integrate: the integrator evaluates the forces at each of its stages.
+    phases_.integrate(points_, dt_, acceleration_, work_);
+    // Detect, then resolve: the ground rule against fixed surfaces, the blend between bodies.
+    if (!contacts_.empty()) {
+      contacts_.detect(points_.x);
+      contacts_.resolve(points_.x, points_.v);
+    }
     // Seed section 5, kinematic rotation: each frame the orientation is multiplied on the
     // left by the rotation the spin makes in one step (exact for a torque-free sphere).
     if (spins_)
@@ -44,7 +55,8 @@ class CourseSimulation : public Simulation {
  private:
   const Scene& scene_;
   double dt_;
-  course::StepFn step_;
+  course::Phases phases_;
+  course::ContactPhases contacts_;
   course::PointState points_;
   course::Workspace work_;
   course::AccelerationFn acceleration_;
@@ -57,8 +69,9 @@ class CourseSimulation : public Simulation {
 }  // namespace
 
 FeatureSet CourseBackend::supports() const {
-  return {Feature::ThreeD, Feature::Gravity, Feature::Drag,
-          Feature::Magnus, Feature::Wind,    Feature::Rotation};
+  return {Feature::ThreeD,        Feature::Gravity,     Feature::Drag,
+          Feature::Magnus,        Feature::Wind,        Feature::Rotation,
+          Feature::GroundContact, Feature::BodyContact, Feature::Restitution};
 }
 
 std::unique_ptr<Simulation> CourseBackend::start(const Scene& scene, double dt) const {
