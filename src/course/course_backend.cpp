@@ -1,5 +1,8 @@
 #include "course/course_backend.hpp"
 
+#include <cmath>
+
+#include "contact/impulse_response.hpp"
 #include "course/course_step.hpp"
 #include "course/integrators.hpp"
 #include "scene/motion.hpp"
@@ -31,6 +34,12 @@ class CourseSimulation : public Simulation {
   }
 
   void step() override {
+    // Impulses due at the start of this step change velocities (and spins) at once.
+    for (; next_impulse_ < scene_.impulses.size() &&
+           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
+         ++next_impulse_)
+      push(scene_.impulses[next_impulse_]);
+    ++steps_;
     // Forces and integrate: the integrator evaluates the forces at each of its stages.
     phases_.integrate(points_, dt_, acceleration_, work_);
     // Detect, then resolve: the ground rule against fixed surfaces, the blend between bodies.
@@ -53,6 +62,18 @@ class CourseSimulation : public Simulation {
   Settings settings() const override { return settings_; }
 
  private:
+  void push(const Impulse& imp) {
+    const std::size_t i = static_cast<std::size_t>(imp.body);
+    const Quat& q = orientation_[i];
+    Eigen::Vector3d v(points_.v[i].x, points_.v[i].y, points_.v[i].z);
+    Eigen::Vector3d w(omega_[i].x, omega_[i].y, omega_[i].z);
+    contact::apply_impulse(scene_.bodies[i], imp, {points_.x[i].x, points_.x[i].y, points_.x[i].z},
+                           Eigen::Quaterniond(q.w, q.x, q.y, q.z), v, w);
+    points_.v[i] = {v.x(), v.y(), v.z()};
+    omega_[i] = {w.x(), w.y(), w.z()};
+    spins_ = spins_ || w.norm() > 0.0;
+  }
+
   const Scene& scene_;
   double dt_;
   course::Phases phases_;
@@ -63,15 +84,17 @@ class CourseSimulation : public Simulation {
   std::vector<Quat> orientation_;
   std::vector<Vec3> omega_;
   bool spins_ = false;
+  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
+  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
   Settings settings_;
 };
 
 }  // namespace
 
 FeatureSet CourseBackend::supports() const {
-  return {Feature::ThreeD,        Feature::Gravity,     Feature::Drag,
-          Feature::Magnus,        Feature::Wind,        Feature::Rotation,
-          Feature::GroundContact, Feature::BodyContact, Feature::Restitution};
+  return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
+          Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
+          Feature::Restitution, Feature::Impulse};
 }
 
 std::unique_ptr<Simulation> CourseBackend::start(const Scene& scene, double dt) const {

@@ -63,6 +63,12 @@ class HybridIntegrator {
   /// std::runtime_error when the solver fails.
   void advance_to(double target);
   const std::vector<double>& state() const { return y_; }
+  /// Lets `edit` change the state at the current time (an impulse), then restarts the solver.
+  template <class Edit>
+  void change_state(Edit&& edit) {
+    edit(y_.data());
+    restart();
+  }
   double time() const { return t_; }
   /// Accepted internal steps so far, events' re-integrations not counted.
   long steps() const { return steps_; }

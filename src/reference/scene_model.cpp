@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "contact/contact_geometry.hpp"
+#include "contact/impulse_response.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/motion.hpp"
 
@@ -208,6 +209,20 @@ void SceneModel::resolve(const contact::ContactPair& pair, double* y, double t) 
     Vec(y + at(pair.a) + 3) -= rebound * n;
     Vec(y + at(pair.a)) -= p.gap * n;
   }
+}
+
+void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
+  const int i = impulse.body;
+  Vector3d v = velocity(y, i), w = spin(y, i);
+  contact::apply_impulse(scene_.bodies[i], impulse, position(y, i), orientation(y, i), v, w);
+  Vec(y + at(i) + 3) = v;
+  Vec(y + at(i) + 10) = w;
+  if (!resting_[i]) return;
+  resting_[i] = false;
+  // Pressed into the ground it rests on: the ground answers at once, as at a contact.
+  if (v.dot(eigen(scene_.ground->normal)) < 0.0)
+    for (const Source& s : sources_)
+      if (!s.apex && s.pair.ground() && s.pair.a == i) resolve(s.pair, y, t);
 }
 
 void SceneModel::apply(std::size_t k, double t, double* y) {

@@ -48,6 +48,10 @@ class SceneModel : public HybridModel {
   void events(double t, const double* y, double* g) override;
   void apply(std::size_t k, double t, double* y) override;
 
+  /// One of the scene's [[impulse]] entries, at time t: velocity and spin change at once. A
+  /// body resting on the ground that is pushed into it bounces off it there and then.
+  void apply_impulse(const Impulse& impulse, double t, double* y);
+
   const std::vector<ContactRecord>& log() const { return log_; }
   /// A ground bounce whose rebound would keep the body off the ground for less than this
   /// many seconds leaves it resting on the ground instead (ending a geometric series of

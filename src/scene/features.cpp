@@ -33,6 +33,8 @@ std::string feature_name(Feature f) {
       return "springs";
     case Feature::Hinge:
       return "hinge";
+    case Feature::Impulse:
+      return "impulse";
     case Feature::Rotation:
       return "rotation";
     case Feature::Boxes:

@@ -21,6 +21,7 @@ enum class Feature {
   Hinge,          ///< a body turning about a fixed axis
   Rotation,       ///< a body that spins (non-zero angular velocity)
   Boxes,          ///< box-shaped bodies
+  Impulse,        ///< instantaneous pushes at given times
   Count
 };
 

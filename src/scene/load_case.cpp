@@ -141,6 +141,7 @@ Scene parse_case(std::string_view text, const std::string& file) {
   load::read_contacts(root, scene);
   load::read_springs(root, scene);
   load::read_hinges(root, scene);
+  load::read_impulses(root, scene);
   check_size(root, scene);
   load::read_course(root, scene);
   load::read_engines(root, scene);

@@ -15,6 +15,7 @@ void read_air_and_ground(TomlReader& root, Scene& scene);
 void read_contacts(TomlReader& root, Scene& scene);
 void read_springs(TomlReader& root, Scene& scene);
 void read_hinges(TomlReader& root, Scene& scene);
+void read_impulses(TomlReader& root, Scene& scene);
 void read_course(TomlReader& root, Scene& scene);
 void read_engines(TomlReader& root, Scene& scene);
 void read_observes(TomlReader& root, Scene& scene);

@@ -48,6 +48,7 @@ FeatureSet Scene::features() const {
   }
   if (!springs.empty()) f.add(Feature::Springs);
   if (!hinges.empty()) f.add(Feature::Hinge);
+  if (!impulses.empty()) f.add(Feature::Impulse);
   return f;
 }
 

@@ -91,6 +91,16 @@ struct Hinge {
   int line = 0;
 };
 
+/// An instantaneous push at a given time ("Push", the plank hit): the body's velocity
+/// changes by impulse / mass; off the centre it also gets an angular impulse r x J.
+struct Impulse {
+  int body = -1;
+  double time = 0.0;  ///< seconds; a multiple of every dt
+  Vec3 impulse;       ///< newton seconds
+  std::optional<Vec3> point;  ///< world point where it acts, metres; none: the centre
+  int line = 0;
+};
+
 /// Which of the course text's variants to run.
 struct CourseOptions {
   std::vector<std::string> integrators;
@@ -156,6 +166,7 @@ struct Scene {
   std::vector<Spring> springs;
   std::optional<Grid> grid;
   std::vector<Hinge> hinges;
+  std::vector<Impulse> impulses;  ///< in time order
   CourseOptions course;
   std::map<std::string, std::map<std::string, EngineValue>> engines;
   std::vector<Observe> observes;

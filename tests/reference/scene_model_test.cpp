@@ -125,3 +125,39 @@ TEST(SceneModel, AMovingBoxThatTouchesIsBeyondAnExactAnswer) {
 
 }  // namespace
 }  // namespace bb
+
+namespace bb {
+namespace {
+
+TEST(SceneModel, AnImpulseChangesVelocityByJOverMAndSpinByTheLeverArm) {
+  const Scene scene = test::scene_from(R"(name = "push"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.1]
+gravity = [0.0, 0.0, 0.0]
+
+[[body]]
+name = "left"
+radius = 0.5
+mass = 2.0
+position = [-1.0, 0.0, 0.0]
+
+[[impulse]]
+body = "left"
+time = 0.0
+impulse = [-2.0, 0.0, 0.0]
+point = [-1.0, 0.25, 0.0]
+)");
+  SceneModel model(scene);
+  std::vector<double> y = model.initial_state();
+  model.apply_impulse(scene.impulses[0], 0.0, y.data());
+  State s(1);
+  model.read(y.data(), s);
+  EXPECT_EQ(s[0].velocity.x, -2.0 / 2.0);
+  // r x J = (0, 0.25, 0) x (-2, 0, 0) = (0, 0, 0.5); I = 2/5 m r^2 = 0.2.
+  EXPECT_NEAR(s[0].angular_velocity.z, 0.5 / 0.2, 1e-12);
+}
+
+}  // namespace
+}  // namespace bb
