@@ -64,6 +64,7 @@ SceneModel::SceneModel(const Scene& scene)
     : scene_(scene),
       resting_(scene.bodies.size(), false),
       after_bounce_(scene.bodies.size(), false) {
+  trace_.bodies.resize(scene.bodies.size());
   for (const contact::ContactPair& pair : contact::contact_pairs(scene))
     sources_.push_back({false, -1, pair});
   // Apexes are heights above the ground, watched while gravity pulls towards it.
@@ -153,6 +154,20 @@ void SceneModel::events(double, const double* y, double* g) {
   }
 }
 
+double SceneModel::kinetic_energy(const double* y) const {
+  double e = 0.0;
+  for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i)
+    if (!scene_.bodies[i].fixed) e += 0.5 * scene_.bodies[i].mass * velocity(y, i).squaredNorm();
+  return e;
+}
+
+Vector3d SceneModel::momentum(const double* y) const {
+  Vector3d p = Vector3d::Zero();
+  for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i)
+    if (!scene_.bodies[i].fixed) p += scene_.bodies[i].mass * velocity(y, i);
+  return p;
+}
+
 void SceneModel::check_simultaneous(const contact::ContactPair& pair, const double* y,
                                     double t) const {
   for (const Source& other : sources_) {
@@ -180,14 +195,21 @@ void SceneModel::resolve(const contact::ContactPair& pair, double* y, double t) 
   const double wa = inverse_mass(scene_.bodies[pair.a]);
   const double wb = ground ? 0.0 : inverse_mass(scene_.bodies[pair.b]);
   const double j = -(1.0 + pair.restitution) * closing / (wa + wb);
+  const double energy_before = kinetic_energy(y);
+  const Vector3d momentum_before = momentum(y);
   Vec(y + at(pair.a) + 3) += j * wa * p.normal;
   if (!ground) Vec(y + at(pair.b) + 3) -= j * wb * p.normal;
-  log_.push_back({ContactRecord::Kind::Contact, pair.a, pair.b, t, 0.0});
-  after_bounce_[pair.a] = true;
-  if (!ground) {
-    log_.push_back({ContactRecord::Kind::Contact, pair.b, pair.a, t, 0.0});
-    after_bounce_[pair.b] = true;
+  const bool b_moves = !ground && !scene_.bodies[pair.b].fixed;
+  for (int body : {pair.a, b_moves ? pair.b : -1}) {
+    if (body < 0) continue;
+    BodyEvents& e = trace_.bodies[body];
+    e.contact_times.push_back(t);
+    if (!e.post_velocity) e.post_velocity = plain(velocity(y, body));
+    after_bounce_[body] = true;
   }
+  if (b_moves && !trace_.first_collision)
+    trace_.first_collision = {t, plain(momentum(y) - momentum_before), energy_before,
+                              kinetic_energy(y)};
   for (int body : {pair.a, pair.b}) {
     if (body < 0 || !resting_[body]) continue;
     // An impulse may lift a resting body off the ground, but not press it in.
@@ -229,8 +251,7 @@ void SceneModel::apply(std::size_t k, double t, double* y) {
   const Source& s = sources_[k];
   if (!s.apex) return resolve(s.pair, y, t);
   const Vector3d above = Vector3d(position(y, s.body)) - eigen(scene_.ground->point);
-  log_.push_back(
-      {ContactRecord::Kind::Apex, s.body, -1, t, above.dot(eigen(scene_.ground->normal))});
+  trace_.bodies[s.body].apex_heights.push_back(above.dot(eigen(scene_.ground->normal)));
   after_bounce_[s.body] = false;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
+#include "scene/event_trace.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "scene/scene.hpp"
 #include "scene/state.hpp"
@@ -18,16 +19,6 @@ namespace bb {
 /// (several simultaneous contacts on one body, a body resting under another).
 struct BeyondExactAnswer : std::runtime_error {
   using std::runtime_error::runtime_error;
-};
-
-/// What the reference saw happen, for exact observables.
-struct ContactRecord {
-  enum class Kind { Contact, Apex };
-  Kind kind = Kind::Contact;
-  int body = -1;        ///< the body that touched or peaked
-  int other = -1;       ///< the other body of a contact, -1 for the ground or an apex
-  double time = 0.0;    ///< seconds
-  double height = 0.0;  ///< apex: height of the body's lowest point above the ground, metres
 };
 
 class SceneModel : public HybridModel {
@@ -52,7 +43,8 @@ class SceneModel : public HybridModel {
   /// body resting on the ground that is pushed into it bounces off it there and then.
   void apply_impulse(const Impulse& impulse, double t, double* y);
 
-  const std::vector<ContactRecord>& log() const { return log_; }
+  /// Contacts, apexes and the first collision's balance, each at its located time.
+  const EventTrace& trace() const { return trace_; }
   /// A ground bounce whose rebound would keep the body off the ground for less than this
   /// many seconds leaves it resting on the ground instead (ending a geometric series of
   /// ever smaller bounces): a millionth of the sample interval.
@@ -67,6 +59,8 @@ class SceneModel : public HybridModel {
     int body = -1;  ///< the apex's body
     contact::ContactPair pair;
   };
+  double kinetic_energy(const double* y) const;     ///< J, of every moving body
+  Eigen::Vector3d momentum(const double* y) const;  ///< N s, of every moving body
   contact::Proximity proximity(const contact::ContactPair& pair, const double* y) const;
   /// Newton's restitution along the contact normal; the ground and fixed bodies do not move.
   void resolve(const contact::ContactPair& pair, double* y, double t);
@@ -77,7 +71,7 @@ class SceneModel : public HybridModel {
   std::vector<Source> sources_;
   std::vector<bool> resting_;       ///< per body: resting on the ground
   std::vector<bool> after_bounce_;  ///< per body: an apex is awaited
-  std::vector<ContactRecord> log_;
+  EventTrace trace_;
 };
 
 }  // namespace bb

@@ -1,0 +1,110 @@
+#include "metrics/step_observer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bb {
+
+namespace {
+
+Eigen::Vector3d eigen(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+Eigen::Quaterniond eigen(const Quat& q) {
+  return {q.w, q.x, q.y, q.z};
+}
+
+double radius(const Body& b) {
+  return b.shape == Shape::Sphere ? b.radius : 0.0;
+}
+
+double kinetic_energy(const Scene& scene, const State& s) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!scene.bodies[i].fixed) e += 0.5 * scene.bodies[i].mass * dot(s[i].velocity, s[i].velocity);
+  return e;
+}
+
+Vec3 momentum(const Scene& scene, const State& s) {
+  Vec3 p;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!scene.bodies[i].fixed) p += s[i].velocity * scene.bodies[i].mass;
+  return p;
+}
+
+}  // namespace
+
+StepObserver::StepObserver(const Scene& scene)
+    : scene_(scene),
+      pairs_(contact::contact_pairs(scene)),
+      closing_(pairs_.size(), 0.0),
+      rising_(scene.bodies.size(), false),
+      bounced_(scene.bodies.size(), false) {
+  trace_.bodies.resize(scene.bodies.size());
+}
+
+void StepObserver::observe(double t, const State& s) {
+  if (!active()) return;
+  const double dt = t - previous_t_;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const contact::ContactPair& pair = pairs_[k];
+    const int b = pair.ground() ? pair.a : pair.b;
+    const contact::Proximity p = contact::measure(scene_, pair, eigen(s[pair.a].position),
+                                                  eigen(s[b].position), eigen(s[b].orientation));
+    const bool b_moves = !pair.ground() && !scene_.bodies[pair.b].fixed;
+    const Eigen::Vector3d relative =
+        eigen(s[pair.a].velocity) - (b_moves ? eigen(s[pair.b].velocity) : Eigen::Vector3d::Zero());
+    const double closing = -relative.dot(p.normal);
+    if (p.gap < 0.0) {
+      BodyEvents& a = trace_.bodies[pair.a];
+      a.max_penetration = std::max(a.max_penetration, -p.gap);
+      if (b_moves)
+        trace_.bodies[pair.b].max_penetration =
+            std::max(trace_.bodies[pair.b].max_penetration, -p.gap);
+    }
+    // A contact: close, approaching at the last step, no longer approaching at this one.
+    // "Close" allows for the distance the approach covers in two steps: a bounce may turn
+    // a body around before it reaches the surface.
+    const double near = 2.0 * std::max(closing_[k], 0.0) * dt + 0.1 * radius(scene_.bodies[pair.a]);
+    if (!first_ && closing_[k] > 0.0 && closing <= 0.0 && p.gap < near) {
+      for (int body : {pair.a, b_moves ? pair.b : -1}) {
+        if (body < 0) continue;
+        BodyEvents& e = trace_.bodies[body];
+        e.contact_times.push_back(t);
+        if (!e.post_velocity) e.post_velocity = s[body].velocity;
+        bounced_[body] = true;
+      }
+      if (b_moves && !trace_.first_collision) {
+        // Gravity adds m g dt to every moving body over the step; the rest is the collision's.
+        double mass = 0.0;
+        for (const Body& body : scene_.bodies) mass += body.fixed ? 0.0 : body.mass;
+        trace_.first_collision = {
+            t, momentum(scene_, s) - momentum(scene_, previous_) - scene_.gravity * (mass * dt),
+            kinetic_energy(scene_, previous_), kinetic_energy(scene_, s)};
+      }
+    }
+    closing_[k] = closing;
+  }
+  // Apexes: a body that bounced stops rising above the ground.
+  if (scene_.ground) {
+    const Eigen::Vector3d n = eigen(scene_.ground->normal), ground = eigen(scene_.ground->point);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (scene_.bodies[i].fixed) continue;
+      const bool rising = eigen(s[i].velocity).dot(n) > 0.0;
+      if (!first_ && rising_[i] && !rising && bounced_[i]) {
+        // The apex lies between the two steps: the higher of them is the one seen.
+        const double now = (eigen(s[i].position) - ground).dot(n);
+        const double before = (eigen(previous_[i].position) - ground).dot(n);
+        trace_.bodies[i].apex_heights.push_back(std::max(now, before));
+        bounced_[i] = false;
+      }
+      rising_[i] = rising;
+    }
+  }
+  previous_ = s;
+  previous_t_ = t;
+  first_ = false;
+}
+
+}  // namespace bb

@@ -1,0 +1,36 @@
+// Watches a fixed-step run at every step and finds its contacts and apexes from the
+// states alone, the way a viewer of the run would: a contact is a step where two things
+// that are close stop approaching, an apex a step where a body stops rising.
+#pragma once
+
+#include <vector>
+
+#include "contact/contact_pairs.hpp"
+#include "scene/event_trace.hpp"
+#include "scene/scene.hpp"
+#include "scene/state.hpp"
+
+namespace bb {
+
+class StepObserver {
+ public:
+  explicit StepObserver(const Scene& scene);
+  /// The state at time t (seconds), after every step, starting with t = 0.
+  void observe(double t, const State& state);
+  const EventTrace& trace() const { return trace_; }
+  /// False when the scene has nothing to touch: observing costs nothing then.
+  bool active() const { return !pairs_.empty(); }
+
+ private:
+  const Scene& scene_;
+  std::vector<contact::ContactPair> pairs_;
+  std::vector<double> closing_;  ///< per pair: normal speed of approach at the last step
+  std::vector<bool> rising_;     ///< per body: moving away from the ground at the last step
+  std::vector<bool> bounced_;    ///< per body: a contact happened since its last apex
+  State previous_;
+  double previous_t_ = 0.0;
+  bool first_ = true;
+  EventTrace trace_;
+};
+
+}  // namespace bb

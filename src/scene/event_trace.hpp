@@ -1,0 +1,36 @@
+// What happened to each body during a run, at the resolution the backend has: contacts,
+// apexes after them, the velocity right after the first contact, the deepest overlap.
+// Fixed-step backends get it from their state at every step (StepObserver); the
+// reference reports its located events exactly.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "scene/vec3.hpp"
+
+namespace bb {
+
+struct BodyEvents {
+  std::vector<double> contact_times;  ///< seconds, every contact of the body, in order
+  /// Height of the centre above the ground at each apex after a contact, metres.
+  std::vector<double> apex_heights;
+  std::optional<Vec3> post_velocity;  ///< m/s, right after the body's first contact
+  double max_penetration = 0.0;       ///< metres: the deepest overlap seen (0: none)
+};
+
+/// Momentum and kinetic energy of the whole scene just before and just after the first
+/// contact between two moving bodies; the difference is what the collision changed.
+struct CollisionBalance {
+  double time = 0.0;                   ///< seconds
+  Vec3 momentum_change;                ///< N s, less gravity's impulse over the step
+  double kinetic_energy_before = 0.0;  ///< J
+  double kinetic_energy_after = 0.0;   ///< J
+};
+
+struct EventTrace {
+  std::vector<BodyEvents> bodies;  ///< one per body, in scene order
+  std::optional<CollisionBalance> first_collision;
+};
+
+}  // namespace bb

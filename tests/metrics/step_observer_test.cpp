@@ -1,0 +1,74 @@
+// Events found from a fixed-step run's states agree with the reference's located events
+// to within what one step can resolve.
+#include "metrics/step_observer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "course/course_backend.hpp"
+#include "reference/scene_model.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+const char* kDrop = R"(name = "drop"
+dims = 2
+duration = 6.0
+sample = 0.0166666666666666667
+dt = [0.0166666666666666667, 0.00104166666666666667]
+report_dt = 0.0166666666666666667
+
+[ground]
+restitution = 0.8
+
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 10.0, 0.0]
+)";
+
+EventTrace observed(const Scene& scene, double dt) {
+  const CourseBackend backend({"course", "semi-implicit-euler", "mirror", "clamp"});
+  auto sim = backend.start(scene, dt);
+  StepObserver observer(scene);
+  State s(scene.bodies.size());
+  sim->read(s);
+  observer.observe(0.0, s);
+  for (long n = 1; n <= std::lround(scene.duration / dt); ++n) {
+    sim->step();
+    sim->read(s);
+    observer.observe(static_cast<double>(n) * dt, s);
+  }
+  return observer.trace();
+}
+
+EventTrace exact(const Scene& scene) {
+  SceneModel model(scene);
+  HybridIntegrator integrator(model, {}, model.initial_state());
+  integrator.advance_to(scene.duration);
+  return model.trace();
+}
+
+TEST(StepObserver, ContactsAndApexesConvergeToTheReferencesAsDtShrinks) {
+  const Scene scene = test::scene_from(kDrop);
+  const BodyEvents truth = exact(scene).bodies[0];
+  ASSERT_EQ(truth.contact_times.size(), 3u);
+  double previous_error = 1e300;
+  for (double dt : scene.dt) {
+    const BodyEvents seen = observed(scene, dt).bodies[0];
+    ASSERT_EQ(seen.contact_times.size(), truth.contact_times.size()) << dt;
+    ASSERT_EQ(seen.apex_heights.size(), truth.apex_heights.size()) << dt;
+    // The first contact is found at the step that turns the ball around: within a step.
+    EXPECT_NEAR(seen.contact_times[0], truth.contact_times[0], 1.01 * dt);
+    const double error = std::abs(seen.apex_heights[0] - truth.apex_heights[0]);
+    EXPECT_LT(error, previous_error) << dt;
+    previous_error = error;
+    // `mirror` puts the ball back above the floor within the step: no state shows overlap.
+    EXPECT_EQ(seen.max_penetration, 0.0);
+  }
+  EXPECT_LT(previous_error, 0.05);
+}
+
+}  // namespace
+}  // namespace bb
