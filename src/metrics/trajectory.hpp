@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "scene/event_trace.hpp"
 #include "scene/state.hpp"
 
 namespace bb {
@@ -10,6 +11,8 @@ namespace bb {
 struct Trajectory {
   std::vector<double> times;  ///< seconds, j * sample
   std::vector<State> states;  ///< one per time
+  /// Contacts and apexes: found at every step, or located exactly by the reference.
+  EventTrace events;
 };
 
 }  // namespace bb

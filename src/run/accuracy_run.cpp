@@ -2,6 +2,7 @@
 
 #include <new>
 
+#include "metrics/step_observer.hpp"
 #include "run/divergence.hpp"
 #include "scene/motion.hpp"
 
@@ -34,8 +35,16 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
     const double initial_energy = total_energy(scene, state);
     record.trajectory.times.push_back(0.0);
     record.trajectory.states.push_back(state);
+    // Contacts and apexes are watched at every step, not only at the samples.
+    StepObserver observer(scene);
+    observer.observe(0.0, state);
     for (int j = 1; j <= samples; ++j) {
-      for (int k = 0; k < per_sample; ++k) sim->step();
+      for (int k = 1; k <= per_sample; ++k) {
+        sim->step();
+        if (!observer.active()) continue;
+        sim->read(state);
+        observer.observe(static_cast<double>(record.steps + k) * dt, state);
+      }
       record.steps += per_sample;
       sim->read(state);
       // Simulated time is a step count times dt, never a running sum.
@@ -50,6 +59,7 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
       }
     }
     if (auto internal = sim->internal_steps()) record.steps = *internal;
+    record.trajectory.events = sim->exact_events().value_or(observer.trace());
   } catch (const std::bad_alloc&) {
     record.status = RunStatus::Crashed;
     record.reason = "out of memory";

@@ -65,6 +65,47 @@ Vec3 get_vec(Reader& r) {
   return {x, y, z};
 }
 
+void put(Writer& w, const std::vector<double>& values) {
+  w.raw<std::uint64_t>(values.size());
+  for (double v : values) w.raw(v);
+}
+std::vector<double> get_values(Reader& r) {
+  std::vector<double> out(r.raw<std::uint64_t>());
+  for (double& v : out) v = r.raw<double>();
+  return out;
+}
+
+void put(Writer& w, const EventTrace& events) {
+  w.raw<std::uint64_t>(events.bodies.size());
+  for (const BodyEvents& b : events.bodies) {
+    put(w, b.contact_times), put(w, b.apex_heights);
+    w.raw<char>(b.post_velocity.has_value());
+    if (b.post_velocity) put(w, *b.post_velocity);
+    w.raw(b.max_penetration);
+  }
+  w.raw<char>(events.first_collision.has_value());
+  if (const auto& c = events.first_collision) {
+    w.raw(c->time), put(w, c->momentum_change);
+    w.raw(c->kinetic_energy_before), w.raw(c->kinetic_energy_after);
+  }
+}
+EventTrace get_events(Reader& r) {
+  EventTrace events;
+  events.bodies.resize(r.raw<std::uint64_t>());
+  for (BodyEvents& b : events.bodies) {
+    b.contact_times = get_values(r), b.apex_heights = get_values(r);
+    if (r.raw<char>()) b.post_velocity = get_vec(r);
+    b.max_penetration = r.raw<double>();
+  }
+  if (r.raw<char>()) {
+    CollisionBalance c;
+    c.time = r.raw<double>(), c.momentum_change = get_vec(r);
+    c.kinetic_energy_before = r.raw<double>(), c.kinetic_energy_after = r.raw<double>();
+    events.first_collision = c;
+  }
+  return events;
+}
+
 }  // namespace
 
 std::string encode(const RunRecord& run) {
@@ -94,6 +135,7 @@ std::string encode(const RunRecord& run) {
           w.raw(b.orientation.z);
     }
   }
+  put(w, t.events);
   return w.take();
 }
 
@@ -127,6 +169,7 @@ RunRecord decode_run(const std::string& bytes) {
     }
     run.trajectory.states.push_back(std::move(state));
   }
+  run.trajectory.events = get_events(r);
   return run;
 }
 

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "scene/event_trace.hpp"
 #include "scene/features.hpp"
 #include "scene/scene.hpp"
 #include "scene/state.hpp"
@@ -30,6 +31,9 @@ class Simulation {
   virtual void read(State& out) const = 0;
   /// The engine settings this run used.
   virtual Settings settings() const { return {}; }
+  /// Contacts and apexes located exactly (the reference); nullopt for a backend whose
+  /// events the runner finds from its state at every step.
+  virtual std::optional<EventTrace> exact_events() const { return std::nullopt; }
   /// Steps an adaptive solver took internally so far; nullopt for fixed-step backends.
   virtual std::optional<long> internal_steps() const { return std::nullopt; }
 };
