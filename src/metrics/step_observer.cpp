@@ -80,8 +80,12 @@ void StepObserver::observe(double t, const State& s) {
         double mass = 0.0;
         for (const Body& body : scene_.bodies) mass += body.fixed ? 0.0 : body.mass;
         trace_.first_collision = {
-            t, momentum(scene_, s) - momentum(scene_, previous_) - scene_.gravity * (mass * dt),
-            kinetic_energy(scene_, previous_), kinetic_energy(scene_, s)};
+            pair.a,
+            pair.b,
+            t,
+            momentum(scene_, s) - momentum(scene_, previous_) - scene_.gravity * (mass * dt),
+            kinetic_energy(scene_, previous_),
+            kinetic_energy(scene_, s)};
       }
     }
     closing_[k] = closing;

@@ -208,8 +208,8 @@ void SceneModel::resolve(const contact::ContactPair& pair, double* y, double t) 
     after_bounce_[body] = true;
   }
   if (b_moves && !trace_.first_collision)
-    trace_.first_collision = {t, plain(momentum(y) - momentum_before), energy_before,
-                              kinetic_energy(y)};
+    trace_.first_collision = {
+        pair.a, pair.b, t, plain(momentum(y) - momentum_before), energy_before, kinetic_energy(y)};
   for (int body : {pair.a, pair.b}) {
     if (body < 0 || !resting_[body]) continue;
     // An impulse may lift a resting body off the ground, but not press it in.

@@ -22,6 +22,8 @@ struct BodyEvents {
 /// Momentum and kinetic energy of the whole scene just before and just after the first
 /// contact between two moving bodies; the difference is what the collision changed.
 struct CollisionBalance {
+  int body_a = -1;  ///< the two bodies that collide
+  int body_b = -1;
   double time = 0.0;                   ///< seconds
   Vec3 momentum_change;                ///< N s, less gravity's impulse over the step
   double kinetic_energy_before = 0.0;  ///< J

@@ -1,0 +1,43 @@
+// Event observables read the n-th event, say why when there is none, and refuse to guess.
+#include "metrics/event_observables.hpp"
+
+#include <gtest/gtest.h>
+
+namespace bb {
+namespace {
+
+Observe of(const std::string& kind, int body, int n = 0) {
+  Observe o;
+  o.kind = kind, o.body = body, o.n = n;
+  return o;
+}
+
+TEST(EventObservables, CountedKindsReadTheNthEventOrSayHowManyThereWere) {
+  EventTrace t;
+  t.bodies.resize(2);
+  t.bodies[0].contact_times = {1.0, 2.5};
+  t.bodies[0].apex_heights = {6.08};
+  t.bodies[0].post_velocity = Vec3{3.0, 4.0, 0.0};
+  t.bodies[0].max_penetration = 0.02;
+  EXPECT_EQ(*measure_event(of("contact_time", 0, 2), t)->value, 2.5);
+  EXPECT_EQ(*measure_event(of("bounce_apex", 0, 1), t)->value, 6.08);
+  const auto third = measure_event(of("contact_time", 0, 3), t);
+  EXPECT_FALSE(third->value);
+  EXPECT_NE(third->note.find("only 2 contacts"), std::string::npos);
+  EXPECT_EQ(*measure_event(of("post_velocity", 0), t)->value, 5.0);
+  EXPECT_EQ(*measure_event(of("max_penetration", 0), t)->value, 0.02);
+  EXPECT_FALSE(measure_event(of("post_velocity", 1), t)->value);
+  EXPECT_FALSE(measure_event(of("final_speed", 0), t).has_value());
+}
+
+TEST(EventObservables, TheFirstCollisionsBalanceBelongsToItsTwoBodies) {
+  EventTrace t;
+  t.bodies.resize(3);
+  t.first_collision = CollisionBalance{0, 1, 0.5, {0.0, 3.0, 4.0}, 10.0, 7.5};
+  EXPECT_EQ(*measure_event(of("momentum_change", 1), t)->value, 5.0);
+  EXPECT_EQ(*measure_event(of("energy_change", 0), t)->value, -2.5);
+  EXPECT_FALSE(measure_event(of("energy_change", 2), t)->value);
+}
+
+}  // namespace
+}  // namespace bb
