@@ -3,6 +3,7 @@
 #include <new>
 
 #include "metrics/step_observer.hpp"
+#include "reference/scene_model.hpp"
 #include "run/divergence.hpp"
 #include "scene/motion.hpp"
 
@@ -60,6 +61,10 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
     }
     if (auto internal = sim->internal_steps()) record.steps = *internal;
     record.trajectory.events = sim->exact_events().value_or(observer.trace());
+  } catch (const BeyondExactAnswer& e) {
+    // A scene past what the reference answers exactly is unsupported, with the reason.
+    record.status = RunStatus::Unsupported;
+    record.reason = e.what();
   } catch (const std::bad_alloc&) {
     record.status = RunStatus::Crashed;
     record.reason = "out of memory";
