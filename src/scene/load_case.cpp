@@ -9,6 +9,7 @@
 
 #include "scene/load_parts.hpp"
 #include "scene/text.hpp"
+#include "scene/toml_depth.hpp"
 
 namespace bb {
 
@@ -120,6 +121,8 @@ void check_size(const TomlReader& root, const Scene& scene) {
 }  // namespace
 
 Scene parse_case(std::string_view text, const std::string& file) {
+  // toml++ recurses on key parts and nesting: bound them before it sees the text.
+  check_toml_depth(text, file);
   toml::table table;
   try {
     table = toml::parse(text, file);
