@@ -1,6 +1,9 @@
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "cli/commands.hpp"
+#include "cli/output_folder.hpp"
 #include "report/atomic_file.hpp"
 #include "report/format.hpp"
 
@@ -71,6 +74,12 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
                   const RunOptions& options) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
+  for (const Scene& scene : scenes) check_run_options(scene, options);
+  // The JUnit file's folder is probed before the runs, not found unwritable after them.
+  if (!junit.empty()) {
+    const std::string folder = std::filesystem::path(junit).parent_path().string();
+    check_writable(folder.empty() ? "." : folder);
+  }
   std::vector<CaseResults> all;
   bool failed = false;
   for (const Scene& scene : scenes) {

@@ -4,6 +4,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/folder_lock.hpp"
+#include "cli/output_folder.hpp"
 #include "cli/progress.hpp"
 #include "report/atomic_file.hpp"
 #include "report/format.hpp"
@@ -76,7 +77,10 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
                    const RunOptions& options) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
+  check_before_work(scenes, options, out);
   const FolderLock lock(out);
+  // The new report is built beside the old one and switched in whole.
+  ReportFolder folder(out);
   int units = 0;
   for (const Scene& scene : scenes)
     units += progress_units(scene, registry, options) +
@@ -95,10 +99,14 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
   // Pages are written only when every case has run, and a signal waits until all are.
   {
     const DeferSignals writing;
-    for (const CaseResults& r : all) write_case_outputs(r, out);
-    write_file_atomically(out + "/README.md", index_page(all));
+    FileBatch batch(folder.staging());
+    for (const CaseResults& r : all) write_case_outputs(r, batch);
+    batch.write("README.md", index_page(all));
+    batch.commit();
+    folder.commit();
   }
   fmt::print("written: {}/README.md and one page per case\n", out);
+  stop_if_interrupted_after("the report in " + out);
   return kExitOk;
 }
 

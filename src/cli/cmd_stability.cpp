@@ -27,6 +27,7 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
                         "--backends names '" + b + "'; the stability search runs: " +
                             joined(known) + " (not the adaptive reference)");
   }
+  check_before_work(scenes, {}, out);
   const FolderLock lock(out);
   for (const Scene& scene : scenes) {
     Progress progress(static_cast<int>(backends_for(scene, registry).all.size()));
@@ -40,6 +41,7 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
       const DeferSignals writing;
       write_file_atomically(out + "/" + scene.name + ".json", results_json(results).dump(2) + "\n");
     }
+    stop_if_interrupted_after(out + "/" + scene.name + ".json");
     fmt::print(
         "{} - {}: largest stable step, dt from {:g} s to {:g} s\n\n{}\nwritten: {}/{}.json\n\n",
         scene.name, scene.title, scene.stability.dt_min, scene.stability.dt_max,

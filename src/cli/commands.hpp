@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "report/atomic_file.hpp"
 #include "run/case_runner.hpp"
 
 namespace bb::cli {
@@ -19,8 +20,15 @@ std::vector<Scene> load_cases(const std::vector<std::string>& paths);
 /// The bundled suite's folder.
 std::string bundled_cases_folder();
 
-/// Writes <dir>/<case>.json, .csv and .md, each through a temporary file.
-void write_case_outputs(const CaseResults& results, const std::string& dir);
+/// Writes <case>.json, .csv, .md and the plots into `batch` (renamed into place only when
+/// the batch is committed).
+void write_case_outputs(const CaseResults& results, FileBatch& batch);
+
+/// Every check that can fail before work starts, for every scene: --dt and --backends
+/// name what the case has, every output name fits; then the output folder is created (when
+/// `out` is not empty), probed for writing and cleared of dead runs' temporaries.
+void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options,
+                       const std::string& out);
 
 int list_command(const std::vector<std::string>& paths);
 int run_command(const std::vector<std::string>& paths, const std::string& out,

@@ -109,10 +109,8 @@ int main(int argc, char** argv) {
     if (*stability) return bb::cli::stability_command(cases, out, options);
     if (*check) return bb::cli::check_command(cases, junit, options);
   } catch (const bb::Interrupted& e) {
-    fmt::print(stderr,
-               "\nbeachball: interrupted by signal {}, {}; nothing more was written and earlier "
-               "outputs are as they were\n",
-               bb::interrupt_signal(), e.what());
+    fmt::print(stderr, "\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(),
+               e.what());
     return 128 + bb::interrupt_signal();
   } catch (const bb::CaseError& e) {
     fmt::print(stderr, "beachball: {}\n", e.what());

@@ -69,6 +69,17 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
     if (!plots.trajectory.empty()) out += "![trajectories](" + plots.trajectory + ")\n\n";
     if (!plots.energy.empty()) out += "![energy](" + plots.energy + ")\n";
   }
+  if (!plots.error.empty()) {
+    out += fmt::format("\n## Distance from the reference at report_dt = {} s\n\n",
+                       format_dt(scene.report_dt));
+    out +=
+        "Each backend's largest position distance from the reference, over its bodies, against "
+        "time on a log scale: where and when each method parts from the reference. After a "
+        "bounce this distance is dominated by the bounce's timing (a ball that turns a step "
+        "late is far from the reference while both fly); the contact-time and apex observables "
+        "measure the bounce itself.\n\n![distance from the reference](" +
+        plots.error + ")\n";
+  }
 
   out += "\n## Work precision\n\n";
   out +=

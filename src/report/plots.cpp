@@ -4,7 +4,9 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -41,33 +43,50 @@ bool gnuplot_available() {
   return available;
 }
 
-/// Runs `script` (which reads `data`) and moves the SVG into `target`. Returns an error, or "".
-std::string draw(const std::string& script_body, const std::string& data, const std::string& target,
-                 int height = 600) {
+/// Whether `path` holds a whole SVG document (gnuplot may exit 0 on a full disk).
+bool complete_svg(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  if (!in || size < 7) return false;
+  in.seekg(std::max<std::streamoff>(0, size - 64));
+  const std::string tail((std::istreambuf_iterator<char>(in)), {});
+  return tail.find("</svg>") != std::string::npos;
+}
+
+/// Runs `script` (which reads `data`) and writes the SVG as `name` into `batch`. Returns
+/// an error for a plot there is nothing to draw; throws WriteError when a file could not be
+/// written.
+std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
+                 const std::string& name, int height = 600) {
   char folder_template[] = "/tmp/beachball-plot-XXXXXX";
   const char* folder = mkdtemp(folder_template);
-  if (folder == nullptr) return "cannot make a temporary folder";
+  if (folder == nullptr) throw WriteError("/tmp/beachball-plot-XXXXXX", std::strerror(errno));
   const fs::path temp(folder);
-  const std::string partial = target + ".tmp." + std::to_string(getpid());
-  std::ofstream(temp / "data.txt") << data;
-  std::ofstream(temp / "plot.gp") << terminal(height) << "set output " << quote(partial) << "\n"
-                                  << "data = " << quote((temp / "data.txt").string()) << "\n"
-                                  << script_body;
+  // The temporary folder goes, whatever happens.
+  struct Cleanup {
+    fs::path path;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  } cleanup{temp};
+  const std::string output = batch.path_for(name);
+  write_whole_file((temp / "data.txt").string(), data);
+  write_whole_file((temp / "plot.gp").string(),
+                   terminal(height) + "set output " + quote(output) + "\n" +
+                       "data = " + quote((temp / "data.txt").string()) + "\n" + script_body);
   const std::string command =
       "gnuplot " + (temp / "plot.gp").string() + " 2> " + (temp / "log.txt").string();
   const int status = std::system(command.c_str());
-  std::string error;
-  if (status != 0) {
+  if (status != 0 || !complete_svg(output)) {
     std::ifstream log(temp / "log.txt");
-    error = "gnuplot failed: " + std::string(std::istreambuf_iterator<char>(log), {});
-    std::remove(partial.c_str());
-  } else {
-    std::error_code ec;
-    fs::rename(partial, target, ec);
-    if (ec) error = "cannot move " + partial + ": " + ec.message();
+    const std::string said(std::istreambuf_iterator<char>(log), {});
+    std::remove(output.c_str());
+    throw WriteError(batch.folder() + "/" + name,
+                     status != 0 ? "gnuplot failed: " + said
+                                 : "gnuplot left an incomplete SVG (is the disk full?)");
   }
-  fs::remove_all(temp);
-  return error;
+  return "";
 }
 
 std::string metric_label(const std::string& metric) {
@@ -78,7 +97,7 @@ std::string metric_label(const std::string& metric) {
 }
 
 std::string work_precision_plot(const CaseResults& results, const std::string& metric,
-                                const std::string& target) {
+                                FileBatch& batch, const std::string& name) {
   const std::vector<WorkSeries> series = work_series(results, metric);
   const bool timed =
       !series.empty() && !series.front().points.empty() && series.front().points.front().cost;
@@ -109,7 +128,7 @@ std::string work_precision_plot(const CaseResults& results, const std::string& m
                   : "dt (s)"),
       quote(metric_label(metric)),
       quote(results.scene->name + ": work-precision over the dt sweep (each marker one dt)"), plot);
-  return draw(script, data, target);
+  return draw(script, data, batch, name);
 }
 
 /// Runs at report_dt that produced samples, the reference first.
@@ -144,7 +163,15 @@ std::string series_line(std::size_t i, int block, const std::string& title) {
       block, i % 13, colour(i - 1), quote(title));
 }
 
-std::string trajectory_plot(const CaseResults& results, const std::string& target) {
+/// The rows "t value" of one series, thinned for drawing.
+std::string series_rows(const std::vector<double>& times, const std::vector<double>& values) {
+  std::string rows;
+  for (std::size_t j : thinned(values, kMaxPlotPoints))
+    rows += fmt::format("{:.9g} {:.9g}\n", times[j], values[j]);
+  return rows;
+}
+
+std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
   const Scene& scene = *results.scene;
   const auto runs = report_runs(results);
   const std::size_t shown = std::min<std::size_t>(scene.bodies.size(), 6);
@@ -162,32 +189,30 @@ std::string trajectory_plot(const CaseResults& results, const std::string& targe
     for (std::size_t i = 0; i < runs.size(); ++i) {
       data += "# " + runs[i]->backend + "\n";
       const Trajectory& t = runs[i]->trajectory;
-      for (std::size_t j = 0; j < t.states.size(); ++j) {
-        const Vec3& p = t.states[j][b].position;
-        data += fmt::format("{:.17g} {:.17g}\n", t.times[j],
-                            axis == 0   ? p.x
-                            : axis == 1 ? p.y
-                                        : p.z);
-      }
-      data += "\n\n";
+      std::vector<double> coordinate;
+      for (const State& s : t.states)
+        coordinate.push_back(axis == 0   ? s[b].position.x
+                             : axis == 1 ? s[b].position.y
+                                         : s[b].position.z);
+      data += series_rows(t.times, coordinate) + "\n\n";
       plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
     }
     script += fmt::format("set xlabel \"t (s)\"\nset ylabel {}\n{}\nunset key\n",
                           quote(scene.bodies[b].name + " " + axis_name + " (m)"), plot);
   }
-  return draw(script + "unset multiplot\n", data, target, 80 + 240 * static_cast<int>(shown));
+  return draw(script + "unset multiplot\n", data, batch, name, 80 + 240 * static_cast<int>(shown));
 }
 
-std::string energy_plot(const CaseResults& results, const std::string& target) {
+std::string energy_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
   const Scene& scene = *results.scene;
   const auto runs = report_runs(results);
   std::string data, plot;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     data += "# " + runs[i]->backend + "\n";
     const Trajectory& t = runs[i]->trajectory;
-    for (std::size_t j = 0; j < t.states.size(); ++j)
-      data += fmt::format("{:.17g} {:.17g}\n", t.times[j], total_energy(scene, t.states[j]));
-    data += "\n\n";
+    std::vector<double> energy;
+    for (const State& s : t.states) energy.push_back(total_energy(scene, s));
+    data += series_rows(t.times, energy) + "\n\n";
     plot += (plot.empty() ? "plot " : ", \\\n     ") +
             series_line(i, static_cast<int>(i), runs[i]->backend);
   }
@@ -195,35 +220,112 @@ std::string energy_plot(const CaseResults& results, const std::string& target) {
       "set grid\nset key outside right top\nset xlabel \"t (s)\"\n"
       "set ylabel \"total energy (J): kinetic + rotational + gravitational\"\nset title {}\n{}\n",
       quote(scene.name + ": energy at report_dt"), plot);
-  return draw(script, data, target);
+  return draw(script, data, batch, name);
+}
+
+/// Each backend's largest position distance from the reference over the bodies, against
+/// time: where the methods part from the reference, and when (a bounce shows as a jump).
+std::string error_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
+  const Trajectory& reference = results.reference_run.trajectory;
+  const auto runs = report_runs(results);
+  std::string data, plot;
+  int block = 0;
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    const Trajectory& t = runs[i]->trajectory;
+    std::vector<double> times, distance;
+    for (std::size_t j = 0; j < t.states.size() && j < reference.states.size(); ++j) {
+      double worst = 0.0;
+      for (std::size_t b = 0; b < t.states[j].size(); ++b)
+        worst = std::max(worst, norm(t.states[j][b].position - reference.states[j][b].position));
+      // A log axis cannot show 0: such points are left out.
+      if (worst <= 0.0) continue;
+      times.push_back(t.times[j]);
+      distance.push_back(worst);
+    }
+    if (distance.empty()) continue;
+    data += "# " + runs[i]->backend + "\n" + series_rows(times, distance) + "\n\n";
+    plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
+  }
+  if (plot.empty()) return "no backend has a trajectory to compare with the reference";
+  const std::string script = fmt::format(
+      "set grid\nset logscale y\nset format y \"%.0e\"\nset key outside right top\n"
+      "set xlabel \"t (s)\"\nset ylabel \"largest position distance from the reference (m)\"\n"
+      "set title {}\n{}\n",
+      quote(results.scene->name + ": distance from the reference at report_dt"), plot);
+  return draw(script, data, batch, name);
 }
 
 }  // namespace
 
-PlotFiles write_plots(const CaseResults& results, const std::string& dir) {
+std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t max_points) {
+  const std::size_t n = values.size();
+  std::vector<std::size_t> keep;
+  if (n <= max_points || max_points < 4) {
+    for (std::size_t j = 0; j < n; ++j) keep.push_back(j);
+    return keep;
+  }
+  // Buckets of equal width; each gives its lowest and highest point, in time order.
+  const std::size_t buckets = max_points / 2 - 1;
+  keep.push_back(0);
+  for (std::size_t k = 0; k < buckets; ++k) {
+    const std::size_t from = 1 + k * (n - 2) / buckets, to = 1 + (k + 1) * (n - 2) / buckets;
+    if (from >= to) continue;
+    std::size_t low = from, high = from;
+    for (std::size_t j = from; j < to; ++j) {
+      if (values[j] < values[low]) low = j;
+      if (values[j] > values[high]) high = j;
+    }
+    keep.push_back(std::min(low, high));
+    if (low != high) keep.push_back(std::max(low, high));
+  }
+  keep.push_back(n - 1);
+  return keep;
+}
+
+namespace {
+
+std::string work_precision_file(const Scene& scene, const std::string& metric) {
+  std::string file = scene.name + "-work-precision-" + metric + ".svg";
+  for (char& c : file)
+    if (c == '/') c = '-';
+  return file;
+}
+
+}  // namespace
+
+std::vector<std::string> plot_file_names(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const std::string& metric : scene.report.metrics)
+    names.push_back(work_precision_file(scene, metric));
+  for (const char* kind : {"-trajectory.svg", "-energy.svg", "-error.svg"})
+    names.push_back(scene.name + kind);
+  return names;
+}
+
+PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
   PlotFiles files;
   if (!gnuplot_available()) {
     files.note = "plots skipped: gnuplot was not found (install gnuplot-nox)";
     return files;
   }
-  const std::string name = results.scene->name;
+  const Scene& scene = *results.scene;
   const auto attempt = [&](const std::string& file, const std::string& error) {
     if (!error.empty()) files.note += (files.note.empty() ? "" : "; ") + file + ": " + error;
     return error.empty();
   };
-  for (const std::string& metric : results.scene->report.metrics) {
-    std::string file = name + "-work-precision-" + metric + ".svg";
-    for (char& c : file)
-      if (c == '/') c = '-';
-    if (attempt(file, work_precision_plot(results, metric, (fs::path(dir) / file).string())))
+  for (const std::string& metric : scene.report.metrics)
+    if (const std::string file = work_precision_file(scene, metric);
+        attempt(file, work_precision_plot(results, metric, batch, file)))
       files.work_precision.push_back({metric, file});
-  }
-  if (const std::string file = name + "-trajectory.svg";
-      attempt(file, trajectory_plot(results, (fs::path(dir) / file).string())))
+  if (const std::string file = scene.name + "-trajectory.svg";
+      attempt(file, trajectory_plot(results, batch, file)))
     files.trajectory = file;
-  if (const std::string file = name + "-energy.svg";
-      attempt(file, energy_plot(results, (fs::path(dir) / file).string())))
+  if (const std::string file = scene.name + "-energy.svg";
+      attempt(file, energy_plot(results, batch, file)))
     files.energy = file;
+  if (const std::string file = scene.name + "-error.svg";
+      attempt(file, error_plot(results, batch, file)))
+    files.error = file;
   return files;
 }
 

@@ -1,10 +1,13 @@
-// The plots of a case, drawn with gnuplot as SVG: work-precision per chosen metric, and
-// the main coordinate and the energy of each body against time at report_dt.
+// The plots of a case, drawn with gnuplot as SVG: work-precision per chosen metric; at
+// report_dt the main coordinate and the energy of each body against time, and each
+// backend's distance from the reference against time (log scale). Long runs are thinned
+// for drawing (each bucket keeps its lowest and highest point) so a page's SVG stays small.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "report/atomic_file.hpp"
 #include "run/results.hpp"
 
 namespace bb {
@@ -14,10 +17,22 @@ struct PlotFiles {
   std::vector<std::pair<std::string, std::string>> work_precision;
   std::string trajectory;  ///< file name, empty when not drawn
   std::string energy;
-  std::string note;  ///< why plots are missing, when they are
+  std::string error;  ///< distance from the reference against time
+  std::string note;   ///< why plots are missing, when they are
 };
 
-/// Draws every plot of the case into `dir` (file names start with the case name).
-PlotFiles write_plots(const CaseResults& results, const std::string& dir);
+/// Most points a series keeps when drawn.
+inline constexpr std::size_t kMaxPlotPoints = 2000;
+
+/// Draws every plot of the case into `batch` (file names start with the case name). A plot
+/// gnuplot could not write completely is a WriteError; gnuplot missing is a note.
+PlotFiles write_plots(const CaseResults& results, FileBatch& batch);
+
+/// The file names write_plots may use for `scene`.
+std::vector<std::string> plot_file_names(const Scene& scene);
+
+/// Indices of the points of `values` to draw: all of them up to `max_points`, else per
+/// bucket the lowest and the highest, in order, and always the first and the last.
+std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t max_points);
 
 }  // namespace bb

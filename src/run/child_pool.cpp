@@ -29,6 +29,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// What an interrupt during the runs leaves: outputs are written only after all runs.
+constexpr const char* kNothingWritten =
+    "; nothing more was written and earlier outputs are as they were";
+
 void write_all(int fd, const std::string& bytes) {
   std::size_t at = 0;
   while (at < bytes.size()) {
@@ -106,7 +110,8 @@ void ChildPool::run() {
 
 void ChildPool::run_in_process() {
   while (!queue_.empty()) {
-    if (interrupt_signal() != 0) throw Interrupted("stopped before " + queue_.front().label);
+    if (interrupt_signal() != 0)
+      throw Interrupted("stopped before " + queue_.front().label + kNothingWritten);
     Job job = std::move(queue_.front());
     queue_.pop_front();
     ChildOutcome outcome;
@@ -160,7 +165,7 @@ void ChildPool::run_isolated() {
       std::string what = active.empty() ? queue_.front().label : active.front().job.label;
       stop_all();
       queue_.clear();
-      throw Interrupted("stopped during " + what);
+      throw Interrupted("stopped during " + what + kNothingWritten);
     }
     while (static_cast<int>(active.size()) < parallel_ && !queue_.empty()) {
       start(std::move(queue_.front()));

@@ -1,6 +1,7 @@
 #include "run/interrupt.hpp"
 
 #include <csignal>
+#include <string>
 
 namespace bb {
 
@@ -21,6 +22,11 @@ void install_interrupt_handlers() {
 
 int interrupt_signal() {
   return arrived;
+}
+
+void stop_if_interrupted_after(const std::string& written) {
+  if (arrived != 0)
+    throw Interrupted(written + " was written in full; the program stopped after it");
 }
 
 DeferSignals::DeferSignals() {

@@ -7,10 +7,15 @@
 
 namespace bb {
 
-/// Thrown when an interrupt stops the work; what() says what was running.
+/// Thrown when an interrupt stops the work; what() says what was running and what the
+/// outputs are now.
 struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// Throws Interrupted when a signal arrived while `written` was being written (signals wait
+/// during writes): the write was finished, and the program stops there.
+void stop_if_interrupted_after(const std::string& written);
 
 /// Routes SIGINT and SIGTERM to a flag instead of ending the process.
 void install_interrupt_handlers();

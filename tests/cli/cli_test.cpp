@@ -165,7 +165,7 @@ TEST(Cli, ReportWritesAnIndexPagesPlotsAndStability) {
       ++images;
       EXPECT_TRUE(fs::exists(out + "/" + file)) << file;
     }
-    EXPECT_EQ(images, 3) << name;  // work precision, trajectory, energy
+    EXPECT_EQ(images, 4) << name;  // work precision, trajectory, energy, error over time
     for (const char* section :
          {"## Stability", "## Work precision", "## Gates", "## Engine settings"})
       EXPECT_NE(md.find(section), std::string::npos) << name << " lacks " << section;

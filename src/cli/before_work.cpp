@@ -1,0 +1,31 @@
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "cli/commands.hpp"
+#include "cli/output_folder.hpp"
+#include "report/format.hpp"
+
+namespace bb::cli {
+
+void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options,
+                       const std::string& out) {
+  for (const Scene& scene : scenes) {
+    check_run_options(scene, options);
+    check_output_names(scene);
+    // Leaving report_dt out is allowed (a quick look at one dt), but the tables say nothing.
+    bool has_report_dt = options.dts.empty();
+    for (double dt : options.dts)
+      has_report_dt = has_report_dt || std::abs(dt - scene.report_dt) <= 1e-9 * dt;
+    if (!has_report_dt)
+      fmt::print(stderr,
+                 "beachball: note: --dt leaves out {}'s report_dt ({} s): its table, plots and "
+                 "gates at report_dt will be empty\n",
+                 scene.name, format_dt(scene.report_dt));
+  }
+  if (out.empty()) return;
+  check_writable(out);
+  remove_stale_temporaries(out);
+}
+
+}  // namespace bb::cli
