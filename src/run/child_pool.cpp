@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -133,9 +134,14 @@ void ChildPool::run_isolated() {
       throw std::runtime_error("cannot make a pipe for a child");
     // Nothing buffered here may be printed again by the child.
     std::fflush(nullptr);
+    const pid_t parent = getpid();
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("cannot start a child process");
     if (pid == 0) {
+      // The child dies with its parent, even a SIGKILLed one; if the parent is already gone
+      // (before prctl took effect), it ends at once.
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(1);
       close(result[0]);
       close(console[0]);
       child_main(job.work, result[1], console[1]);

@@ -17,9 +17,11 @@ struct Outcome {
   std::string out;  ///< stdout and stderr together
 };
 
-/// Runs `beachball ARGS` through the shell and waits for it.
-inline Outcome beachball(const std::string& args) {
-  const std::string command = std::string(BEACHBALL_PROGRAM) + " " + args + " 2>&1";
+/// Runs `beachball ARGS` through the shell and waits for it; `shell_prefix` runs first in
+/// the same shell (a `ulimit`, say), and the program is exec'ed after it.
+inline Outcome beachball(const std::string& args, const std::string& shell_prefix = "") {
+  const std::string command =
+      shell_prefix + " exec " + std::string(BEACHBALL_PROGRAM) + " " + args + " 2>&1";
   Outcome o;
   FILE* pipe = popen(command.c_str(), "r");
   std::array<char, 4096> buffer{};
