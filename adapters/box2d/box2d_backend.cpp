@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "../point_body.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
@@ -34,9 +35,10 @@ class Box2dSimulation : public Simulation {
       def.angularDamping = float(engine_setting(scene, "box2d", "angular_damping"));
       def.allowSleep = false;
       b2Body* body = world_.CreateBody(&def);
-      // No contacts in the scene, so no fixtures: mass and inertia are set directly.
+      // No contacts in the scene, so no fixtures: mass and inertia are set directly. A point
+      // body gets a small sphere's inertia, as in every engine (point_body.hpp).
       if (!b.fixed) {
-        b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(principal_inertia(b).z)};
+        b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z)};
         body->SetMassData(&mass);
       }
       bodies_.push_back(body);
@@ -73,6 +75,7 @@ class Box2dSimulation : public Simulation {
     s.push_back({"precision", std::string("float")});
     s.push_back({"sleeping", false});
     s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
+    add_point_body_setting(scene_, s);
     s.push_back({"max_translation", std::string("2 m per step (b2_maxTranslation, built in)")});
     s.push_back({"max_rotation", std::string("pi/2 rad per step (b2_maxRotation, built in)")});
     return s;

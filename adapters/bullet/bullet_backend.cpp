@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "../point_body.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
@@ -32,9 +33,10 @@ class BulletSimulation : public Simulation {
     const btScalar angular_damping = btScalar(engine_setting(scene, "bullet", "angular_damping"));
     for (const Body& b : scene.bodies) {
       // No contacts in the scene: every body gets an empty shape and collides with nothing.
+      // A point body gets a small sphere's inertia, as in every engine (point_body.hpp).
       const btScalar mass = b.fixed ? btScalar(0) : btScalar(b.mass);
       btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, &empty_shape_,
-                                                    to_bt(principal_inertia(b)));
+                                                    to_bt(engine_inertia(b)));
       info.m_startWorldTransform.setOrigin(to_bt(b.position));
       info.m_startWorldTransform.setRotation(
           btQuaternion(btScalar(b.orientation.x), btScalar(b.orientation.y),
@@ -87,6 +89,7 @@ class BulletSimulation : public Simulation {
     s.push_back({"step", std::string("stepSimulation(dt, 1, dt): one fixed substep")});
     s.push_back({"sleeping", false});
     s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
+    add_point_body_setting(scene_, s);
     s.push_back({"max_angular_speed", std::string("pi/2 rad per step (built into btRigidBody)")});
     return s;
   }

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <vector>
 
+#include "../point_body.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
@@ -66,7 +67,8 @@ class OdeSimulation : public Simulation {
       if (b.fixed) {
         dBodySetKinematic(body);
       } else {
-        const Vec3 inertia = principal_inertia(b);
+        // A point body is a small sphere here: ODE refuses a zero inertia (dMassCheck).
+        const Vec3 inertia = engine_inertia(b);
         dMass mass;
         dMassSetParameters(&mass, b.mass, 0, 0, 0, inertia.x, inertia.y, inertia.z, 0, 0, 0);
         dBodySetMass(body, &mass);
@@ -114,6 +116,7 @@ class OdeSimulation : public Simulation {
     s.push_back({"precision", std::string(sizeof(dReal) == 8 ? "double" : "float")});
     s.push_back({"auto_disable", false});
     s.push_back({"collision", std::string("none (no space, no geoms)")});
+    add_point_body_setting(scene_, s);
     return s;
   }
 

@@ -15,6 +15,19 @@ struct ObservableValue {
   std::string note;  ///< why `value` is empty
 };
 
+/// The observable's value on one run:
+/// - final_speed: |v| at the end of the run (m/s);
+/// - terminal_velocity: |v - wind| at the end of the run (m/s), the speed relative to the
+///   air that tends to the terminal speed; a note where the terminal speed does not apply.
 ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory);
+
+/// The terminal speed of `body`, sqrt(2 m |g| / (rho Cd A)) with A = pi r^2 (m/s), or a
+/// note saying why it does not apply (no drag, no air, no gravity, or a Magnus force).
+ObservableValue terminal_speed(const Scene& scene, const Body& body);
+
+/// What every run's value of `observe` is compared with when a formula gives it from the
+/// scene alone (terminal_velocity: terminal_speed); nullopt when the comparison is with the
+/// reference run's own measurement, as for every other kind.
+std::optional<double> formula_value(const Scene& scene, const Observe& observe);
 
 }  // namespace bb

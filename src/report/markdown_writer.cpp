@@ -47,7 +47,8 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
       "pos final are position_max, position_rms and position_final (m), vel max is "
       "velocity_max (m/s), energy max is energy_max (relative to the initial energy, at "
       "least 1 J). Observables show the value and, in brackets, its difference from the "
-      "reference.\n\n";
+      "reference; for terminal_velocity, on every row, from the terminal speed sqrt(2 m g / "
+      "(rho Cd A)) computed from the scene.\n\n";
   out += render_markdown(summary_table(results, scene.report_dt));
   const auto notes = run_notes(results, scene.report_dt);
   if (!notes.empty()) {

@@ -20,7 +20,9 @@ std::string status_cell(const RunRecord& run) {
 
 std::string observable_cell(const ObservableResult& o, bool is_reference) {
   if (!o.measured.value) return "-";
-  if (is_reference || !o.reference) return format_value(o.measured.value);
+  // The reference row compares with itself, except where a formula gives the value to reach.
+  if (!o.reference || (is_reference && *o.reference == *o.measured.value))
+    return format_value(o.measured.value);
   return format_value(o.measured.value) + " (" + format_value(*o.measured.value - *o.reference) +
          ")";
 }

@@ -53,7 +53,10 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& refere
       r.measured = measure(scene, o, run.trajectory);
     else
       r.measured.note = "run " + status_name(run.status);
-    if (reference.status == RunStatus::Ok)
+    // A kind with a formula (terminal_velocity) is compared with the formula's value.
+    if (const auto formula = formula_value(scene, o))
+      r.reference = formula;
+    else if (reference.status == RunStatus::Ok)
       r.reference = measure(scene, o, reference.trajectory).value;
     run.observables.push_back(r);
   }

@@ -9,7 +9,7 @@ namespace bb {
 /// position_max, position_rms, position_final, velocity_max, energy_max.
 const std::vector<std::string>& error_metric_names();
 
-/// Every observable kind of DESIGN.md ("terminal_velocity", "bounce_apex", ...).
+/// Every observable kind of DESIGN.md ("final_speed", "terminal_velocity", ...).
 const std::vector<std::string>& observable_kinds();
 
 /// Kinds that count events and take an `n` (the n-th bounce, contact, ...).

@@ -108,6 +108,67 @@ TEST(Engines, FloatAndDoubleBulletDifferOnlyByRounding) {
   EXPECT_LT(difference, 5e-3);
 }
 
+/// A setting's text, or "" when `settings` lacks `key` or it is not text.
+std::string text_setting(const Settings& settings, const std::string& key) {
+  for (const auto& [k, v] : settings)
+    if (k == key && std::holds_alternative<std::string>(v)) return std::get<std::string>(v);
+  return "";
+}
+
+// A drag-free 2D fall of a spinning point mass beside a sphere: every engine runs it.
+const char* kPointFall = R"(name = "point_fall"
+dims = 2
+duration = 3.0
+sample = 0.1
+dt = [0.02, 0.01]
+report_dt = 0.01
+
+[[body]]
+name = "grain"
+shape = "point"
+mass = 0.003
+position = [0.0, 20.0, 0.0]
+velocity = [1.5, 4.0, 0.0]
+angular_velocity = [0.0, 0.0, 2.0]
+
+[[body]]
+name = "ball"
+radius = 0.2
+mass = 1.0
+position = [2.0, 20.0, 0.0]
+)";
+
+TEST(Engines, EveryEngineRunsAPointBodyLikeSemiImplicitEuler) {
+  const Scene scene = test::scene_from(kPointFall);
+  const CourseBackend euler(
+      {"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"});
+  ASSERT_FALSE(registry().engines().empty());
+  for (const Backend* backend : registry().engines()) {
+    SCOPED_TRACE(backend->name());
+    ASSERT_EQ(missing_features(*backend, scene), "");
+    const RunRecord run = run_accuracy(*backend, scene, scene.report_dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+    // The engine's own precision: a float engine rounds every step.
+    const std::string precision = text_setting(run.engine_settings, "precision");
+    ASSERT_TRUE(precision == "double" || precision == "float") << precision;
+    const double tolerance = precision == "double" ? 1e-9 : 1e-4;
+    const RunRecord same_method = run_accuracy(euler, scene, scene.report_dt);
+    EXPECT_LT(max_position_difference(run.trajectory, same_method.trajectory), tolerance);
+    // The point really fell: from 20 m, thrown up at 4 m/s, it is below 0 after 3 s.
+    EXPECT_LT(run.trajectory.states.back()[0].position.y, 0.0);
+    const std::string stand_in = text_setting(run.engine_settings, "point_body");
+    EXPECT_NE(stand_in.find("sphere of radius 0.01 m"), std::string::npos) << stand_in;
+    EXPECT_NE(stand_in.find("no collisions"), std::string::npos) << stand_in;
+  }
+}
+
+TEST(Engines, APointBodyStandInIsNamedOnlyWhereThereIsOne) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  for (const Backend* b : registry().engines())
+    EXPECT_EQ(text_setting(b->start(scene, scene.report_dt)->settings(), "point_body"), "")
+        << b->name();
+}
+
 TEST(Engines, SettingsThatChangeResultsAreReported) {
   const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
   for (const Backend* b : registry().engines()) {

@@ -58,7 +58,11 @@ TEST(Cli, RunWritesTheContractAndPrintsEveryBackend) {
     for (const char* key :
          {"position_max", "position_rms", "position_final", "velocity_max", "energy_max"})
       EXPECT_TRUE(run["errors"][key].is_number()) << key;
+    EXPECT_TRUE(run["observables"]["final_speed/elephant"]["value"].is_number());
     EXPECT_TRUE(run["observables"]["terminal_velocity/elephant"]["value"].is_number());
+    // The terminal speed sqrt(2 m g / (rho Cd A)) of the elephant, from the case file.
+    EXPECT_NEAR(run["observables"]["terminal_velocity/elephant"]["reference"].get<double>(),
+                30.4575, 1e-4);
   }
   EXPECT_NEAR(j["order"]["course/rk4"].get<double>(), 4.0, 0.2);
 
