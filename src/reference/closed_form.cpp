@@ -13,7 +13,10 @@ double fall_speed(double vt, double g, double t) {
 }
 
 double fall_distance(double vt, double g, double t) {
-  return vt * vt / g * std::log(std::cosh(g * t / vt));
+  // ln cosh x written as |x| + ln(1 + e^{-2|x|}) - ln 2: cosh overflows past x = 710, which a
+  // light body reaches within a second.
+  const double x = std::abs(g * t / vt);
+  return vt * vt / g * (x + std::log1p(std::exp(-2.0 * x)) - std::log(2.0));
 }
 
 }  // namespace bb::closed_form

@@ -2,6 +2,11 @@
 
 #include <gsl/gsl_version.h>
 
+#include <Eigen/Eigenvalues>
+#include <memory>
+#include <sstream>
+
+#include "reference/air_force_jacobian.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/scene_model.hpp"
 
@@ -9,59 +14,150 @@ namespace bb {
 
 namespace {
 
-/// The scene as a hybrid system (scene_model.hpp), solved by the hybrid integrator: smooth
-/// flight by rk8pd, every contact located as an event and resolved by its law. Each step()
-/// advances to the next multiple of dt exactly; impulses due at a step's start are applied
-/// first, as every backend applies them.
+const char* kEvents = "contacts located as events to 1e-12 s";
+
+/// The fastest rate (1/s) at which the air changes a body's velocity at state y: the
+/// largest singular value of dF/dv / m over the moving bodies. Drag on a light body makes
+/// it large; it is what limits an explicit method's step.
+double fastest_rate(const Scene& scene, const SceneModel& model, const std::vector<double>& y) {
+  State state(scene.bodies.size());
+  model.read(y.data(), state);
+  double rate = 0.0;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    const Body& body = scene.bodies[i];
+    if (body.fixed) continue;
+    const Vec3& v = state[i].velocity;
+    const Vec3& w = state[i].angular_velocity;
+    const AirForceJacobian j = air_force_jacobian(scene, body, {v.x, v.y, v.z}, {w.x, w.y, w.z});
+    rate = std::max(rate, j.by_velocity.operatorNorm() / body.mass);
+  }
+  return rate;
+}
+
+std::string number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+/// The scene as a hybrid system (scene_model.hpp), solved by the hybrid integrator. Impulses
+/// due at a step's start are applied first, as every backend applies them.
 class ReferenceSimulation : public Simulation {
  public:
-  ReferenceSimulation(const Scene& scene, double dt, double tolerance)
-      : scene_(scene),
-        dt_(dt),
-        tolerance_(tolerance),
-        model_(scene),
-        integrator_(model_, options(tolerance), model_.initial_state()) {}
+  ReferenceSimulation(const Scene& scene, double dt, double tolerance, double max_step)
+      : scene_(scene), dt_(dt), tolerance_(tolerance), max_step_(max_step) {
+    start_over(gsl_odeiv2_step_rk8pd);
+    check_stiffness();
+  }
 
   void step() override {
-    const double start = static_cast<double>(steps_) * dt_;
-    // Targets are n * dt, never an accumulated sum.
-    const double target = static_cast<double>(++steps_) * dt_;
-    while (next_impulse_ < scene_.impulses.size() && scene_.impulses[next_impulse_].time < target) {
-      const Impulse& impulse = scene_.impulses[next_impulse_++];
-      // An impulse between samples is applied at its own time (a multiple of every dt).
-      integrator_.advance_to(std::max(start, impulse.time));
-      integrator_.change_state(
-          [&](double* y) { model_.apply_impulse(impulse, integrator_.time(), y); });
+    const long target_step = steps_ + 1;
+    try {
+      advance_to_step(target_step);
+    } catch (const BeyondExactAnswer&) {
+      throw;
+    } catch (const std::runtime_error& e) {
+      if (implicit_) throw;
+      // The explicit method failed: solve again from the start with the implicit one.
+      switch_note_ = "rk8pd failed (" + std::string(e.what()) + "); solved from t = 0 by msbdf";
+      start_over(gsl_odeiv2_step_msbdf);
+      advance_to_step(target_step);
     }
-    integrator_.advance_to(target);
+    check_stiffness();
   }
 
-  void read(State& out) const override { model_.read(integrator_.state().data(), out); }
+  void read(State& out) const override { model_->read(integrator_->state().data(), out); }
 
   Settings settings() const override {
-    return {{"method", ReferenceBackend::method()},
-            {"tolerance", tolerance_},
-            {"event_tolerance", options(tolerance_).event_tolerance},
-            {"rest_rule", "a ground bounce whose flight would last less than " +
-                              std::to_string(model_.rest_flight_time()) +
-                              " s (1e-6 of a sample) leaves the body resting on the ground"}};
+    Settings s = {{"method", method()},
+                  {"tolerance", tolerance_},
+                  {"event_tolerance", options(gsl_odeiv2_step_rk8pd).event_tolerance},
+                  {"stiffness_rule",
+                   "msbdf with the analytic Jacobian from where the fastest "
+                   "rate times the sample exceeds " +
+                       number(kStiffRateTimesSample)},
+                  {"rest_rule", "a ground bounce whose flight would last less than " +
+                                    number(model_->rest_flight_time()) +
+                                    " s (1e-6 of a sample) leaves the body resting on the ground"}};
+    if (max_step_ > 0.0) s.push_back({"max_step", max_step_});
+    return s;
   }
-  std::optional<EventTrace> exact_events() const override { return model_.trace(); }
-  std::optional<long> internal_steps() const override { return integrator_.steps(); }
+  std::optional<EventTrace> exact_events() const override { return model_->trace(); }
+  std::optional<long> internal_steps() const override {
+    return earlier_steps_ + integrator_->steps();
+  }
 
  private:
-  static HybridOptions options(double tolerance) {
+  std::string method() const {
+    if (!implicit_) return std::string("gsl_odeiv2 rk8pd, adaptive, with ") + kEvents;
+    return std::string("gsl_odeiv2 rk8pd, then msbdf with the analytic Jacobian: ") + switch_note_ +
+           "; " + kEvents;
+  }
+
+  HybridOptions options(const gsl_odeiv2_step_type* method) const {
     HybridOptions o;
-    o.absolute_tolerance = o.relative_tolerance = tolerance;
+    o.method = method;
+    o.absolute_tolerance = o.relative_tolerance = tolerance_;
+    o.max_step = max_step_;
     return o;
+  }
+
+  /// A fresh model and integrator at t = 0 with `method`.
+  void start_over(const gsl_odeiv2_step_type* method) {
+    implicit_ = method == gsl_odeiv2_step_msbdf;
+    earlier_steps_ += integrator_ ? integrator_->steps() : 0;
+    integrator_.reset();
+    model_ = std::make_unique<SceneModel>(scene_);
+    integrator_ =
+        std::make_unique<HybridIntegrator>(*model_, options(method), model_->initial_state());
+    steps_ = 0;
+    next_impulse_ = 0;
+  }
+
+  /// Advances to step n's end (n * dt, never an accumulated sum), impulses on the way.
+  void advance_to_step(long n) {
+    while (steps_ < n) {
+      const double start = static_cast<double>(steps_) * dt_;
+      const double target = static_cast<double>(++steps_) * dt_;
+      while (next_impulse_ < scene_.impulses.size() &&
+             scene_.impulses[next_impulse_].time < target) {
+        const Impulse& impulse = scene_.impulses[next_impulse_++];
+        // An impulse between samples is applied at its own time (a multiple of every dt).
+        integrator_->advance_to(std::max(start, impulse.time));
+        integrator_->change_state(
+            [&](double* y) { model_->apply_impulse(impulse, integrator_->time(), y); });
+      }
+      integrator_->advance_to(target);
+    }
+  }
+
+  /// Changes to msbdf, from the current state on, where the explicit method's steps would
+  /// be limited by stability rather than accuracy.
+  void check_stiffness() {
+    if (implicit_) return;
+    const double rate = fastest_rate(scene_, *model_, integrator_->state());
+    if (rate * scene_.sample <= kStiffRateTimesSample) return;
+    const double t = integrator_->time();
+    switch_note_ = "stiff from t = " + number(t) + " s, where the fastest rate is " + number(rate) +
+                   " /s (times the sample: " + number(rate * scene_.sample) + ")";
+    implicit_ = true;
+    earlier_steps_ += integrator_->steps();
+    std::vector<double> y = integrator_->state();
+    integrator_.reset();
+    integrator_ = std::make_unique<HybridIntegrator>(*model_, options(gsl_odeiv2_step_msbdf),
+                                                     std::move(y), t);
   }
 
   const Scene& scene_;
   double dt_;
   double tolerance_;
-  SceneModel model_;
-  HybridIntegrator integrator_;
+  double max_step_;  ///< seconds, 0: none
+  std::unique_ptr<SceneModel> model_;
+  std::unique_ptr<HybridIntegrator> integrator_;
+  bool implicit_ = false;
+  std::string switch_note_;
   long steps_ = 0;
+  long earlier_steps_ = 0;  ///< internal steps of integrators replaced since the start
   std::size_t next_impulse_ = 0;
 };
 
@@ -80,7 +176,8 @@ std::pair<std::string, std::string> ReferenceBackend::library_version() const {
 std::unique_ptr<Simulation> ReferenceBackend::start(const Scene& scene, double dt) const {
   if (const std::string why = SceneModel::beyond_exact_answer(scene); !why.empty())
     throw BeyondExactAnswer(why);
-  return std::make_unique<ReferenceSimulation>(scene, dt, tolerance_);
+  return std::make_unique<ReferenceSimulation>(scene, dt, tolerance_,
+                                               max_step_per_sample_ * scene.sample);
 }
 
 }  // namespace bb

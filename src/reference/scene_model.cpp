@@ -4,6 +4,7 @@
 
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
+#include "reference/air_force_jacobian.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/motion.hpp"
 
@@ -43,6 +44,21 @@ ConstVec spin(const double* y, int i) {
 
 double inverse_mass(const Body& b) {
   return b.fixed ? 0.0 : 1.0 / b.mass;
+}
+
+/// Euler's equations in the world frame, torque-free: I dw/dt = -w x (I w).
+Vector3d angular_acceleration(const Body& body, const Quaterniond& q, const Vector3d& omega) {
+  const Vector3d principal = eigen(principal_inertia(body));
+  if (principal.minCoeff() <= 0.0) return Vector3d::Zero();
+  const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
+  const Eigen::Matrix3d inertia = r * principal.asDiagonal() * r.transpose();
+  return inertia.ldlt().solve(-omega.cross(inertia * omega));
+}
+
+Eigen::Matrix3d skew(const Vector3d& a) {
+  Eigen::Matrix3d m;
+  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return m;
 }
 
 /// Contact distance below which a second contact counts as simultaneous, metres.
@@ -122,15 +138,55 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
     const Quaterniond q = orientation(y, i);
     const Quaterniond dq = Quaterniond(0.0, omega.x(), omega.y(), omega.z()) * q;
     d[6] = 0.5 * dq.w(), d[7] = 0.5 * dq.x(), d[8] = 0.5 * dq.y(), d[9] = 0.5 * dq.z();
-    // Euler's equations in the world frame, torque-free: I dw/dt = -w x (I w).
-    const Vector3d principal = eigen(principal_inertia(body));
-    if (principal.minCoeff() <= 0.0) {
-      Vec(d + 10).setZero();
-      continue;
+    Vec(d + 10) = angular_acceleration(body, q, omega);
+  }
+}
+
+void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
+  const std::size_t n = dimension();
+  std::fill(dfdy, dfdy + n * n, 0.0);
+  std::fill(dfdt, dfdt + n, 0.0);
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> j(
+      dfdy, static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i) {
+    const Body& body = scene_.bodies[i];
+    if (body.fixed) continue;
+    const auto o = static_cast<Eigen::Index>(at(i));
+    const Vector3d v = velocity(y, i), omega = spin(y, i);
+    const Quaterniond q = orientation(y, i);
+    // dx/dt = v.
+    j.block<3, 3>(o, o + 3).setIdentity();
+    // dv/dt = g + F_air(v, omega) / m, projected onto the ground's plane while resting.
+    const AirForceJacobian air = air_force_jacobian(scene_, body, v, omega);
+    Eigen::Matrix3d project = Eigen::Matrix3d::Identity();
+    if (resting_[i]) {
+      const Vector3d n_ground = eigen(scene_.ground->normal);
+      const Vector3d a = eigen(scene_.gravity) +
+                         eigen(air_force(scene_, body, plain(v), plain(omega))) / body.mass;
+      if (a.dot(n_ground) < 0.0) project -= n_ground * n_ground.transpose();
     }
-    const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
-    const Eigen::Matrix3d inertia = r * principal.asDiagonal() * r.transpose();
-    Vec(d + 10) = inertia.ldlt().solve(-omega.cross(inertia * omega));
+    j.block<3, 3>(o + 3, o + 3) = project * air.by_velocity / body.mass;
+    j.block<3, 3>(o + 3, o + 10) = project * air.by_spin / body.mass;
+    // dq/dt = 1/2 (0, omega) q: w' = -omega.q_v / 2, q_v' = (w omega + omega x q_v) / 2.
+    const Vector3d qv(q.x(), q.y(), q.z());
+    j.block<1, 3>(o + 6, o + 7) = -0.5 * omega.transpose();
+    j.block<1, 3>(o + 6, o + 10) = -0.5 * qv.transpose();
+    j.block<3, 1>(o + 7, o + 6) = 0.5 * omega;
+    j.block<3, 3>(o + 7, o + 7) = 0.5 * skew(omega);
+    j.block<3, 3>(o + 7, o + 10) = 0.5 * (q.w() * Eigen::Matrix3d::Identity() - skew(qv));
+    // Euler's equations by central differences: never the stiff part, and zero for spheres.
+    for (int c = 0; c < 7; ++c) {
+      double up[7] = {q.w(), q.x(), q.y(), q.z(), omega.x(), omega.y(), omega.z()};
+      double down[7];
+      std::copy(up, up + 7, down);
+      const double h = 1e-7 * std::max(1.0, std::abs(up[c]));
+      up[c] += h, down[c] -= h;
+      const Vector3d plus =
+          angular_acceleration(body, {up[0], up[1], up[2], up[3]}, {up[4], up[5], up[6]});
+      const Vector3d minus = angular_acceleration(body, {down[0], down[1], down[2], down[3]},
+                                                  {down[4], down[5], down[6]});
+      j.block<3, 1>(o + 10, o + 6 + c) = (plus - minus) / (2.0 * h);
+    }
   }
 }
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
-#include "scene/event_trace.hpp"
 #include "reference/hybrid_integrator.hpp"
+#include "scene/event_trace.hpp"
 #include "scene/scene.hpp"
 #include "scene/state.hpp"
 
@@ -35,6 +35,9 @@ class SceneModel : public HybridModel {
 
   std::size_t dimension() const override { return kPerBody * scene_.bodies.size(); }
   void derivatives(double t, const double* y, double* dydt) override;
+  /// Analytic in position, velocity (drag, Magnus, the resting projection) and orientation;
+  /// Euler's torque-free equations by central differences (never stiff, zero for spheres).
+  void jacobian(double t, const double* y, double* dfdy, double* dfdt) override;
   std::size_t event_count() const override { return sources_.size(); }
   void events(double t, const double* y, double* g) override;
   void apply(std::size_t k, double t, double* y) override;

@@ -60,6 +60,8 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
       }
     }
     if (auto internal = sim->internal_steps()) record.steps = *internal;
+    // Settings as they stood at the end: the reference names a change of method there.
+    record.engine_settings = sim->settings();
     record.trajectory.events = sim->exact_events().value_or(observer.trace());
   } catch (const BeyondExactAnswer& e) {
     // A scene past what the reference answers exactly is unsupported, with the reason.
