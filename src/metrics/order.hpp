@@ -9,17 +9,25 @@
 namespace bb {
 
 struct ErrorPoint {
-  double dt;     ///< seconds
-  double error;  ///< any error metric
+  double dt;           ///< seconds
+  double error;        ///< any error metric
+  double floor = 0.0;  ///< below this the error is noise, not truncation error
 };
 
-/// The error below which differences are noise, not truncation error: ten times the
-/// reference's self-check, or the rounding of a few hundred double operations on the
-/// largest position in the reference, whichever is larger (metres).
-double error_floor(const Trajectory& reference, double self_check);
+/// The error below which a run's differences from the reference are noise, in metres: ten
+/// times the reference's self-check, or the rounding a run of `steps` steps can pile up on
+/// the largest position of the reference (half an ulp per step on the position and as much
+/// again through the velocity: eps * largest * steps, at least 100 eps * largest).
+double error_floor(const Trajectory& reference, double self_check, long steps);
 
-/// Slope fitted over the points whose error lies above `floor` (the reference's own error,
-/// below which errors are noise); nullopt with fewer than two such points.
-std::optional<double> fit_order(const std::vector<ErrorPoint>& points, double floor);
+struct OrderFit {
+  std::optional<double> slope;  ///< nullopt with fewer than two points above their floor
+  int used = 0;                 ///< points in the fit
+  int below_floor = 0;          ///< points left out because their error is at or below floor
+};
+
+/// Slope fitted over the points whose error lies above their floor; points that are not
+/// finite are left out too (they count in neither number).
+OrderFit fit_order(const std::vector<ErrorPoint>& points);
 
 }  // namespace bb

@@ -80,6 +80,10 @@ Json results_json(const CaseResults& results) {
   for (const RunRecord& run : results.runs) j["runs"].push_back(run_json(run));
   j["order"] = Json::object();
   for (const auto& [name, slope] : results.order) j["order"][name] = slope;
+  // How many points each fit used, and how many sat at or below their error floor.
+  j["order_fit"] = Json::object();
+  for (const auto& [name, counts] : results.order_points)
+    j["order_fit"][name] = {{"points", counts.first}, {"below_floor", counts.second}};
   j["stability"] = Json::object();
   for (const StabilityResult& r : results.stability)
     j["stability"][r.backend] = {{"critical_dt", optional_json(r.critical_dt)},

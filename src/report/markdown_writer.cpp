@@ -57,9 +57,17 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   }
   out +=
       "\nThe order column is the least-squares slope of log position_max against log dt over "
-      "the sweep, using the points above the error floor: ten times the reference's self-check, "
-      "or the rounding of about 100 double-precision operations on the largest position, "
-      "whichever is larger.\n";
+      "the sweep, using the points above their error floor: ten times the reference's "
+      "self-check, or the rounding a run can pile up on the largest position (machine epsilon "
+      "times that position times the run's number of steps, at least 100 of them), whichever "
+      "is larger. A point below its floor measures noise, not the method, and is left out.\n";
+  std::string left_out;
+  for (const auto& [name, counts] : results.order_points)
+    if (counts.second > 0)
+      left_out += fmt::format("{}- {}: {} of {} points below the floor\n",
+                              left_out.empty() ? "\nLeft out of the order fit:\n\n" : "", name,
+                              counts.second, counts.first + counts.second);
+  out += left_out;
 
   if (!plots.trajectory.empty() || !plots.energy.empty()) {
     out += fmt::format("\n## Trajectories and energy at report_dt = {} s\n\n",

@@ -61,6 +61,11 @@ Table summary_table(const CaseResults& results, double dt) {
 
 std::vector<std::string> run_notes(const CaseResults& results, double dt) {
   std::vector<std::string> notes;
+  // Without a reference no error can be measured: the first note says why there is none.
+  const RunRecord& reference = results.reference_run;
+  if (reference.status != RunStatus::Ok)
+    notes.push_back("reference: " + status_name(reference.status) + ": " + reference.reason +
+                    "; without it no error column can be filled");
   for (const RunRecord& run : results.runs)
     if (run.dt && *run.dt == dt && run.status != RunStatus::Ok)
       notes.push_back(run.backend + ": " + status_name(run.status) + ": " + run.reason);

@@ -111,6 +111,14 @@ void queue_cost(ChildPool& pool, const Backend& backend, const Scene& scene, Run
       });
 }
 
+/// How the reference solved the case, as its run's settings name it.
+std::string reference_method(const RunRecord& reference) {
+  for (const auto& [key, value] : reference.engine_settings)
+    if (key == "method" && std::holds_alternative<std::string>(value))
+      return std::get<std::string>(value);
+  return "gsl_odeiv2 (" + status_name(reference.status) + " before it started)";
+}
+
 std::string label(const std::string& backend, std::optional<double> dt) {
   return dt ? backend + " at dt " + format_dt(*dt) : backend;
 }
@@ -155,10 +163,10 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     for (double dt : dts) jobs.push_back({b, dt});
   }
 
-  // Accuracy runs, each in its own child process: the reference, the same solve 100 times
-  // tighter to measure the reference's own error, then every job.
+  // Accuracy runs, each in its own child process: the reference, its self-check (100 times
+  // tighter with smaller steps forced) to measure the reference's own error, then every job.
   const ReferenceBackend& reference = registry.reference();
-  const ReferenceBackend tighter(reference.tolerance() / 100.0);
+  const ReferenceBackend tighter = reference.self_check();
   RunRecord tight;
   out.runs.resize(jobs.size());
   ChildPool pool(options.jobs, options.isolation);
@@ -181,7 +189,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   out.reference_run.dt.reset();
   tight.dt.reset();
 
-  out.reference = {ReferenceBackend::method(), reference.tolerance(),
+  out.reference = {reference_method(out.reference_run), reference.tolerance(),
                    max_position_difference(out.reference_run.trajectory, tight.trajectory)};
   if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
     out.reference_floor = compare(scene, out.reference_run.trajectory, tight.trajectory);
@@ -223,12 +231,17 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   }
 
   // Observed order of position_max over the dt sweep, per backend.
-  const double floor = error_floor(out.reference_run.trajectory, out.reference.self_check);
   std::map<std::string, std::vector<ErrorPoint>> points;
   for (const RunRecord& run : out.runs)
-    if (run.errors) points[run.backend].push_back({*run.dt, run.errors->position_max});
-  for (const auto& [name, series] : points)
-    if (auto slope = fit_order(series, floor)) out.order[name] = *slope;
+    if (run.errors)
+      points[run.backend].push_back(
+          {*run.dt, run.errors->position_max,
+           error_floor(out.reference_run.trajectory, out.reference.self_check, run.steps)});
+  for (const auto& [name, series] : points) {
+    const OrderFit fit = fit_order(series);
+    if (fit.slope) out.order[name] = *fit.slope;
+    out.order_points[name] = {fit.used, fit.below_floor};
+  }
 
   out.gates = evaluate_gates(scene, out);
   return out;

@@ -85,6 +85,8 @@ struct CaseResults {
   RunRecord reference_run;
   std::vector<RunRecord> runs;          ///< backends in registry order, dt largest first
   std::map<std::string, double> order;  ///< fitted slope of log position_max vs log dt
+  /// Per backend: points in the order fit, and points left out as below their error floor.
+  std::map<std::string, std::pair<int, int>> order_points;
   std::vector<GateResult> gates;
   std::vector<StabilityResult> stability;  ///< empty unless a stability search ran
 };

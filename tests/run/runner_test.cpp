@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "course/course_backend.hpp"
+#include "report/summary_tables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
 #include "scene/case_error.hpp"
@@ -123,6 +124,36 @@ TEST(Runner, OptionsNamingUnknownBackendsOrStepsAreBadInput) {
   options.backends = {};
   options.dts = {0.0123};
   EXPECT_THROW(run_case(scene, registry, options), CaseError);
+}
+
+// When the reference has no answer, the notes under the table (terminal and page) say why
+// first, in words, and that no error can be measured without it.
+TEST(Runner, AMissingReferenceIsExplainedFirstInTheNotes) {
+  const Scene scene = test::scene_from(R"(name = "tumbling_crate"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.01]
+[ground]
+restitution = 0.5
+[[body]]
+name = "crate"
+shape = "box"
+half_extents = [0.5, 0.25, 0.25]
+mass = 1.0
+position = [0.0, 2.0, 0.0]
+)");
+  RunOptions options;
+  options.backends = {"course/semi-implicit-euler"};
+  options.cost = false;
+  options.isolation = false;
+  const CaseResults results = run_case(scene, Registry::load(), options);
+  ASSERT_NE(results.reference_run.status, RunStatus::Ok);
+  const std::vector<std::string> notes = run_notes(results, scene.report_dt);
+  ASSERT_FALSE(notes.empty());
+  EXPECT_EQ(notes.front().rfind("reference: unsupported: ", 0), 0u) << notes.front();
+  EXPECT_NE(notes.front().find("moving box"), std::string::npos) << notes.front();
+  EXPECT_NE(notes.front().find("no error column"), std::string::npos) << notes.front();
 }
 
 }  // namespace
