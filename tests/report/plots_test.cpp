@@ -1,0 +1,71 @@
+// Long runs are thinned for drawing: every bucket keeps its lowest and highest point, so
+// peaks survive, and a 20,000-sample run still draws pages under 1 MB of SVG.
+#include "report/plots.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "support/program.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Thinned, ShortSeriesAreDrawnWhole) {
+  const std::vector<double> values(kMaxPlotPoints, 1.0);
+  EXPECT_EQ(thinned(values, kMaxPlotPoints).size(), values.size());
+}
+
+TEST(Thinned, LongSeriesKeepTheirEndsPeaksAndOrder) {
+  // A noisy sine with one spike: the spike and both ends must survive.
+  std::vector<double> values;
+  for (int j = 0; j < 100000; ++j) values.push_back(std::sin(j * 1e-3) + 1e-3 * (j % 7));
+  values[61234] = 50.0;
+  const std::vector<std::size_t> keep = thinned(values, 2000);
+  EXPECT_LE(keep.size(), 2000u);
+  EXPECT_EQ(keep.front(), 0u);
+  EXPECT_EQ(keep.back(), values.size() - 1);
+  EXPECT_TRUE(std::is_sorted(keep.begin(), keep.end()));
+  EXPECT_NE(std::find(keep.begin(), keep.end(), 61234u), keep.end());
+  const auto lowest = std::min_element(values.begin(), values.end()) - values.begin();
+  EXPECT_NE(std::find(keep.begin(), keep.end(), static_cast<std::size_t>(lowest)), keep.end());
+}
+
+TEST(Plots, ALongRunsPagesStayUnderOneMegabyte) {
+  const std::string dir = test::fresh_dir("long_plots");
+  const std::string path = test::write_case(dir, "long_fall.toml", R"(name = "long_fall"
+dims = 2
+duration = 2000.0
+sample = 0.1
+dt = [0.1, 0.05]
+report_dt = 0.05
+[air]
+density = 1.2
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 10.0, 0.0]
+velocity = [3.0, 0.0, 0.0]
+drag_coefficient = 0.47
+)");
+  const test::Outcome o = test::beachball("run " + path +
+                                          " --no-cost --backends course/semi-implicit-euler,"
+                                          "course/rk4 --out " +
+                                          dir + "/out");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  int svgs = 0;
+  for (const auto& entry : fs::directory_iterator(dir + "/out")) {
+    if (entry.path().extension() != ".svg") continue;
+    ++svgs;
+    EXPECT_LT(fs::file_size(entry.path()), 1u << 20) << entry.path();
+  }
+  EXPECT_GE(svgs, 3);
+}
+
+}  // namespace
+}  // namespace bb
