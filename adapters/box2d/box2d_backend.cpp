@@ -98,8 +98,13 @@ class Box2dBackend : public Backend {
             Feature::Wind,    Feature::Rotation, Feature::Boxes};
   }
   std::pair<std::string, std::string> library_version() const override {
-    return {"box2d", std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) +
-                         "." + std::to_string(b2_version.revision)};
+    const std::string header = std::to_string(b2_version.major) + "." +
+                               std::to_string(b2_version.minor) + "." +
+                               std::to_string(b2_version.revision);
+    // The installed package's version; the library's b2_version lags behind in 2.4.1.
+    const std::string package = BOX2D_PACKAGE_VERSION;
+    if (package == header) return {"box2d", package};
+    return {"box2d", package + " (its b2_version says " + header + ")"};
   }
   std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
     return std::make_unique<Box2dSimulation>(scene, dt);
