@@ -19,18 +19,16 @@ double radius(const Body& b) {
   return b.shape == Shape::Sphere ? b.radius : 0.0;
 }
 
-double kinetic_energy(const Scene& scene, const State& s) {
+/// Kinetic energy (J) of bodies a and b.
+double kinetic_energy(const Scene& scene, const State& s, int a, int b) {
   double e = 0.0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (!scene.bodies[i].fixed) e += 0.5 * scene.bodies[i].mass * dot(s[i].velocity, s[i].velocity);
+  for (int i : {a, b}) e += 0.5 * scene.bodies[i].mass * dot(s[i].velocity, s[i].velocity);
   return e;
 }
 
-Vec3 momentum(const Scene& scene, const State& s) {
-  Vec3 p;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (!scene.bodies[i].fixed) p += s[i].velocity * scene.bodies[i].mass;
-  return p;
+/// Momentum (N s) of bodies a and b.
+Vec3 momentum(const Scene& scene, const State& s, int a, int b) {
+  return s[a].velocity * scene.bodies[a].mass + s[b].velocity * scene.bodies[b].mass;
 }
 
 }  // namespace
@@ -39,6 +37,7 @@ StepObserver::StepObserver(const Scene& scene)
     : scene_(scene),
       pairs_(contact::contact_pairs(scene)),
       closing_(pairs_.size(), 0.0),
+      normals_(pairs_.size(), Eigen::Vector3d::Zero()),
       rising_(scene.bodies.size(), false),
       bounced_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
@@ -67,7 +66,10 @@ void StepObserver::observe(double t, const State& s) {
     // "Close" allows for the distance the approach covers in two steps: a bounce may turn
     // a body around before it reaches the surface.
     const double near = 2.0 * std::max(closing_[k], 0.0) * dt + 0.1 * radius(scene_.bodies[pair.a]);
-    if (!first_ && closing_[k] > 0.0 && closing <= 0.0 && p.gap < near) {
+    // Along the last step's normal, so a body that passed through a thin panel (whose
+    // normal flips as the centre crosses it) is not mistaken for one that bounced.
+    const double closing_before_normal = -relative.dot(normals_[k]);
+    if (!first_ && closing_[k] > 0.0 && closing_before_normal <= 0.0 && p.gap < near) {
       for (int body : {pair.a, b_moves ? pair.b : -1}) {
         if (body < 0) continue;
         BodyEvents& e = trace_.bodies[body];
@@ -76,19 +78,25 @@ void StepObserver::observe(double t, const State& s) {
         bounced_[body] = true;
       }
       if (b_moves && !trace_.first_collision) {
-        // Gravity adds m g dt to every moving body over the step; the rest is the collision's.
-        double mass = 0.0;
-        for (const Body& body : scene_.bodies) mass += body.fixed ? 0.0 : body.mass;
-        trace_.first_collision = {
-            pair.a,
-            pair.b,
-            t,
-            momentum(scene_, s) - momentum(scene_, previous_) - scene_.gravity * (mass * dt),
-            kinetic_energy(scene_, previous_),
-            kinetic_energy(scene_, s)};
+        // The two bodies' balance over the step, less what gravity did meanwhile: its
+        // impulse m g dt and its work m g . dx. The rest is the collision's.
+        const Body &body_a = scene_.bodies[pair.a], &body_b = scene_.bodies[pair.b];
+        const double mass = body_a.mass + body_b.mass;
+        const double gravity_work = dot(
+            scene_.gravity, (s[pair.a].position - previous_[pair.a].position) * body_a.mass +
+                                (s[pair.b].position - previous_[pair.b].position) * body_b.mass);
+        trace_.first_collision = {pair.a,
+                                  pair.b,
+                                  t,
+                                  momentum(scene_, s, pair.a, pair.b) -
+                                      momentum(scene_, previous_, pair.a, pair.b) -
+                                      scene_.gravity * (mass * dt),
+                                  kinetic_energy(scene_, previous_, pair.a, pair.b),
+                                  kinetic_energy(scene_, s, pair.a, pair.b) - gravity_work};
       }
     }
     closing_[k] = closing;
+    normals_[k] = p.normal;
   }
   // Apexes: a body that bounced stops rising above the ground.
   if (scene_.ground) {

@@ -3,6 +3,7 @@
 // that are close stop approaching, an apex a step where a body stops rising.
 #pragma once
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
@@ -24,9 +25,10 @@ class StepObserver {
  private:
   const Scene& scene_;
   std::vector<contact::ContactPair> pairs_;
-  std::vector<double> closing_;  ///< per pair: normal speed of approach at the last step
-  std::vector<bool> rising_;     ///< per body: moving away from the ground at the last step
-  std::vector<bool> bounced_;    ///< per body: a contact happened since its last apex
+  std::vector<double> closing_;           ///< per pair: normal speed of approach at the last step
+  std::vector<Eigen::Vector3d> normals_;  ///< per pair: the contact normal at the last step
+  std::vector<bool> rising_;   ///< per body: moving away from the ground at the last step
+  std::vector<bool> bounced_;  ///< per body: a contact happened since its last apex
   State previous_;
   double previous_t_ = 0.0;
   bool first_ = true;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -46,6 +47,10 @@ void HybridModel::jacobian(double t, const double* y, double* dfdy, double* dfdt
   derivatives(t + h, y, up.data());
   derivatives(t - h, y, down.data());
   for (std::size_t i = 0; i < n; ++i) dfdt[i] = (up[i] - down[i]) / (2.0 * h);
+}
+
+double HybridModel::max_step(double, const double*) {
+  return std::numeric_limits<double>::infinity();
 }
 
 HybridIntegrator::HybridIntegrator(HybridModel& model, const HybridOptions& options,
@@ -123,7 +128,8 @@ void HybridIntegrator::advance_to(double target) {
     t0_ = t_;
     y0_ = y_;
     model_.events(t_, y_.data(), g0_.data());
-    const double h_limit = options_.max_step > 0.0 ? options_.max_step : target - t_;
+    const double h_limit = std::min(options_.max_step > 0.0 ? options_.max_step : target - t_,
+                                    model_.max_step(t_, y_.data()));
     h_ = std::min({h_, h_limit, target - t_});
     check(
         gsl_odeiv2_evolve_apply(evolve_, control_, stepper_, &system_, &t_, target, &h_, y_.data()),

@@ -24,6 +24,10 @@ class HybridModel {
   /// The Jacobian d(dy/dt)/dy (row-major, dimension^2) and d(dy/dt)/dt at (t, y), for the
   /// implicit methods (msbdf). The default differentiates derivatives() numerically.
   virtual void jacobian(double t, const double* y, double* dfdy, double* dfdt);
+  /// The longest step (seconds) that cannot carry the state across an event and back
+  /// (a ball through a thin panel, where the gap is positive on both sides); the default
+  /// sets no limit.
+  virtual double max_step(double t, const double* y);
   /// Number of event functions.
   virtual std::size_t event_count() const = 0;
   /// Event function values g_k(t, y); event k happens where g_k falls to zero from above.

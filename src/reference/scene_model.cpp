@@ -1,6 +1,7 @@
 #include "reference/scene_model.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
@@ -87,6 +88,17 @@ SceneModel::SceneModel(const Scene& scene)
   if (scene.ground && -eigen(scene.gravity).dot(eigen(scene.ground->normal)) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
       if (!scene.bodies[i].fixed) sources_.push_back({true, i, {}});
+  // A body that starts touching the ground, not moving along its normal, with gravity pressing it
+  // down, starts at rest there (a gap of exactly zero is no crossing, so no event would).
+  const std::vector<double> y = initial_state();
+  for (const contact::ContactPair& pair : contact::contact_pairs(scene)) {
+    if (!pair.ground()) continue;
+    const Vector3d n = eigen(scene.ground->normal);
+    const bool pressed = -eigen(scene.gravity).dot(n) > 0.0;
+    if (pressed && std::abs(proximity(pair, y.data()).gap) <= kSimultaneousGap &&
+        std::abs(velocity(y.data(), pair.a).dot(n)) <= 1e-12)
+      resting_[pair.a] = true;
+  }
 }
 
 std::vector<double> SceneModel::initial_state() const {
@@ -208,6 +220,25 @@ void SceneModel::events(double, const double* y, double* g) {
       g[k] = proximity(s.pair, y).gap;
     }
   }
+}
+
+double SceneModel::max_step(double, const double* y) {
+  // The thickness a body presents to a contact: a sphere's diameter, a box's thinnest side.
+  const auto thickness = [&](int i) {
+    const Body& b = scene_.bodies[i];
+    if (b.shape == Shape::Sphere) return 2.0 * b.radius;
+    if (b.shape == Shape::Box)
+      return 2.0 * std::min({b.half_extents.x, b.half_extents.y, b.half_extents.z});
+    return 0.0;
+  };
+  double limit = std::numeric_limits<double>::infinity();
+  for (const Source& s : sources_) {
+    if (s.apex || s.pair.ground()) continue;
+    const double speed = (Vector3d(velocity(y, s.pair.a)) - Vector3d(velocity(y, s.pair.b))).norm();
+    const double region = thickness(s.pair.a) + thickness(s.pair.b);
+    if (speed > 0.0 && region > 0.0) limit = std::min(limit, 0.25 * region / speed);
+  }
+  return limit;
 }
 
 double SceneModel::kinetic_energy(const double* y) const {

@@ -38,6 +38,10 @@ class SceneModel : public HybridModel {
   /// Analytic in position, velocity (drag, Magnus, the resting projection) and orientation;
   /// Euler's torque-free equations by central differences (never stiff, zero for spheres).
   void jacobian(double t, const double* y, double* dfdy, double* dfdt) override;
+  /// A quarter of the time the fastest approach takes to cross the thinnest contact
+  /// region (both bodies' thickness along the line of approach) of any pair not with the
+  /// ground, so that no step jumps over a thin panel or a small ball.
+  double max_step(double t, const double* y) override;
   std::size_t event_count() const override { return sources_.size(); }
   void events(double t, const double* y, double* g) override;
   void apply(std::size_t k, double t, double* y) override;

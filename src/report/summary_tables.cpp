@@ -66,9 +66,17 @@ std::vector<std::string> run_notes(const CaseResults& results, double dt) {
   if (reference.status != RunStatus::Ok)
     notes.push_back("reference: " + status_name(reference.status) + ": " + reference.reason +
                     "; without it no error column can be filled");
-  for (const RunRecord& run : results.runs)
-    if (run.dt && *run.dt == dt && run.status != RunStatus::Ok)
+  for (const RunRecord& run : results.runs) {
+    if (!run.dt || *run.dt != dt) continue;
+    if (run.status != RunStatus::Ok) {
       notes.push_back(run.backend + ": " + status_name(run.status) + ": " + run.reason);
+      continue;
+    }
+    // An observable the reference has and this run lacks (a bounce it never made).
+    for (const ObservableResult& o : run.observables)
+      if (!o.measured.value && o.reference && !o.measured.note.empty())
+        notes.push_back(run.backend + ": " + o.name + ": " + o.measured.note);
+  }
   return notes;
 }
 

@@ -24,10 +24,11 @@ struct BodyEvents {
 struct CollisionBalance {
   int body_a = -1;  ///< the two bodies that collide
   int body_b = -1;
-  double time = 0.0;                   ///< seconds
-  Vec3 momentum_change;                ///< N s, less gravity's impulse over the step
+  double time = 0.0;     ///< seconds
+  Vec3 momentum_change;  ///< N s, of the two bodies; from steps, less gravity's impulse
   double kinetic_energy_before = 0.0;  ///< J
-  double kinetic_energy_after = 0.0;   ///< J
+  /// J; from steps, less gravity's work on the two bodies over the step
+  double kinetic_energy_after = 0.0;
 };
 
 struct EventTrace {

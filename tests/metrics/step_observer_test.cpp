@@ -70,5 +70,44 @@ TEST(StepObserver, ContactsAndApexesConvergeToTheReferencesAsDtShrinks) {
   EXPECT_LT(previous_error, 0.05);
 }
 
+// A fast small ball and a thin fixed panel (the tunnelling case): the reference's steps are
+// bounded so it cannot jump the panel, and it meets it at the closed-form time; at 60 Hz
+// the course steps over the panel, and the observer does not mistake the flipped normal
+// of a ball that passed through for a bounce; at 1/960 s the course hits it.
+TEST(StepObserver, ABallThroughAThinPanelIsNoContactAndTheReferenceCatchesIt) {
+  const Scene scene = test::scene_from(R"(name = "tunnelling"
+dims = 2
+duration = 0.5
+sample = 0.0166666666666666667
+dt = [0.0166666666666666667, 0.00104166666666666667]
+report_dt = 0.0166666666666666667
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "ball"
+radius = 0.05
+mass = 0.05
+position = [-5.4, 1.0, 0.0]
+velocity = [50.0, 0.0, 0.0]
+[[body]]
+name = "panel"
+shape = "box"
+half_extents = [0.01, 1.0, 1.0]
+mass = 1.0
+fixed = true
+position = [0.0, 1.0, 0.0]
+[[contact]]
+bodies = ["ball", "panel"]
+restitution = 0.5
+)");
+  const BodyEvents truth = exact(scene).bodies[0];
+  ASSERT_EQ(truth.contact_times.size(), 1u);
+  EXPECT_NEAR(truth.contact_times[0], (5.4 - 0.05 - 0.01) / 50.0, 1e-9);
+  EXPECT_NEAR(truth.post_velocity->x, -25.0, 1e-9);
+  EXPECT_TRUE(observed(scene, scene.dt[0]).bodies[0].contact_times.empty());
+  const BodyEvents fine = observed(scene, scene.dt[1]).bodies[0];
+  ASSERT_EQ(fine.contact_times.size(), 1u);
+  EXPECT_NEAR(fine.contact_times[0], truth.contact_times[0], 1.01 * scene.dt[1]);
+}
+
 }  // namespace
 }  // namespace bb
