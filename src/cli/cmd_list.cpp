@@ -1,7 +1,6 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "course/course_backend.hpp"
 #include "run/accuracy_run.hpp"
 #include "scene/backend_names.hpp"
 
@@ -23,14 +22,14 @@ int list_command(const std::vector<std::string>& paths) {
   const Registry registry = Registry::load();
   fmt::print("Backends:\n");
   fmt::print("  {:<28} {}\n", "reference", feature_list(registry.reference().supports()));
-  fmt::print("  {:<28} {}\n", "course/<integrator>",
-             feature_list(CourseBackend(CourseVariant{}).supports()));
+  fmt::print("  {:<28} {}\n", "course/<integrator>", feature_list(registry.course_features()));
   for (const Backend* e : registry.engines()) {
     const auto [library, version] = e->library_version();
     fmt::print("  {:<28} built ({} {}): {}\n", e->name(), library, version,
                feature_list(e->supports()));
   }
-  for (const auto& [name, why] : registry.missing_engines()) fmt::print("  {:<28} {}\n", name, why);
+  for (const Registry::Missing& m : registry.missing_engines())
+    fmt::print("  {:<28} {}\n", m.name, m.why);
   fmt::print("  course integrators: ");
   for (const std::string& i : known_integrators()) fmt::print("{} ", i);
   fmt::print("\n\nCases:\n");

@@ -202,9 +202,11 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   out.versions[reference.library_version().first] = reference.library_version().second;
   add_observables(scene, out.reference_run, out.reference_run);
   // Engines that were not built still get a row, so a reader sees why they are absent.
-  for (const auto& [name, why] : registry.missing_engines()) {
+  for (const Registry::Missing& missing : registry.missing_engines()) {
+    const std::string& name = missing.name;
+    const std::string& why = missing.why;
     const bool asked = !options.backends.empty() && wanted(options, name);
-    if (!asked && (name == "mujoco" || !options.backends.empty())) continue;
+    if (!asked && (!missing.shown_unasked || !options.backends.empty())) continue;
     for (double dt : dts) {
       RunRecord r;
       r.backend = name;

@@ -8,6 +8,7 @@
 
 #include "course/course_backend.hpp"
 #include "scene/backend_names.hpp"
+#include "scene/engine_catalogue.hpp"
 #include "scene/plugin_api.hpp"
 
 namespace bb {
@@ -32,28 +33,40 @@ std::string plugin_folder() {
 Registry Registry::load() {
   Registry r;
   const std::filesystem::path folder = plugin_folder();
-  for (const std::string& name : engine_backend_names()) {
-    const std::filesystem::path path = folder / ("beachball-" + name + ".so");
-    if (!std::filesystem::exists(path)) {
-      r.missing_.push_back({name, "not built: its Debian package was not found at build time"});
-      continue;
-    }
-    // RTLD_LOCAL keeps each plugin's engine symbols apart: bullet and bullet-float link
-    // libraries that define the same names with different layouts.
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (handle == nullptr) {
-      r.missing_.push_back({name, std::string("plugin failed to load: ") + dlerror()});
-      continue;
-    }
-    auto create = reinterpret_cast<bb::Backend* (*)()>(dlsym(handle, BEACHBALL_PLUGIN_ENTRY));
-    if (create == nullptr) {
-      r.missing_.push_back({name, "plugin has no " BEACHBALL_PLUGIN_ENTRY});
-      continue;
-    }
-    r.plugins_.push_back(std::make_unique<Plugin>(Plugin{handle}));
-    r.engines_.emplace_back(create());
-  }
+  for (const EngineDescription& engine : engine_catalogue())
+    for (const std::string& name : engine.backends) r.load_plugin(folder, name, engine);
   return r;
+}
+
+void Registry::load_plugin(const std::filesystem::path& folder, const std::string& name,
+                           const EngineDescription& engine) {
+  if (!engine.has_adapter) {
+    missing_.push_back({name, "no adapter in this version of beachball", false});
+    return;
+  }
+  const std::filesystem::path path = folder / ("beachball-" + name + ".so");
+  if (!std::filesystem::exists(path)) {
+    missing_.push_back({name, "not built: its Debian package was not found at build time"});
+    return;
+  }
+  // RTLD_LOCAL keeps each plugin's engine symbols apart: bullet and bullet-float link
+  // libraries that define the same names with different layouts.
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    missing_.push_back({name, std::string("plugin failed to load: ") + dlerror()});
+    return;
+  }
+  auto create = reinterpret_cast<bb::Backend* (*)()>(dlsym(handle, BEACHBALL_PLUGIN_ENTRY));
+  if (create == nullptr) {
+    missing_.push_back({name, "plugin has no " BEACHBALL_PLUGIN_ENTRY});
+    return;
+  }
+  plugins_.push_back(std::make_unique<Plugin>(Plugin{handle}));
+  engines_.emplace_back(create());
+}
+
+FeatureSet Registry::course_features() const {
+  return CourseBackend(CourseVariant{}).supports();
 }
 
 std::vector<const Backend*> Registry::engines() const {

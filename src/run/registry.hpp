@@ -2,12 +2,14 @@
 // engine plugins found next to the program.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "reference/gsl_reference.hpp"
 #include "scene/backend.hpp"
+#include "scene/engine_catalogue.hpp"
 
 namespace bb {
 
@@ -21,20 +23,29 @@ class Registry {
 
   /// Engines whose plugin loaded, in engine_backend_names() order.
   std::vector<const Backend*> engines() const;
-  /// Engine names whose plugin is missing, with why.
-  const std::vector<std::pair<std::string, std::string>>& missing_engines() const {
-    return missing_;
-  }
+  /// An engine backend whose plugin is not here.
+  struct Missing {
+    std::string name;
+    std::string why;
+    bool shown_unasked = true;  ///< false for an engine with no adapter yet
+  };
+  /// Engine backends whose plugin is missing, with why.
+  const std::vector<Missing>& missing_engines() const { return missing_; }
   const ReferenceBackend& reference() const { return reference_; }
+  /// What every course variant supports (they differ in rules, not in features).
+  FeatureSet course_features() const;
   /// Add a backend that is not a plugin (tests register fakes this way).
   void add_engine(std::unique_ptr<Backend> backend);
 
  private:
   Registry() = default;
+  /// Loads backend `name` of `engine` from `folder`, or records why it is missing.
+  void load_plugin(const std::filesystem::path& folder, const std::string& name,
+                   const EngineDescription& engine);
   struct Plugin;
   std::vector<std::unique_ptr<Plugin>> plugins_;
   std::vector<std::unique_ptr<Backend>> engines_;
-  std::vector<std::pair<std::string, std::string>> missing_;
+  std::vector<Missing> missing_;
   ReferenceBackend reference_;
 };
 

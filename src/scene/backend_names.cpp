@@ -1,5 +1,7 @@
 #include "scene/backend_names.hpp"
 
+#include "scene/engine_catalogue.hpp"
+
 namespace bb {
 
 const std::vector<std::string>& known_integrators() {
@@ -18,9 +20,11 @@ const std::vector<std::string>& known_friction_rules() {
   return v;
 }
 
-const std::vector<std::string>& engine_backend_names() {
-  static const std::vector<std::string> v = {"bullet", "bullet-float", "box2d", "ode", "mujoco"};
-  return v;
+std::vector<std::string> engine_backend_names() {
+  std::vector<std::string> out;
+  for (const EngineDescription& e : engine_catalogue())
+    for (const std::string& b : e.backends) out.push_back(b);
+  return out;
 }
 
 std::vector<CourseVariant> course_variants(const Scene& scene) {

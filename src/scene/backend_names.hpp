@@ -19,8 +19,8 @@ struct CourseVariant {
 const std::vector<std::string>& known_integrators();
 const std::vector<std::string>& known_ground_rules();
 const std::vector<std::string>& known_friction_rules();
-/// The engines' backend names, whether built or not.
-const std::vector<std::string>& engine_backend_names();
+/// The engines' backend names, whether built or not, from the engines' descriptions.
+std::vector<std::string> engine_backend_names();
 
 /// Every course variant the case asks for, in a stable order.
 std::vector<CourseVariant> course_variants(const Scene& scene);

@@ -1,0 +1,18 @@
+// Box2D as the harness knows it: one backend, its settings keys and their defaults.
+#pragma once
+
+#include "scene/engine_catalogue.hpp"
+
+namespace bb {
+
+inline EngineDescription box2d_engine() {
+  const std::string e = "box2d";
+  return {e,
+          {"box2d"},
+          {{e, "velocity_iterations", KeyKind::Integer, 8, "velocity solver iterations"},
+           {e, "position_iterations", KeyKind::Integer, 3, "position solver iterations"},
+           {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
+           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"}}};
+}
+
+}  // namespace bb

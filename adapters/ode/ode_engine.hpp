@@ -1,0 +1,20 @@
+// ODE as the harness knows it: one backend, its settings keys and their defaults.
+#pragma once
+
+#include "scene/engine_catalogue.hpp"
+
+namespace bb {
+
+inline EngineDescription ode_engine() {
+  const std::string e = "ode";
+  return {e,
+          {"ode"},
+          {{e, "erp", KeyKind::Number, 0.2, "error reduction parameter"},
+           {e, "cfm", KeyKind::Number, 1e-5, "constraint force mixing"},
+           {e, "quick_step", KeyKind::Boolean, 0, "dWorldQuickStep instead of dWorldStep"},
+           {e, "quick_step_iterations", KeyKind::Integer, 20, "iterations of dWorldQuickStep"},
+           {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping scale"},
+           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping scale"}}};
+}
+
+}  // namespace bb

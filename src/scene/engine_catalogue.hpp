@@ -1,0 +1,34 @@
+// What each engine adapter says about itself, whether or not its plugin was built: its
+// settings table, the backend names it provides and the keys it takes, with defaults. Each
+// adapter folder holds its own description (adapters/<engine>/<engine>_engine.hpp); the
+// adapters' CMake list gathers them into engine_catalogue(), so adding an engine touches
+// its own folder and that list, nothing in src/.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bb {
+
+enum class KeyKind { Number, Integer, Boolean };
+
+struct EngineKey {
+  std::string engine;  ///< the [engines.<engine>] table it belongs to
+  std::string key;
+  KeyKind kind;
+  double fallback;      ///< the default; booleans are 0 or 1
+  std::string meaning;  ///< one line, with the unit
+};
+
+struct EngineDescription {
+  std::string engine;                 ///< the settings table: [engines.<engine>]
+  std::vector<std::string> backends;  ///< backend names, one plugin each
+  std::vector<EngineKey> keys;
+  /// False for an engine with no adapter yet: it has a row only when asked for by name.
+  bool has_adapter = true;
+};
+
+/// Every engine the adapters describe, in the adapters' CMake order.
+const std::vector<EngineDescription>& engine_catalogue();
+
+}  // namespace bb
