@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "../point_body.hpp"
-#include "scene/air_forces.hpp"
 #include "scene/engine_keys.hpp"
+#include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
 
 namespace bb {
@@ -46,14 +46,12 @@ class Box2dSimulation : public Simulation {
   }
 
   void step() override {
-    // Air forces from the engine's own current velocity, as a game would add them.
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      const Body& b = scene_.bodies[i];
-      if (b.fixed || !scene_.air) continue;
-      const b2Vec2 v = bodies_[i]->GetLinearVelocity();
-      const Vec3 force =
-          air_force(scene_, b, {v.x, v.y, 0.0}, {0.0, 0.0, bodies_[i]->GetAngularVelocity()});
-      bodies_[i]->ApplyForceToCenter(to_b2(force), true);
+    // The harness's forces from the engine's own current state, as a game would add them.
+    if (has_external_forces(scene_)) {
+      read(state_);
+      external_forces(scene_, state_, forces_);
+      for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!scene_.bodies[i].fixed) bodies_[i]->ApplyForceToCenter(to_b2(forces_[i]), true);
     }
     world_.Step(dt_, velocity_iterations_, position_iterations_);
   }
@@ -88,6 +86,8 @@ class Box2dSimulation : public Simulation {
   int position_iterations_ = 3;
   b2World world_;
   std::vector<b2Body*> bodies_;
+  State state_{scene_.bodies.size()};  ///< read before each step for the forces
+  std::vector<Vec3> forces_;
 };
 
 class Box2dBackend : public Backend {

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "../point_body.hpp"
-#include "scene/air_forces.hpp"
 #include "scene/engine_keys.hpp"
+#include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
 
 namespace bb {
@@ -58,13 +58,12 @@ class BulletSimulation : public Simulation {
   }
 
   void step() override {
-    // Air forces from the engine's own current velocity, as a game would add them.
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      const Body& b = scene_.bodies[i];
-      if (b.fixed || !scene_.air) continue;
-      btRigidBody& body = *bodies_[i];
-      body.applyCentralForce(to_bt(air_force(scene_, b, from_bt(body.getLinearVelocity()),
-                                             from_bt(body.getAngularVelocity()))));
+    // The harness's forces from the engine's own current state, as a game would add them.
+    if (has_external_forces(scene_)) {
+      read(state_);
+      external_forces(scene_, state_, forces_);
+      for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!scene_.bodies[i].fixed) bodies_[i]->applyCentralForce(to_bt(forces_[i]));
     }
     // One fixed substep of exactly dt: no interpolation, no accumulator.
     world_.stepSimulation(dt_, 1, dt_);
@@ -104,6 +103,8 @@ class BulletSimulation : public Simulation {
   btDiscreteDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &configuration_};
   btEmptyShape empty_shape_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;
+  State state_{scene_.bodies.size()};  ///< read before each step for the forces
+  std::vector<Vec3> forces_;
 };
 
 class BulletBackend : public Backend {

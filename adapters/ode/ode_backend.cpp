@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "../point_body.hpp"
-#include "scene/air_forces.hpp"
 #include "scene/engine_keys.hpp"
+#include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
 
 namespace bb {
@@ -87,13 +87,13 @@ class OdeSimulation : public Simulation {
   OdeSimulation& operator=(const OdeSimulation&) = delete;
 
   void step() override {
-    // Air forces from the engine's own current velocity, as a game would add them.
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      const Body& b = scene_.bodies[i];
-      if (b.fixed || !scene_.air) continue;
-      const Vec3 f = air_force(scene_, b, from_ode(dBodyGetLinearVel(bodies_[i])),
-                               from_ode(dBodyGetAngularVel(bodies_[i])));
-      dBodyAddForce(bodies_[i], f.x, f.y, f.z);
+    // The harness's forces from the engine's own current state, as a game would add them.
+    if (has_external_forces(scene_)) {
+      read(state_);
+      external_forces(scene_, state_, forces_);
+      for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!scene_.bodies[i].fixed)
+          dBodyAddForce(bodies_[i], forces_[i].x, forces_[i].y, forces_[i].z);
     }
     if (quick_step_)
       dWorldQuickStep(world_, dt_);
@@ -127,6 +127,8 @@ class OdeSimulation : public Simulation {
   dWorldID world_;
   dThreadingImplementationID threading_;
   std::vector<dBodyID> bodies_;
+  State state_{scene_.bodies.size()};  ///< read before each step for the forces
+  std::vector<Vec3> forces_;
 };
 
 class OdeBackend : public Backend {

@@ -1,0 +1,20 @@
+#include "scene/external_forces.hpp"
+
+#include "scene/air_forces.hpp"
+
+namespace bb {
+
+bool has_external_forces(const Scene& scene) {
+  return scene.air.has_value();
+}
+
+void external_forces(const Scene& scene, const State& state, std::vector<Vec3>& forces) {
+  forces.resize(scene.bodies.size());
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& b = scene.bodies[i];
+    forces[i] =
+        b.fixed ? Vec3{} : air_force(scene, b, state[i].velocity, state[i].angular_velocity);
+  }
+}
+
+}  // namespace bb
