@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "scene/control_characters.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/text.hpp"
 #include "scene/toml_depth.hpp"
@@ -121,6 +122,7 @@ void check_size(const TomlReader& root, const Scene& scene) {
 }  // namespace
 
 Scene parse_case(std::string_view text, const std::string& file) {
+  refuse_control_characters(text, file);
   // toml++ recurses on key parts and nesting: bound them before it sees the text.
   check_toml_depth(text, file);
   toml::table table;
