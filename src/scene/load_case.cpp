@@ -65,6 +65,11 @@ void read_timing(TomlReader& root, Scene& scene) {
 
 void read_header(TomlReader& root, Scene& scene) {
   scene.name = root.string("name");
+  if (character_count(scene.name) > kMaxNameLength)
+    root.fail(root.line_of("name"), "'name' is " + std::to_string(character_count(scene.name)) +
+                                        " characters long; a case name may be at most " +
+                                        std::to_string(kMaxNameLength) +
+                                        " (it names the output files)");
   if (!is_name(scene.name, false))
     root.fail(root.line_of("name"),
               "'name' must use only a-z, 0-9 and _ (it names the output files), not '" +
