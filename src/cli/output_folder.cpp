@@ -64,8 +64,9 @@ void remove_stale_temporaries(const std::string& folder) {
 }
 
 void check_output_names(const Scene& scene) {
-  // The longest temporary suffix: ".tmp." and a pid of up to 7 digits.
-  const std::size_t room = NAME_MAX - 12;
+  // The longest temporary suffix: ".plot.tmp." (a plot's working folder) and a pid of up
+  // to 7 digits.
+  const std::size_t room = NAME_MAX - 17;
   for (const std::string& name : output_file_names(scene))
     if (name.size() > room)
       throw CaseError(scene.file, 1,

@@ -86,10 +86,13 @@ std::string run_gnuplot(const std::string& script, const std::string& log) {
 /// written.
 std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
                  const std::string& name, int height = 600) {
-  char folder_template[] = "/tmp/beachball-plot-XXXXXX";
-  const char* folder = mkdtemp(folder_template);
-  if (folder == nullptr) throw WriteError("/tmp/beachball-plot-XXXXXX", std::strerror(errno));
-  const fs::path temp(folder);
+  // gnuplot's script and data sit beside the SVG under a temporary name: if this process
+  // is killed, the next run removes them with the other temporaries of dead processes.
+  const fs::path temp = batch.folder() + "/" + name + ".plot" + temporary_suffix();
+  std::error_code ec;
+  fs::remove_all(temp, ec);
+  if (!fs::create_directory(temp, ec))
+    throw WriteError(temp.string(), ec ? ec.message() : std::string("it exists"));
   // The temporary folder goes, whatever happens.
   struct Cleanup {
     fs::path path;
