@@ -36,4 +36,11 @@ position = [0.0, 10.0, 0.0]
 drag_coefficient = 0.47
 )";
 
+/// kMinimalCase named `name`.
+inline std::string minimal_case(const std::string& name) {
+  std::string text = kMinimalCase;
+  text.replace(text.find("\"minimal\""), 9, "\"" + name + "\"");
+  return text;
+}
+
 }  // namespace bb::test
