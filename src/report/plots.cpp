@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -109,11 +110,13 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
   const std::string ended = run_gnuplot((temp / "plot.gp").string(), (temp / "log.txt").string());
   if (!ended.empty() || !complete_svg(output)) {
     std::ifstream log(temp / "log.txt");
-    const std::string said(std::istreambuf_iterator<char>(log), {});
+    std::string said(std::istreambuf_iterator<char>(log), {});
+    while (!said.empty() && std::isspace(static_cast<unsigned char>(said.back()))) said.pop_back();
     std::remove(output.c_str());
     throw WriteError(batch.folder() + "/" + name,
-                     !ended.empty() ? "gnuplot failed (" + ended + "): " + said
-                                    : "gnuplot left an incomplete SVG (is the disk full?)");
+                     !ended.empty()
+                         ? "gnuplot failed (" + ended + ")" + (said.empty() ? "" : ": " + said)
+                         : "gnuplot left an incomplete SVG (is the disk full?)");
   }
   return "";
 }
