@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -119,6 +120,24 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
   EXPECT_EQ(test::snapshot(out), new_report);
   EXPECT_EQ(test::temporaries_in(dir), "");
   EXPECT_EQ(test::temporaries_in(out), "");
+}
+
+// Only the temporaries of dead processes go: a living process may still be writing its own.
+TEST(KilledReport, TheNextRunKeepsTheTemporariesOfLivingProcesses) {
+  const fs::path dir = test::fresh_dir("living_temporaries");
+  const std::string kept = test::write_case(dir, "kept.toml", test::minimal_case("kept"));
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  const std::string living = ".tmp." + std::to_string(getpid());
+  std::ofstream(out / ("kept.md" + living)) << "being written";
+  fs::create_directories(dir / ("out" + living));
+  std::ofstream(out / "kept.md.tmp.999999999") << "left by a dead run";
+  const test::Outcome o = test::beachball("run " + kept + " --no-cost --out " + out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_TRUE(fs::exists(out / ("kept.md" + living)));
+  EXPECT_TRUE(fs::exists(dir / ("out" + living)));
+  EXPECT_FALSE(fs::exists(out / "kept.md.tmp.999999999"));
+  EXPECT_TRUE(fs::exists(out / "kept.md"));
 }
 
 }  // namespace
