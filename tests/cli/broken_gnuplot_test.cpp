@@ -28,51 +28,38 @@ std::string fake_gnuplot(const std::string& name, const std::string& act) {
   return dir;
 }
 
-class BrokenGnuplot : public ::testing::Test {
- protected:
-  /// One good report, made once, that every test starts from.
-  static void SetUpTestSuite() {
-    dir_ = test::fresh_dir("broken_gnuplot");
-    case_ = test::write_case(dir_, "kept.toml", test::minimal_case("kept"));
-    const test::Outcome o =
-        test::beachball("report " + case_ + " --no-cost --out " + dir_ + "/good");
-    ASSERT_EQ(o.exit_code, 0) << o.out;
-  }
+/// A good report, then one with the `gnuplot` of folder `fake` first on PATH: it must exit
+/// 2 naming the first plot and `reason`, and leave the good report as it was. (Each test
+/// has folders of its own: ctest runs tests in parallel.)
+void expect_refused_and_kept(const std::string& fake, const std::string& reason) {
+  const std::string dir = fake + "_report";
+  fs::remove_all(dir);
+  const std::string kept = test::write_case(dir, "kept.toml", test::minimal_case("kept"));
+  const std::string report = "report " + kept + " --no-cost --out " + dir + "/out";
+  const test::Outcome good = test::beachball(report);
+  ASSERT_EQ(good.exit_code, 0) << good.out;
+  const auto before = test::snapshot(dir + "/out");
+  const test::Outcome o = test::beachball(report, "export PATH=" + fake + ":$PATH;");
+  EXPECT_EQ(o.exit_code, 2) << o.out;
+  EXPECT_NE(o.out.find("kept-work-precision-position_max.svg"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find(reason), std::string::npos) << o.out;
+  EXPECT_EQ(test::snapshot(dir + "/out"), before) << "the previous report changed";
+  EXPECT_EQ(test::temporaries_in(dir), "");
+  EXPECT_EQ(test::temporaries_in(dir + "/out"), "");
+}
 
-  /// A report with `fake` first on PATH, over a copy of the good report: it must exit 2
-  /// naming the first plot and `reason`, and leave the copy as it was.
-  void expect_refused_and_kept(const std::string& fake, const std::string& reason) {
-    const fs::path out = fs::path(dir_) / fake.substr(fake.rfind('/') + 1);
-    fs::remove_all(out);
-    fs::copy(dir_ + "/good", out);
-    const auto before = test::snapshot(out);
-    const test::Outcome o = test::beachball("report " + case_ + " --no-cost --out " + out.string(),
-                                            "export PATH=" + fake + ":$PATH;");
-    EXPECT_EQ(o.exit_code, 2) << o.out;
-    EXPECT_NE(o.out.find("kept-work-precision-position_max.svg"), std::string::npos) << o.out;
-    EXPECT_NE(o.out.find(reason), std::string::npos) << o.out;
-    EXPECT_EQ(test::snapshot(out), before) << "the previous report changed";
-    EXPECT_EQ(test::temporaries_in(dir_), "");
-    EXPECT_EQ(test::temporaries_in(out), "");
-  }
-
-  static std::string dir_, case_;
-};
-
-std::string BrokenGnuplot::dir_, BrokenGnuplot::case_;
-
-TEST_F(BrokenGnuplot, AFailingGnuplotIsAnErrorWithWhatItSaid) {
+TEST(BrokenGnuplot, AFailingGnuplotIsAnErrorWithWhatItSaid) {
   expect_refused_and_kept(
       fake_gnuplot("gnuplot_exits_1", "echo 'fake gnuplot: cannot draw' >&2; exit 1"),
       "gnuplot failed (exit 1): fake gnuplot: cannot draw");
 }
 
-TEST_F(BrokenGnuplot, AKilledGnuplotIsAnError) {
+TEST(BrokenGnuplot, AKilledGnuplotIsAnError) {
   expect_refused_and_kept(fake_gnuplot("gnuplot_killed", "kill -9 $$"),
                           "gnuplot failed (killed by signal 9)");
 }
 
-TEST_F(BrokenGnuplot, ACutOffSvgIsAnError) {
+TEST(BrokenGnuplot, ACutOffSvgIsAnError) {
   expect_refused_and_kept(
       fake_gnuplot("gnuplot_cuts_svg", "printf '<?xml version=\"1.0\"?>\\n<svg><g>' > \"$out\""),
       "gnuplot left an incomplete SVG");
