@@ -97,7 +97,7 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
     std::this_thread::sleep_for(std::chrono::milliseconds(ms));
     kill_and_look(pid, "after " + std::to_string(ms) + " ms");
   }
-  for (int quarter = 0; quarter < 16 && (quarter <= 5 || new_seen == 0); ++quarter) {
+  for (int quarter = 0; quarter < 40 && (quarter <= 5 || new_seen == 0); ++quarter) {
     fs::remove_all(out);
     fs::copy(dir / "old", out);
     const pid_t pid = report(out);
