@@ -64,8 +64,9 @@ void remove_stale_temporaries(const std::string& folder) {
 }
 
 void check_output_names(const Scene& scene) {
-  // The longest temporary suffix: ".tmp." and a pid of up to 7 digits.
-  const std::size_t room = NAME_MAX - 12;
+  // The longest temporary suffix: ".plot.tmp." (a plot's working folder) and a pid of up
+  // to 7 digits.
+  const std::size_t room = NAME_MAX - 17;
   for (const std::string& name : output_file_names(scene))
     if (name.size() > room)
       throw CaseError(scene.file, 1,
@@ -78,6 +79,16 @@ void check_writable(const std::string& folder) {
   std::error_code ec;
   fs::create_directories(folder, ec);
   if (ec) throw CaseError(folder, 0, "cannot create the output folder: " + ec.message());
+  // An unnamed file tests the folder and leaves nothing behind, even if this process is
+  // killed; only a file system without O_TMPFILE gets a named probe.
+  const int fd = open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd >= 0) {
+    close(fd);
+    return;
+  }
+  if (errno != EOPNOTSUPP && errno != EISDIR)
+    throw CaseError(folder, 0,
+                    std::string("cannot write into the output folder: ") + std::strerror(errno));
   const std::string probe = folder + "/.beachball-probe" + temporary_suffix();
   write_whole_file(probe, "");
   std::remove(probe.c_str());

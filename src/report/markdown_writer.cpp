@@ -5,6 +5,7 @@
 #include <set>
 
 #include "report/format.hpp"
+#include "report/markdown_text.hpp"
 #include "report/scene_description.hpp"
 #include "report/summary_tables.hpp"
 #include "report/work_precision.hpp"
@@ -36,10 +37,13 @@ std::string settings_text(const Settings& settings) {
 
 std::string results_markdown(const CaseResults& results, const PlotFiles& plots) {
   const Scene& scene = *results.scene;
-  std::string out = fmt::format("# {}\n\nCase `{}`", scene.title, scene.name);
+  // The case's own text goes through markdown_text: a title cannot end the heading or add
+  // HTML. The name needs nothing (the loader allows a-z, 0-9 and _ only).
+  std::string out = fmt::format("# {}\n\nCase `{}`", markdown_text(scene.title), scene.name);
   if (!scene.seed.empty())
-    out += fmt::format(", from section \"{}\" of the course text", scene.seed);
-  out += fmt::format(". Case file: `{}`.\n\n## Scene\n\n{}\n", scene.file, describe_scene(scene));
+    out += fmt::format(", from section \"{}\" of the course text", markdown_text(scene.seed));
+  out += fmt::format(". Case file: `{}`.\n\n## Scene\n\n{}\n", markdown_text(scene.file),
+                     describe_scene(scene));
 
   out += fmt::format("## Results at report_dt = {} s\n\n", format_dt(scene.report_dt));
   out +=
@@ -53,7 +57,7 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   const auto notes = run_notes(results, scene.report_dt);
   if (!notes.empty()) {
     out += "\n";
-    for (const std::string& n : notes) out += "- " + n + "\n";
+    for (const std::string& n : notes) out += "- " + markdown_text(n) + "\n";
   }
   out +=
       "\nThe order column is the least-squares slope of log position_max against log dt over "
@@ -101,7 +105,7 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   out += fmt::format("Cheapest step of the sweep that keeps {} within {:g}:\n\n", first,
                      scene.report.target);
   out += render_markdown(cheapest_step_table(results, first, scene.report.target));
-  if (!plots.note.empty()) out += "\n" + plots.note + "\n";
+  if (!plots.note.empty()) out += "\n" + markdown_text(plots.note) + "\n";
 
   if (!results.stability.empty()) {
     out += fmt::format(
@@ -127,12 +131,12 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
       "is repeated until the timed total reaches a minimum and the median is reported\n";
   out += "- versions:";
   for (const auto& [library, version] : results.versions)
-    out += " " + library + " " + version + ";";
+    out += " " + markdown_text(library + " " + version) + ";";
   out += "\n\n## Engine settings\n\n";
   std::set<std::string> seen;
   for (const RunRecord& run : results.runs)
     if (!run.engine_settings.empty() && seen.insert(run.backend).second)
-      out += "- " + run.backend + ": " + settings_text(run.engine_settings) + "\n";
+      out += "- " + markdown_text(run.backend + ": " + settings_text(run.engine_settings)) + "\n";
   return out;
 }
 

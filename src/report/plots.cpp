@@ -1,9 +1,14 @@
 #include "report/plots.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <signal.h>
 #include <stdlib.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -53,15 +58,42 @@ bool complete_svg(const std::string& path) {
   return tail.find("</svg>") != std::string::npos;
 }
 
+/// Runs gnuplot on `script` with its stderr into `log` and waits: "" when it succeeded,
+/// else how it ended. No shell stands between (a path may hold any character), and gnuplot
+/// dies with this process, like the children of the pool.
+std::string run_gnuplot(const std::string& script, const std::string& log) {
+  std::fflush(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) return std::string("cannot start gnuplot: ") + std::strerror(errno);
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd >= 0) dup2(fd, STDERR_FILENO);
+    execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return std::string("cannot wait for gnuplot: ") + std::strerror(errno);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  return WIFEXITED(status) ? "exit " + std::to_string(WEXITSTATUS(status))
+                           : "killed by signal " + std::to_string(WTERMSIG(status));
+}
+
 /// Runs `script` (which reads `data`) and writes the SVG as `name` into `batch`. Returns
 /// an error for a plot there is nothing to draw; throws WriteError when a file could not be
 /// written.
 std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
                  const std::string& name, int height = 600) {
-  char folder_template[] = "/tmp/beachball-plot-XXXXXX";
-  const char* folder = mkdtemp(folder_template);
-  if (folder == nullptr) throw WriteError("/tmp/beachball-plot-XXXXXX", std::strerror(errno));
-  const fs::path temp(folder);
+  // gnuplot's script and data sit beside the SVG under a temporary name: if this process
+  // is killed, the next run removes them with the other temporaries of dead processes.
+  const fs::path temp = batch.folder() + "/" + name + ".plot" + temporary_suffix();
+  std::error_code ec;
+  fs::remove_all(temp, ec);
+  if (!fs::create_directory(temp, ec))
+    throw WriteError(temp.string(), ec ? ec.message() : std::string("it exists"));
   // The temporary folder goes, whatever happens.
   struct Cleanup {
     fs::path path;
@@ -75,16 +107,16 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
   write_whole_file((temp / "plot.gp").string(),
                    terminal(height) + "set output " + quote(output) + "\n" +
                        "data = " + quote((temp / "data.txt").string()) + "\n" + script_body);
-  const std::string command =
-      "gnuplot " + (temp / "plot.gp").string() + " 2> " + (temp / "log.txt").string();
-  const int status = std::system(command.c_str());
-  if (status != 0 || !complete_svg(output)) {
+  const std::string ended = run_gnuplot((temp / "plot.gp").string(), (temp / "log.txt").string());
+  if (!ended.empty() || !complete_svg(output)) {
     std::ifstream log(temp / "log.txt");
-    const std::string said(std::istreambuf_iterator<char>(log), {});
+    std::string said(std::istreambuf_iterator<char>(log), {});
+    while (!said.empty() && std::isspace(static_cast<unsigned char>(said.back()))) said.pop_back();
     std::remove(output.c_str());
     throw WriteError(batch.folder() + "/" + name,
-                     status != 0 ? "gnuplot failed: " + said
-                                 : "gnuplot left an incomplete SVG (is the disk full?)");
+                     !ended.empty()
+                         ? "gnuplot failed (" + ended + ")" + (said.empty() ? "" : ": " + said)
+                         : "gnuplot left an incomplete SVG (is the disk full?)");
   }
   return "";
 }

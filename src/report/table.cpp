@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "report/markdown_text.hpp"
+
 namespace bb {
 
 namespace {
@@ -32,9 +34,19 @@ std::string pad(const std::string& s, std::size_t width, bool to_right) {
   return to_right ? fill + s : s + fill;
 }
 
+/// Every header and cell through markdown_text, so no text can break a row.
+Table escaped(const Table& t) {
+  Table out = t;
+  for (std::string& h : out.headers) h = markdown_text(h);
+  for (auto& row : out.rows)
+    for (std::string& cell : row) cell = markdown_text(cell);
+  return out;
+}
+
 }  // namespace
 
-std::string render_markdown(const Table& t) {
+std::string render_markdown(const Table& table) {
+  const Table t = escaped(table);
   const auto w = widths(t);
   std::string out = "|";
   for (std::size_t c = 0; c < t.headers.size(); ++c)

@@ -13,6 +13,7 @@ struct Table {
   std::vector<bool> right_aligned;
 };
 
+/// Every header and cell goes through markdown_text: no text breaks a row or adds HTML.
 std::string render_markdown(const Table& table);
 std::string render_text(const Table& table);
 

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/load_case.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/text.hpp"
 
@@ -89,6 +90,10 @@ void read_bodies(TomlReader& root, Scene& scene) {
     Body b;
     b.line = r.line();
     b.name = r.string("name");
+    if (character_count(b.name) > kMaxNameLength)
+      r.fail(r.line_of("name"), "a body name is " + std::to_string(character_count(b.name)) +
+                                    " characters long; it may be at most " +
+                                    std::to_string(kMaxNameLength));
     if (!is_name(b.name, true, ".-"))
       r.fail(r.line_of("name"),
              "a body name uses only letters, digits, '_', '.' and '-', not '" + b.name + "'");

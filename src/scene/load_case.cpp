@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "scene/control_characters.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/text.hpp"
 #include "scene/toml_depth.hpp"
@@ -64,6 +65,11 @@ void read_timing(TomlReader& root, Scene& scene) {
 
 void read_header(TomlReader& root, Scene& scene) {
   scene.name = root.string("name");
+  if (character_count(scene.name) > kMaxNameLength)
+    root.fail(root.line_of("name"), "'name' is " + std::to_string(character_count(scene.name)) +
+                                        " characters long; a case name may be at most " +
+                                        std::to_string(kMaxNameLength) +
+                                        " (it names the output files)");
   if (!is_name(scene.name, false))
     root.fail(root.line_of("name"),
               "'name' must use only a-z, 0-9 and _ (it names the output files), not '" +
@@ -121,6 +127,7 @@ void check_size(const TomlReader& root, const Scene& scene) {
 }  // namespace
 
 Scene parse_case(std::string_view text, const std::string& file) {
+  refuse_control_characters(text, file);
   // toml++ recurses on key parts and nesting: bound them before it sees the text.
   check_toml_depth(text, file);
   toml::table table;

@@ -8,6 +8,9 @@
 
 namespace bb {
 
+/// Longest case name and body name, in characters: a name goes into file names, table
+/// cells and headings.
+inline constexpr std::size_t kMaxNameLength = 64;
 /// Largest case file accepted, in bytes.
 inline constexpr std::size_t kMaxCaseFileBytes = 1 << 20;
 /// Most particles a [grid] may generate, and most bodies in a case.

@@ -15,6 +15,13 @@ inline std::string joined(const std::vector<std::string>& words) {
   return out;
 }
 
+/// Characters in UTF-8 `s` (continuation bytes do not count).
+inline std::size_t character_count(const std::string& s) {
+  std::size_t n = 0;
+  for (unsigned char c : s) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
 /// True when `s` is not empty and every character is a-z, 0-9, '_', or one of `extra`;
 /// `upper` allows A-Z too.
 inline bool is_name(const std::string& s, bool upper, const char* extra = "") {

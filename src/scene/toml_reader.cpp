@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "scene/control_characters.hpp"
+
 namespace bb {
 
 namespace {
@@ -105,12 +107,20 @@ bool TomlReader::boolean_or(const std::string& key, bool fallback) {
   return b->get();
 }
 
+std::string TomlReader::text(const std::string& key, const toml::node& node) const {
+  const std::string& value = node.as_string()->get();
+  // TOML's escapes ("\u001b") can put into a string what the file itself may not hold.
+  if (const auto control = first_control_character(value))
+    fail(node_line(node, line_), quoted(key) + " holds a control character (" + *control +
+                                     "); text in a case is one line of printable characters");
+  return value;
+}
+
 std::string TomlReader::string(const std::string& key) {
   const toml::node& node = require(key);
-  const auto* s = node.as_string();
-  if (s == nullptr)
+  if (!node.is_string())
     fail(node_line(node, line_), quoted(key) + " must be a string, not " + type_word(node));
-  return s->get();
+  return text(key, node);
 }
 
 std::string TomlReader::string_or(const std::string& key, const std::string& fallback) {
@@ -151,11 +161,10 @@ std::vector<std::string> TomlReader::strings(const std::string& key) {
          quoted(key) + " must be a list of strings, not " + type_word(node));
   std::vector<std::string> out;
   for (const toml::node& element : *array) {
-    const auto* s = element.as_string();
-    if (s == nullptr)
+    if (!element.is_string())
       fail(node_line(element, line_),
            quoted(key) + " must be a list of strings; one entry is " + type_word(element));
-    out.push_back(s->get());
+    out.push_back(text(key, element));
   }
   return out;
 }
@@ -192,6 +201,10 @@ void TomlReader::finish() const {
     const std::string name(key.str());
     if (read_.count(name) == 0) {
       const auto line = static_cast<int>(key.source().begin.line);
+      // A quoted key can hold escaped control characters; the message does not repeat them.
+      if (const auto control = first_control_character(name))
+        fail(line > 0 ? line : node_line(node, line_),
+             "a key in " + where_ + " holds a control character (" + *control + ")");
       fail(line > 0 ? line : node_line(node, line_),
            "unknown key " + quoted(name) + " in " + where_ + " (check the spelling)");
     }

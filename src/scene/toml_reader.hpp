@@ -52,6 +52,8 @@ class TomlReader {
   const toml::node* find(const std::string& key);
   const toml::node& require(const std::string& key);
   double as_number(const std::string& key, const toml::node& node) const;
+  /// A string node's value; fails when it holds a control character.
+  std::string text(const std::string& key, const toml::node& node) const;
 
   const toml::table& table_;
   std::string file_;

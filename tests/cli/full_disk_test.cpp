@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <map>
 
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -31,18 +30,6 @@ struct SmallDisk {
   bool mounted = false;
 };
 
-/// Every file under `folder` with its bytes.
-std::map<std::string, std::string> snapshot(const std::string& folder) {
-  std::map<std::string, std::string> out;
-  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
-    if (!entry.is_regular_file()) continue;
-    std::ifstream in(entry.path(), std::ios::binary);
-    out[fs::relative(entry.path(), folder).string()] =
-        std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  return out;
-}
-
 /// Fills the disk at `path` until fewer than `left` bytes are free.
 void fill(const std::string& path, std::size_t left) {
   const fs::space_info space = fs::space(path);
@@ -63,14 +50,14 @@ TEST(FullDisk, AReportThatCannotBeWrittenLeavesTheOldOneAndExitsTwo) {
   const std::string out = disk.path + "/report";
   const test::Outcome first = test::beachball("report " + drag + " --no-cost --out " + out);
   ASSERT_EQ(first.exit_code, 0) << first.out;
-  const auto before = snapshot(out);
+  const auto before = test::snapshot(out);
   ASSERT_GE(before.size(), 5u);
 
   fill(disk.path, 20 * 1024);
   const test::Outcome full = test::beachball("report " + drag + " --no-cost --out " + out);
   EXPECT_EQ(full.exit_code, 2) << full.out;
   EXPECT_NE(full.out.find("No space left on device"), std::string::npos) << full.out;
-  EXPECT_EQ(snapshot(out), before) << "the previous report changed";
+  EXPECT_EQ(test::snapshot(out), before) << "the previous report changed";
   EXPECT_FALSE(has_temporaries(disk.path)) << "temporaries were left behind";
 }
 
@@ -85,7 +72,7 @@ TEST(FullDisk, ARunIntoANewFolderLeavesNoPartialFile) {
   EXPECT_NE(o.out.find("No space left on device"), std::string::npos) << o.out;
   // Nothing half-written: the folder holds no output at all.
   if (fs::exists(out)) {
-    EXPECT_TRUE(snapshot(out).empty());
+    EXPECT_TRUE(test::snapshot(out).empty());
   }
   EXPECT_FALSE(has_temporaries(disk.path));
 }
@@ -98,14 +85,14 @@ TEST(FileSizeLimit, AReportThatCannotBeWrittenLeavesTheOldOneAndExitsTwo) {
   const std::string out = dir + "/report";
   const test::Outcome first = test::beachball("report " + drag + " --no-cost --out " + out);
   ASSERT_EQ(first.exit_code, 0) << first.out;
-  const auto before = snapshot(out);
+  const auto before = test::snapshot(out);
 
   // 8 blocks of 1024 bytes: smaller than the page, larger than nothing.
   const test::Outcome limited =
       test::beachball("report " + drag + " --no-cost --out " + out, "trap '' XFSZ; ulimit -f 8;");
   EXPECT_EQ(limited.exit_code, 2) << limited.out;
   EXPECT_NE(limited.out.find("File too large"), std::string::npos) << limited.out;
-  EXPECT_EQ(snapshot(out), before) << "the previous report changed";
+  EXPECT_EQ(test::snapshot(out), before) << "the previous report changed";
   EXPECT_FALSE(has_temporaries(dir)) << "temporaries were left behind";
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "scene/backend_names.hpp"
+#include "scene/case_error.hpp"
 #include "scene/engine_keys.hpp"
 #include "support/test_support.hpp"
 
@@ -85,6 +86,25 @@ TEST(LoadCase, EveryBundledCaseLoads) {
     ++count;
   }
   EXPECT_GE(count, 3);
+}
+
+// The limits' edges: 64-character names, tabs and CRLF line ends in the file, and
+// non-ASCII text and markup in a title load.
+TEST(LoadCase, NamesOfSixtyFourCharactersTabsAndLineEndsLoad) {
+  std::string text = test::kMinimalCase;
+  text.replace(text.find("\"minimal\""), 9, "\"" + std::string(64, 'c') + "\"");
+  text.replace(text.find("\"ball\""), 6, "\"" + std::string(64, 'B') + "\"");
+  text = "title = \"An éléphant | <b>\"\t# a comment\t\n" + text;
+  std::string crlf;
+  for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const Scene s = test::scene_from(crlf);
+  EXPECT_EQ(s.name, std::string(64, 'c'));
+  EXPECT_EQ(s.bodies.at(0).name, std::string(64, 'B'));
+  EXPECT_EQ(s.title, "An éléphant | <b>");
+  // A tab written as an escape is a control character in the value; a raw tab in the
+  // file, outside strings, is whitespace.
+  EXPECT_THROW(test::scene_from("title = \"a\\tb\"\n" + std::string(test::kMinimalCase)),
+               CaseError);
 }
 
 }  // namespace

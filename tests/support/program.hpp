@@ -1,14 +1,19 @@
-// Running the `beachball` program from a test: its exit code and everything it printed.
+// Running the `beachball` program from a test: its exit code and everything it printed,
+// or a running one to signal; and a folder's files as bytes, to compare before and after.
 #pragma once
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace bb::test {
 
@@ -46,6 +51,53 @@ inline std::string write_case(const std::string& dir, const std::string& file,
   const std::string path = dir + "/" + file;
   std::ofstream(path) << text;
   return path;
+}
+
+/// Starts `beachball ARGS` without waiting, its output to `log`; returns its pid.
+inline pid_t start_beachball(const std::vector<std::string>& args, const std::string& log) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    std::vector<const char*> argv = {BEACHBALL_PROGRAM};
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    argv.push_back(nullptr);
+    execv(BEACHBALL_PROGRAM, const_cast<char* const*>(argv.data()));
+    _exit(127);
+  }
+  return pid;
+}
+
+/// Waits for `pid`: its exit code, or 128 + the signal that ended it.
+inline int wait_for(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/// The whole content of a file.
+inline std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Every file under `folder` (path relative to it) with its bytes.
+inline std::map<std::string, std::string> snapshot(const std::filesystem::path& folder) {
+  std::map<std::string, std::string> out;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
+    if (entry.is_regular_file())
+      out[std::filesystem::relative(entry.path(), folder).string()] = file_bytes(entry.path());
+  return out;
+}
+
+/// Names in `folder` that are temporaries or staging folders (".tmp." in them), one string.
+inline std::string temporaries_in(const std::filesystem::path& folder) {
+  std::string found;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (entry.path().filename().string().find(".tmp.") != std::string::npos)
+      found += entry.path().filename().string() + " ";
+  return found;
 }
 
 }  // namespace bb::test

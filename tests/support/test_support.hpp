@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include "scene/load_case.hpp"
 
@@ -35,5 +36,29 @@ mass = 1.0
 position = [0.0, 10.0, 0.0]
 drag_coefficient = 0.47
 )";
+
+/// kMinimalCase named `name`.
+inline std::string minimal_case(const std::string& name) {
+  std::string text = kMinimalCase;
+  text.replace(text.find("\"minimal\""), 9, "\"" + name + "\"");
+  return text;
+}
+
+/// kMinimalCase named `name` made slow: 10 bodies over 1000 simulated seconds in 10 million
+/// steps, so each run's child works for seconds and the whole run for tens of seconds.
+inline std::string slow_case(const std::string& name) {
+  std::string text = minimal_case(name);
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"duration = 1.0", "duration = 1000.0"},
+        {"sample = 0.1", "sample = 0.01"},
+        {"dt = [0.1, 0.05]", "dt = [0.0001]"},
+        {"report_dt = 0.05", "report_dt = 0.0001"}})
+    text.replace(text.find(from), from.size(), to);
+  for (int body = 1; body < 10; ++body)
+    text += "\n[[body]]\nname = \"ball" + std::to_string(body) +
+            "\"\nradius = 0.5\nmass = 1.0\nposition = [" + std::to_string(body) +
+            ".0, 10.0, 0.0]\ndrag_coefficient = 0.47\n";
+  return text;
+}
 
 }  // namespace bb::test

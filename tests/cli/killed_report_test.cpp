@@ -1,0 +1,144 @@
+// A report SIGKILLed at any moment, the write phase included, leaves either the previous
+// report byte for byte or the complete new one, never a mix: the new report is built in
+// `<out>.tmp.<pid>` and exchanged with the old in one renameat2. Whatever the killed
+// report left behind goes at the next run.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include "support/program.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// Whether `pid` has ended (it stays waitable).
+bool ended(pid_t pid) {
+  siginfo_t info{};
+  return waitid(P_PID, pid, &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid;
+}
+
+/// Whether report `pid` has begun to write: a file in its staging folder `<out>.tmp.<pid>`,
+/// or a temporary of its own in `out` itself.
+bool writing(pid_t pid, const fs::path& out) {
+  const std::string suffix = ".tmp." + std::to_string(pid);
+  std::error_code ec;
+  if (!fs::is_empty(out.string() + suffix, ec) && !ec) return true;
+  for (const auto& entry : fs::directory_iterator(out, ec))
+    if (entry.path().filename().string().ends_with(suffix)) return true;
+  return false;
+}
+
+/// Waits until report `pid` begins to write; false when it ended first or did not begin
+/// within 10 s.
+bool wait_for_writing(pid_t pid, const fs::path& out) {
+  for (const Clock::time_point give_up = Clock::now() + std::chrono::seconds(10);
+       Clock::now() < give_up && !ended(pid);) {
+    if (writing(pid, out)) return true;
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  return false;
+}
+
+/// An old report as a report folder may hold it: the pages of a case "gone" and, under the
+/// names the new report writes, other bytes.
+void write_old_report(const fs::path& folder, const std::map<std::string, std::string>& fresh) {
+  fs::create_directories(folder);
+  for (const auto& [name, bytes] : fresh) std::ofstream(folder / name) << "old " << name << "\n";
+  for (const char* name : {"gone.md", "gone.json", "gone.csv", "gone-energy.svg"})
+    std::ofstream(folder / name) << "old " << name << "\n";
+}
+
+TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClearsUp) {
+  const fs::path dir = test::fresh_dir("killed_report");
+  const std::string kept = test::write_case(dir, "kept.toml", test::minimal_case("kept"));
+  const std::string log = (dir / "log.txt").string();
+  const auto report = [&](const fs::path& out) {
+    return test::start_beachball({"report", kept, "--no-cost", "--out", out.string()}, log);
+  };
+  // One report unkilled: the new report, and how long its write phase takes.
+  const pid_t first = report(dir / "new");
+  ASSERT_TRUE(wait_for_writing(first, dir / "new")) << test::file_bytes(log);
+  const Clock::time_point writing = Clock::now();
+  ASSERT_EQ(test::wait_for(first), 0) << test::file_bytes(log);
+  const Clock::duration write_phase = Clock::now() - writing;
+  const auto new_report = test::snapshot(dir / "new");
+  write_old_report(dir / "old", new_report);
+  const auto old_report = test::snapshot(dir / "old");
+
+  const fs::path out = dir / "out";
+  int old_seen = 0, new_seen = 0, left_temporaries = 0;
+  const auto kill_and_look = [&](pid_t pid, const std::string& when) {
+    kill(pid, SIGKILL);
+    test::wait_for(pid);
+    const auto now = test::snapshot(out);
+    const bool is_old = now == old_report, is_new = now == new_report;
+    EXPECT_TRUE(is_old || is_new) << "killed " << when << ": a mix of old and new";
+    old_seen += is_old;
+    new_seen += is_new;
+    left_temporaries += !test::temporaries_in(dir).empty();
+  };
+  // Kills while the cases run, then at quarters of the write phase from its first file on,
+  // until one comes too late to stop the report.
+  for (const int ms : {0, 100}) {
+    fs::remove_all(out);
+    fs::copy(dir / "old", out);
+    const pid_t pid = report(out);
+    std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+    kill_and_look(pid, "after " + std::to_string(ms) + " ms");
+  }
+  for (int quarter = 0; quarter < 40 && (quarter <= 5 || new_seen == 0); ++quarter) {
+    fs::remove_all(out);
+    fs::copy(dir / "old", out);
+    const pid_t pid = report(out);
+    wait_for_writing(pid, out);
+    std::this_thread::sleep_for(write_phase * quarter / 4);
+    kill_and_look(pid, std::to_string(quarter) + " quarters into writing");
+  }
+  // Both ends were reached, and kills during writing left temporaries behind.
+  EXPECT_GT(old_seen, 0);
+  EXPECT_GT(new_seen, 0);
+  EXPECT_GT(left_temporaries, 0);
+
+  // One more run clears what dead processes left, inside and beside the folder (pid
+  // 999999999 is above any pid_max, so its process is surely gone).
+  std::ofstream(out / "kept.md.tmp.999999999") << "left by a dead report";
+  fs::create_directories(out / "kept-energy.svg.plot.tmp.999999999");
+  fs::create_directories(dir / "out.tmp.999999999");
+  std::ofstream(dir / "out.tmp.999999999" / "kept.md") << "a dead report's staging folder";
+  ASSERT_EQ(test::wait_for(report(out)), 0) << test::file_bytes(log);
+  EXPECT_EQ(test::snapshot(out), new_report);
+  EXPECT_EQ(test::temporaries_in(dir), "");
+  EXPECT_EQ(test::temporaries_in(out), "");
+}
+
+// Only the temporaries of dead processes go: a living process may still be writing its own.
+TEST(KilledReport, TheNextRunKeepsTheTemporariesOfLivingProcesses) {
+  const fs::path dir = test::fresh_dir("living_temporaries");
+  const std::string kept = test::write_case(dir, "kept.toml", test::minimal_case("kept"));
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  const std::string living = ".tmp." + std::to_string(getpid());
+  std::ofstream(out / ("kept.md" + living)) << "being written";
+  fs::create_directories(dir / ("out" + living));
+  std::ofstream(out / "kept.md.tmp.999999999") << "left by a dead run";
+  const test::Outcome o = test::beachball("run " + kept + " --no-cost --out " + out.string());
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_TRUE(fs::exists(out / ("kept.md" + living)));
+  EXPECT_TRUE(fs::exists(dir / ("out" + living)));
+  EXPECT_FALSE(fs::exists(out / "kept.md.tmp.999999999"));
+  EXPECT_TRUE(fs::exists(out / "kept.md"));
+}
+
+}  // namespace
+}  // namespace bb
