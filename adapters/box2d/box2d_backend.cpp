@@ -14,7 +14,7 @@ namespace bb {
 namespace {
 
 b2Vec2 to_b2(const Vec3& v) {
-  return {float(v.x), float(v.y)};
+  return {float(v.x()), float(v.y())};
 }
 
 class Box2dSimulation : public Simulation {
@@ -30,7 +30,7 @@ class Box2dSimulation : public Simulation {
       def.position = to_b2(b.position);
       def.angle = float(angle_about_z(b.orientation));
       def.linearVelocity = to_b2(b.velocity);
-      def.angularVelocity = float(b.angular_velocity.z);
+      def.angularVelocity = float(b.angular_velocity.z());
       def.linearDamping = float(engine_setting(scene, "box2d", "linear_damping"));
       def.angularDamping = float(engine_setting(scene, "box2d", "angular_damping"));
       def.allowSleep = false;
@@ -38,7 +38,7 @@ class Box2dSimulation : public Simulation {
       // No contacts in the scene, so no fixtures: mass and inertia are set directly. A point
       // body gets a small sphere's inertia, as in every engine (point_body.hpp).
       if (!b.fixed) {
-        b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z)};
+        b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z())};
         body->SetMassData(&mass);
       }
       bodies_.push_back(body);
@@ -61,10 +61,9 @@ class Box2dSimulation : public Simulation {
       const b2Body& body = *bodies_[i];
       const b2Vec2 p = body.GetPosition();
       const b2Vec2 v = body.GetLinearVelocity();
-      out[i] = {{p.x, p.y, 0.0},
-                {v.x, v.y, 0.0},
-                quat_from_axis_angle({0, 0, 1}, body.GetAngle()),
-                {0.0, 0.0, body.GetAngularVelocity()}};
+      out[i] = {Vec3(p.x, p.y, 0.0), Vec3(v.x, v.y, 0.0),
+                quat_from_axis_angle(Vec3::UnitZ(), body.GetAngle()),
+                Vec3(0.0, 0.0, body.GetAngularVelocity())};
     }
   }
 

@@ -15,7 +15,7 @@ namespace bb {
 namespace {
 
 btVector3 to_bt(const Vec3& v) {
-  return {btScalar(v.x), btScalar(v.y), btScalar(v.z)};
+  return {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())};
 }
 Vec3 from_bt(const btVector3& v) {
   return {v.x(), v.y(), v.z()};
@@ -39,8 +39,8 @@ class BulletSimulation : public Simulation {
                                                     to_bt(engine_inertia(b)));
       info.m_startWorldTransform.setOrigin(to_bt(b.position));
       info.m_startWorldTransform.setRotation(
-          btQuaternion(btScalar(b.orientation.x), btScalar(b.orientation.y),
-                       btScalar(b.orientation.z), btScalar(b.orientation.w)));
+          btQuaternion(btScalar(b.orientation.x()), btScalar(b.orientation.y()),
+                       btScalar(b.orientation.z()), btScalar(b.orientation.w())));
       info.m_linearDamping = linear_damping;
       info.m_angularDamping = angular_damping;
       auto body = std::make_unique<btRigidBody>(info);

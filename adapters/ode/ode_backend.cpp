@@ -50,7 +50,7 @@ class OdeSimulation : public Simulation {
     dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_),
                                          threading_);
     quick_step_ = engine_setting(scene, "ode", "quick_step") != 0.0;
-    dWorldSetGravity(world_, scene.gravity.x, scene.gravity.y, scene.gravity.z);
+    dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), scene.gravity.z());
     dWorldSetERP(world_, engine_setting(scene, "ode", "erp"));
     dWorldSetCFM(world_, engine_setting(scene, "ode", "cfm"));
     dWorldSetQuickStepNumIterations(
@@ -61,8 +61,9 @@ class OdeSimulation : public Simulation {
     for (const Body& b : scene.bodies) {
       // No contacts in the scene: no space, no geoms, only bodies.
       dBodyID body = dBodyCreate(world_);
-      dBodySetPosition(body, b.position.x, b.position.y, b.position.z);
-      const dQuaternion q = {b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z};
+      dBodySetPosition(body, b.position.x(), b.position.y(), b.position.z());
+      const dQuaternion q = {b.orientation.w(), b.orientation.x(), b.orientation.y(),
+                             b.orientation.z()};
       dBodySetQuaternion(body, q);
       if (b.fixed) {
         dBodySetKinematic(body);
@@ -70,10 +71,11 @@ class OdeSimulation : public Simulation {
         // A point body is a small sphere here: ODE refuses a zero inertia (dMassCheck).
         const Vec3 inertia = engine_inertia(b);
         dMass mass;
-        dMassSetParameters(&mass, b.mass, 0, 0, 0, inertia.x, inertia.y, inertia.z, 0, 0, 0);
+        dMassSetParameters(&mass, b.mass, 0, 0, 0, inertia.x(), inertia.y(), inertia.z(), 0, 0, 0);
         dBodySetMass(body, &mass);
-        dBodySetLinearVel(body, b.velocity.x, b.velocity.y, b.velocity.z);
-        dBodySetAngularVel(body, b.angular_velocity.x, b.angular_velocity.y, b.angular_velocity.z);
+        dBodySetLinearVel(body, b.velocity.x(), b.velocity.y(), b.velocity.z());
+        dBodySetAngularVel(body, b.angular_velocity.x(), b.angular_velocity.y(),
+                           b.angular_velocity.z());
       }
       dBodySetAutoDisableFlag(body, 0);
       bodies_.push_back(body);
@@ -93,7 +95,7 @@ class OdeSimulation : public Simulation {
       external_forces(scene_, state_, forces_);
       for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (!scene_.bodies[i].fixed)
-          dBodyAddForce(bodies_[i], forces_[i].x, forces_[i].y, forces_[i].z);
+          dBodyAddForce(bodies_[i], forces_[i].x(), forces_[i].y(), forces_[i].z());
     }
     if (quick_step_)
       dWorldQuickStep(world_, dt_);

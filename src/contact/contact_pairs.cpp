@@ -4,10 +4,6 @@ namespace bb::contact {
 
 namespace {
 
-Eigen::Vector3d eigen(const Vec3& v) {
-  return {v.x, v.y, v.z};
-}
-
 double radius(const Body& b) {
   return b.shape == Shape::Sphere ? b.radius : 0.0;
 }
@@ -37,10 +33,9 @@ std::vector<ContactPair> contact_pairs(const Scene& scene) {
 Proximity measure(const Scene& scene, const ContactPair& pair, const Eigen::Vector3d& xa,
                   const Eigen::Vector3d& xb, const Eigen::Quaterniond& qb) {
   const Body& a = scene.bodies[pair.a];
-  if (pair.ground())
-    return sphere_plane(xa, radius(a), eigen(scene.ground->point), eigen(scene.ground->normal));
+  if (pair.ground()) return sphere_plane(xa, radius(a), scene.ground->point, scene.ground->normal);
   const Body& b = scene.bodies[pair.b];
-  if (b.shape == Shape::Box) return sphere_box(xa, radius(a), xb, qb, eigen(b.half_extents));
+  if (b.shape == Shape::Box) return sphere_box(xa, radius(a), xb, qb, b.half_extents);
   return sphere_sphere(xa, radius(a), xb, radius(b));
 }
 

@@ -24,7 +24,7 @@ class CourseSimulation : public Simulation {
       points_.v.push_back(b.velocity);
       orientation_.push_back(b.orientation);
       omega_.push_back(b.angular_velocity);
-      spins_ = spins_ || norm(b.angular_velocity) > 0.0;
+      spins_ = spins_ || b.angular_velocity.norm() > 0.0;
     }
     work_.resize(start.size());
     settings_ = {{"integrator", variant.integrator}};
@@ -51,7 +51,8 @@ class CourseSimulation : public Simulation {
     // left by the rotation the spin makes in one step (exact for a torque-free sphere).
     if (spins_)
       for (std::size_t i = 0; i < omega_.size(); ++i)
-        orientation_[i] = normalized(quat_from_rotation_vector(omega_[i], dt_) * orientation_[i]);
+        orientation_[i] =
+            (quat_from_rotation_vector(omega_[i], dt_) * orientation_[i]).normalized();
   }
 
   void read(State& out) const override {
@@ -64,14 +65,9 @@ class CourseSimulation : public Simulation {
  private:
   void push(const Impulse& imp) {
     const std::size_t i = static_cast<std::size_t>(imp.body);
-    const Quat& q = orientation_[i];
-    Eigen::Vector3d v(points_.v[i].x, points_.v[i].y, points_.v[i].z);
-    Eigen::Vector3d w(omega_[i].x, omega_[i].y, omega_[i].z);
-    contact::apply_impulse(scene_.bodies[i], imp, {points_.x[i].x, points_.x[i].y, points_.x[i].z},
-                           Eigen::Quaterniond(q.w, q.x, q.y, q.z), v, w);
-    points_.v[i] = {v.x(), v.y(), v.z()};
-    omega_[i] = {w.x(), w.y(), w.z()};
-    spins_ = spins_ || w.norm() > 0.0;
+    contact::apply_impulse(scene_.bodies[i], imp, points_.x[i], orientation_[i], points_.v[i],
+                           omega_[i]);
+    spins_ = spins_ || omega_[i].norm() > 0.0;
   }
 
   const Scene& scene_;

@@ -2,21 +2,11 @@
 
 namespace bb::course {
 
-namespace {
-
-Eigen::Vector3d eigen(const Vec3& v) {
-  return {v.x, v.y, v.z};
-}
-Vec3 plain(const Eigen::Vector3d& v) {
-  return {v.x(), v.y(), v.z()};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 ContactPhases::ContactPhases(const Scene& scene, GroundRule rule)
     : scene_(scene), rule_(rule), pairs_(contact::contact_pairs(scene)) {
-  for (const Body& b : scene.bodies)
-    orientation_.emplace_back(b.orientation.w, b.orientation.x, b.orientation.y, b.orientation.z);
+  for (const Body& b : scene.bodies) orientation_.push_back(b.orientation);
   found_.reserve(pairs_.size());
 }
 
@@ -25,8 +15,7 @@ void ContactPhases::detect(const std::vector<Vec3>& x) {
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const contact::ContactPair& p = pairs_[k];
     const int b = p.ground() ? p.a : p.b;
-    const contact::Proximity near =
-        contact::measure(scene_, p, eigen(x[p.a]), eigen(x[b]), orientation_[b]);
+    const contact::Proximity near = contact::measure(scene_, p, x[p.a], x[b], orientation_[b]);
     if (near.gap < 0.0) found_.push_back({k, near});
   }
 }
@@ -35,20 +24,20 @@ void ContactPhases::resolve(std::vector<Vec3>& x, std::vector<Vec3>& v) {
   for (const FoundContact& c : found_) {
     const contact::ContactPair& p = pairs_[c.pair];
     const bool against_fixed = p.ground() || scene_.bodies[p.b].fixed;
-    Eigen::Vector3d xa = eigen(x[p.a]), va = eigen(v[p.a]);
+    Eigen::Vector3d xa = x[p.a], va = v[p.a];
     if (against_fixed) {
       // Seed section 3: the ground rule, for the floor and for walls alike.
       resolve_fixed(rule_, c.proximity, p.restitution, xa, va);
     } else {
       // Seed section 4: the blend along the line of centres, while the bodies approach.
-      Eigen::Vector3d vb = eigen(v[p.b]);
+      Eigen::Vector3d vb = v[p.b];
       if ((va - vb).dot(c.proximity.normal) >= 0.0) continue;
       blend_collision(scene_.bodies[p.a].mass, scene_.bodies[p.b].mass, p.restitution,
                       c.proximity.normal, va, vb);
-      v[p.b] = plain(vb);
+      v[p.b] = vb;
     }
-    x[p.a] = plain(xa);
-    v[p.a] = plain(va);
+    x[p.a] = xa;
+    v[p.a] = va;
   }
 }
 

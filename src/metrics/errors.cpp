@@ -29,9 +29,9 @@ ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory
     const State& s = run.states[j];
     const State& r = reference.states[j];
     for (std::size_t i = 0; i < bodies; ++i) {
-      const double dx = norm(s[i].position - r[i].position);
+      const double dx = (s[i].position - r[i].position).norm();
       m.position_max = std::max(m.position_max, dx);
-      m.velocity_max = std::max(m.velocity_max, norm(s[i].velocity - r[i].velocity));
+      m.velocity_max = std::max(m.velocity_max, (s[i].velocity - r[i].velocity).norm());
       sum_squares[i] += dx * dx;
       if (j + 1 == run.states.size()) m.position_final = std::max(m.position_final, dx);
     }
@@ -49,7 +49,7 @@ double max_position_difference(const Trajectory& a, const Trajectory& b) {
   const std::size_t n = std::min(a.states.size(), b.states.size());
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t i = 0; i < a.states[j].size(); ++i)
-      worst = std::max(worst, norm(a.states[j][i].position - b.states[j][i].position));
+      worst = std::max(worst, (a.states[j][i].position - b.states[j][i].position).norm());
   return worst;
 }
 

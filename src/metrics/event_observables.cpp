@@ -24,14 +24,14 @@ std::optional<ObservableValue> measure_event(const Observe& observe, const Event
     if (kind == "bounce_apex") return nth(b.apex_heights, observe.n, "apexes after a contact");
     if (kind == "max_penetration") return ObservableValue{b.max_penetration, ""};
     if (!b.post_velocity) return ObservableValue{std::nullopt, "the body touched nothing"};
-    return ObservableValue{norm(*b.post_velocity), ""};
+    return ObservableValue{(*b.post_velocity).norm(), ""};
   }
   if (kind != "momentum_change" && kind != "energy_change") return std::nullopt;
   const auto& c = events.first_collision;
   if (!c) return ObservableValue{std::nullopt, "no two moving bodies collided"};
   if (c->body_a != observe.body && c->body_b != observe.body)
     return ObservableValue{std::nullopt, "the first collision is between other bodies"};
-  if (kind == "momentum_change") return ObservableValue{norm(c->momentum_change), ""};
+  if (kind == "momentum_change") return ObservableValue{c->momentum_change.norm(), ""};
   return ObservableValue{c->kinetic_energy_after - c->kinetic_energy_before, ""};
 }
 

@@ -13,10 +13,10 @@ ObservableValue terminal_speed(const Scene& scene, const Body& body) {
     return {std::nullopt, does_not_apply + " has no drag"};
   if (!scene.air || scene.air->density <= 0.0)
     return {std::nullopt, does_not_apply + " is not in air"};
-  const double g = norm(scene.gravity);
+  const double g = scene.gravity.norm();
   if (g <= 0.0) return {std::nullopt, "does not apply: the case has no gravity"};
   // A spinning body's Magnus force also carries it, so it settles at another speed.
-  if (body.magnus != 0.0 && norm(body.angular_velocity) > 0.0)
+  if (body.magnus != 0.0 && body.angular_velocity.norm() > 0.0)
     return {std::nullopt, does_not_apply + " spins and feels a Magnus force"};
   const double k = 0.5 * scene.air->density * body.drag_coefficient * frontal_area(body);
   return {std::sqrt(body.mass * g / k), ""};
@@ -32,13 +32,13 @@ ObservableValue measure(const Scene& scene, const Observe& observe, const Trajec
   // Bounces, contacts and collisions come from the run's events, seen at every step.
   if (auto from_events = measure_event(observe, trajectory.events)) return *from_events;
   const Vec3& v = trajectory.states.back()[observe.body].velocity;
-  if (observe.kind == "final_speed") return {norm(v), ""};
+  if (observe.kind == "final_speed") return {v.norm(), ""};
   if (observe.kind == "terminal_velocity") {
     const Body& body = scene.bodies[observe.body];
     const ObservableValue theory = terminal_speed(scene, body);
     if (!theory.value) return theory;
     // The drag acts on the velocity relative to the air, so that speed tends to v_t.
-    return {norm(v - scene.air->wind), ""};
+    return {(v - scene.air->wind).norm(), ""};
   }
   return {std::nullopt, "kind '" + observe.kind + "' is not measured by this version of beachball"};
 }

@@ -9,7 +9,7 @@ namespace bb {
 double error_floor(const Trajectory& reference, double self_check, long steps) {
   double largest = 0.0;
   for (const State& state : reference.states)
-    for (const BodyState& b : state) largest = std::max(largest, norm(b.position));
+    for (const BodyState& b : state) largest = std::max(largest, b.position.norm());
   const double rounding = std::numeric_limits<double>::epsilon() * largest *
                           std::max(100.0, static_cast<double>(steps));
   return std::max(10.0 * self_check, rounding);

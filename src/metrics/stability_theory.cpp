@@ -15,7 +15,7 @@ std::optional<TheoreticalLimit> theoretical_limit(const Scene& scene,
     return std::nullopt;
   // Linearised about the terminal velocity, the velocity relaxes at rate lambda = 2 g / v_t,
   // v_t = sqrt(2 m g / (rho Cd A)); the stiffest body (smallest v_t) sets the limit.
-  const double g = norm(scene.gravity);
+  const double g = scene.gravity.norm();
   double vt_min = std::numeric_limits<double>::infinity();
   for (const Body& b : scene.bodies) {
     if (b.fixed || b.drag_coefficient <= 0.0) continue;

@@ -7,14 +7,6 @@ namespace bb {
 
 namespace {
 
-Eigen::Vector3d eigen(const Vec3& v) {
-  return {v.x, v.y, v.z};
-}
-
-Eigen::Quaterniond eigen(const Quat& q) {
-  return {q.w, q.x, q.y, q.z};
-}
-
 double radius(const Body& b) {
   return b.shape == Shape::Sphere ? b.radius : 0.0;
 }
@@ -22,7 +14,7 @@ double radius(const Body& b) {
 /// Kinetic energy (J) of bodies a and b.
 double kinetic_energy(const Scene& scene, const State& s, int a, int b) {
   double e = 0.0;
-  for (int i : {a, b}) e += 0.5 * scene.bodies[i].mass * dot(s[i].velocity, s[i].velocity);
+  for (int i : {a, b}) e += 0.5 * scene.bodies[i].mass * s[i].velocity.dot(s[i].velocity);
   return e;
 }
 
@@ -49,11 +41,11 @@ void StepObserver::observe(double t, const State& s) {
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const contact::ContactPair& pair = pairs_[k];
     const int b = pair.ground() ? pair.a : pair.b;
-    const contact::Proximity p = contact::measure(scene_, pair, eigen(s[pair.a].position),
-                                                  eigen(s[b].position), eigen(s[b].orientation));
+    const contact::Proximity p =
+        contact::measure(scene_, pair, s[pair.a].position, s[b].position, s[b].orientation);
     const bool b_moves = !pair.ground() && !scene_.bodies[pair.b].fixed;
     const Eigen::Vector3d relative =
-        eigen(s[pair.a].velocity) - (b_moves ? eigen(s[pair.b].velocity) : Eigen::Vector3d::Zero());
+        s[pair.a].velocity - (b_moves ? s[pair.b].velocity : Eigen::Vector3d::Zero());
     const double closing = -relative.dot(p.normal);
     if (p.gap < 0.0) {
       BodyEvents& a = trace_.bodies[pair.a];
@@ -82,9 +74,9 @@ void StepObserver::observe(double t, const State& s) {
         // impulse m g dt and its work m g . dx. The rest is the collision's.
         const Body &body_a = scene_.bodies[pair.a], &body_b = scene_.bodies[pair.b];
         const double mass = body_a.mass + body_b.mass;
-        const double gravity_work = dot(
-            scene_.gravity, (s[pair.a].position - previous_[pair.a].position) * body_a.mass +
-                                (s[pair.b].position - previous_[pair.b].position) * body_b.mass);
+        const double gravity_work =
+            scene_.gravity.dot((s[pair.a].position - previous_[pair.a].position) * body_a.mass +
+                               (s[pair.b].position - previous_[pair.b].position) * body_b.mass);
         trace_.first_collision = {pair.a,
                                   pair.b,
                                   t,
@@ -100,14 +92,14 @@ void StepObserver::observe(double t, const State& s) {
   }
   // Apexes: a body that bounced stops rising above the ground.
   if (scene_.ground) {
-    const Eigen::Vector3d n = eigen(scene_.ground->normal), ground = eigen(scene_.ground->point);
+    const Eigen::Vector3d n = scene_.ground->normal, ground = scene_.ground->point;
     for (std::size_t i = 0; i < s.size(); ++i) {
       if (scene_.bodies[i].fixed) continue;
-      const bool rising = eigen(s[i].velocity).dot(n) > 0.0;
+      const bool rising = s[i].velocity.dot(n) > 0.0;
       if (!first_ && rising_[i] && !rising && bounced_[i]) {
         // The apex lies between the two steps: the higher of them is the one seen.
-        const double now = (eigen(s[i].position) - ground).dot(n);
-        const double before = (eigen(previous_[i].position) - ground).dot(n);
+        const double now = (s[i].position - ground).dot(n);
+        const double before = (previous_[i].position - ground).dot(n);
         trace_.bodies[i].apex_heights.push_back(std::max(now, before));
         bounced_[i] = false;
       }

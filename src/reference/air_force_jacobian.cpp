@@ -17,8 +17,7 @@ AirForceJacobian air_force_jacobian(const Scene& scene, const Body& body, const 
                                     const Eigen::Vector3d& omega) {
   AirForceJacobian j;
   if (!scene.air) return j;
-  const Eigen::Vector3d u =
-      v - Eigen::Vector3d(scene.air->wind.x, scene.air->wind.y, scene.air->wind.z);
+  const Eigen::Vector3d u = v - scene.air->wind;
   if (body.drag_coefficient > 0.0) {
     // d(-k |u| u)/du = -k (|u| I + u u^T / |u|), which vanishes as u goes to zero.
     const double k = 0.5 * body.drag_coefficient * frontal_area(body) * scene.air->density;

@@ -28,7 +28,7 @@ double fastest_rate(const Scene& scene, const SceneModel& model, const std::vect
     if (body.fixed) continue;
     const Vec3& v = state[i].velocity;
     const Vec3& w = state[i].angular_velocity;
-    const AirForceJacobian j = air_force_jacobian(scene, body, {v.x, v.y, v.z}, {w.x, w.y, w.z});
+    const AirForceJacobian j = air_force_jacobian(scene, body, v, w);
     rate = std::max(rate, j.by_velocity.operatorNorm() / body.mass);
   }
   return rate;

@@ -18,13 +18,6 @@ using Eigen::Vector3d;
 using ConstVec = Eigen::Map<const Vector3d>;
 using Vec = Eigen::Map<Vector3d>;
 
-Vector3d eigen(const Vec3& v) {
-  return {v.x, v.y, v.z};
-}
-Vec3 plain(const Vector3d& v) {
-  return {v.x(), v.y(), v.z()};
-}
-
 // Where each part of body i sits in the integrated state.
 std::size_t at(int i) {
   return SceneModel::kPerBody * static_cast<std::size_t>(i);
@@ -49,7 +42,7 @@ double inverse_mass(const Body& b) {
 
 /// Euler's equations in the world frame, torque-free: I dw/dt = -w x (I w).
 Vector3d angular_acceleration(const Body& body, const Quaterniond& q, const Vector3d& omega) {
-  const Vector3d principal = eigen(principal_inertia(body));
+  const Vector3d principal = principal_inertia(body);
   if (principal.minCoeff() <= 0.0) return Vector3d::Zero();
   const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
   const Eigen::Matrix3d inertia = r * principal.asDiagonal() * r.transpose();
@@ -85,7 +78,7 @@ SceneModel::SceneModel(const Scene& scene)
   for (const contact::ContactPair& pair : contact::contact_pairs(scene))
     sources_.push_back({false, -1, pair});
   // Apexes are heights above the ground, watched while gravity pulls towards it.
-  if (scene.ground && -eigen(scene.gravity).dot(eigen(scene.ground->normal)) > 0.0)
+  if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
       if (!scene.bodies[i].fixed) sources_.push_back({true, i, {}});
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it
@@ -93,8 +86,8 @@ SceneModel::SceneModel(const Scene& scene)
   const std::vector<double> y = initial_state();
   for (const contact::ContactPair& pair : contact::contact_pairs(scene)) {
     if (!pair.ground()) continue;
-    const Vector3d n = eigen(scene.ground->normal);
-    const bool pressed = -eigen(scene.gravity).dot(n) > 0.0;
+    const Vector3d n = scene.ground->normal;
+    const bool pressed = -scene.gravity.dot(n) > 0.0;
     if (pressed && std::abs(proximity(pair, y.data()).gap) <= kSimultaneousGap &&
         std::abs(velocity(y.data(), pair.a).dot(n)) <= 1e-12)
       resting_[pair.a] = true;
@@ -108,10 +101,10 @@ std::vector<double> SceneModel::initial_state() const {
     const BodyState& s = start[i];
     double* p = y.data() + at(static_cast<int>(i));
     const double values[kPerBody] = {
-        s.position.x,        s.position.y,    s.position.z,         s.velocity.x,
-        s.velocity.y,        s.velocity.z,    s.orientation.w,      s.orientation.x,
-        s.orientation.y,     s.orientation.z, s.angular_velocity.x, s.angular_velocity.y,
-        s.angular_velocity.z};
+        s.position.x(),        s.position.y(),    s.position.z(),         s.velocity.x(),
+        s.velocity.y(),        s.velocity.z(),    s.orientation.w(),      s.orientation.x(),
+        s.orientation.y(),     s.orientation.z(), s.angular_velocity.x(), s.angular_velocity.y(),
+        s.angular_velocity.z()};
     std::copy(values, values + kPerBody, p);
   }
   return y;
@@ -121,10 +114,7 @@ void SceneModel::read(const double* y, State& out) const {
   for (std::size_t i = 0; i < out.size(); ++i) {
     const int b = static_cast<int>(i);
     const Quaterniond q = orientation(y, b).normalized();
-    out[i] = {plain(position(y, b)),
-              plain(velocity(y, b)),
-              {q.w(), q.x(), q.y(), q.z()},
-              plain(spin(y, b))};
+    out[i] = {position(y, b), velocity(y, b), q, spin(y, b)};
   }
 }
 
@@ -137,11 +127,10 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
       continue;
     }
     const Vector3d v = velocity(y, i), omega = spin(y, i);
-    Vector3d a =
-        eigen(scene_.gravity) + eigen(air_force(scene_, body, plain(v), plain(omega))) / body.mass;
+    Vector3d a = scene_.gravity + (air_force(scene_, body, v, omega)) / body.mass;
     // A body resting on the ground is held there: the ground takes any push into it.
     if (resting_[i]) {
-      const Vector3d n = eigen(scene_.ground->normal);
+      const Vector3d n = scene_.ground->normal;
       if (a.dot(n) < 0.0) a -= a.dot(n) * n;
     }
     Vec{d} = v;
@@ -172,9 +161,8 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
     const AirForceJacobian air = air_force_jacobian(scene_, body, v, omega);
     Eigen::Matrix3d project = Eigen::Matrix3d::Identity();
     if (resting_[i]) {
-      const Vector3d n_ground = eigen(scene_.ground->normal);
-      const Vector3d a = eigen(scene_.gravity) +
-                         eigen(air_force(scene_, body, plain(v), plain(omega))) / body.mass;
+      const Vector3d n_ground = scene_.ground->normal;
+      const Vector3d a = scene_.gravity + (air_force(scene_, body, v, omega)) / body.mass;
       if (a.dot(n_ground) < 0.0) project -= n_ground * n_ground.transpose();
     }
     j.block<3, 3>(o + 3, o + 3) = project * air.by_velocity / body.mass;
@@ -213,7 +201,7 @@ void SceneModel::events(double, const double* y, double* g) {
     if (s.apex) {
       // The normal velocity falling through zero after a bounce is the apex.
       const bool watching = after_bounce_[s.body] && !resting_[s.body];
-      g[k] = watching ? velocity(y, s.body).dot(eigen(scene_.ground->normal)) : 1.0;
+      g[k] = watching ? velocity(y, s.body).dot(scene_.ground->normal) : 1.0;
     } else if (s.pair.ground() && resting_[s.pair.a]) {
       g[k] = 1.0;
     } else {
@@ -227,8 +215,7 @@ double SceneModel::max_step(double, const double* y) {
   const auto thickness = [&](int i) {
     const Body& b = scene_.bodies[i];
     if (b.shape == Shape::Sphere) return 2.0 * b.radius;
-    if (b.shape == Shape::Box)
-      return 2.0 * std::min({b.half_extents.x, b.half_extents.y, b.half_extents.z});
+    if (b.shape == Shape::Box) return 2.0 * b.half_extents.minCoeff();
     return 0.0;
   };
   double limit = std::numeric_limits<double>::infinity();
@@ -291,16 +278,16 @@ void SceneModel::resolve(const contact::ContactPair& pair, double* y, double t) 
     if (body < 0) continue;
     BodyEvents& e = trace_.bodies[body];
     e.contact_times.push_back(t);
-    if (!e.post_velocity) e.post_velocity = plain(velocity(y, body));
+    if (!e.post_velocity) e.post_velocity = (velocity(y, body));
     after_bounce_[body] = true;
   }
   if (b_moves && !trace_.first_collision)
-    trace_.first_collision = {
-        pair.a, pair.b, t, plain(momentum(y) - momentum_before), energy_before, kinetic_energy(y)};
+    trace_.first_collision = {pair.a,        pair.b,           t, (momentum(y) - momentum_before),
+                              energy_before, kinetic_energy(y)};
   for (int body : {pair.a, pair.b}) {
     if (body < 0 || !resting_[body]) continue;
     // An impulse may lift a resting body off the ground, but not press it in.
-    const double up = velocity(y, body).dot(eigen(scene_.ground->normal));
+    const double up = velocity(y, body).dot(scene_.ground->normal);
     if (up < 0.0)
       throw BeyondExactAnswer("at t = " + std::to_string(t) + " s body '" +
                               scene_.bodies[body].name +
@@ -309,8 +296,8 @@ void SceneModel::resolve(const contact::ContactPair& pair, double* y, double t) 
   }
   if (!ground) return;
   // Ever smaller bounces end: a rebound this short leaves the body resting on the ground.
-  const Vector3d n = eigen(scene_.ground->normal);
-  const double pull = -eigen(scene_.gravity).dot(n);
+  const Vector3d n = scene_.ground->normal;
+  const double pull = -scene_.gravity.dot(n);
   const double rebound = velocity(y, pair.a).dot(n);
   if (pull > 0.0 && 2.0 * rebound / pull < rest_flight_time()) {
     resting_[pair.a] = true;
@@ -329,7 +316,7 @@ void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
   if (!resting_[i]) return;
   resting_[i] = false;
   // Pressed into the ground it rests on: the ground answers at once, as at a contact.
-  if (v.dot(eigen(scene_.ground->normal)) < 0.0)
+  if (v.dot(scene_.ground->normal) < 0.0)
     for (const Source& s : sources_)
       if (!s.apex && s.pair.ground() && s.pair.a == i) resolve(s.pair, y, t);
 }
@@ -337,8 +324,8 @@ void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
 void SceneModel::apply(std::size_t k, double t, double* y) {
   const Source& s = sources_[k];
   if (!s.apex) return resolve(s.pair, y, t);
-  const Vector3d above = Vector3d(position(y, s.body)) - eigen(scene_.ground->point);
-  trace_.bodies[s.body].apex_heights.push_back(above.dot(eigen(scene_.ground->normal)));
+  const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
+  trace_.bodies[s.body].apex_heights.push_back(above.dot(scene_.ground->normal));
   after_bounce_[s.body] = false;
 }
 

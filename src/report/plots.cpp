@@ -176,7 +176,7 @@ std::vector<const RunRecord*> report_runs(const CaseResults& results) {
 int main_axis(const Trajectory& reference, std::size_t body) {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for (const State& s : reference.states) {
-    const double v[3] = {s[body].position.x, s[body].position.y, s[body].position.z};
+    const double v[3] = {s[body].position.x(), s[body].position.y(), s[body].position.z()};
     for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], v[a]), hi[a] = std::max(hi[a], v[a]);
   }
   int best = 1;
@@ -223,9 +223,9 @@ std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const 
       const Trajectory& t = runs[i]->trajectory;
       std::vector<double> coordinate;
       for (const State& s : t.states)
-        coordinate.push_back(axis == 0   ? s[b].position.x
-                             : axis == 1 ? s[b].position.y
-                                         : s[b].position.z);
+        coordinate.push_back(axis == 0   ? s[b].position.x()
+                             : axis == 1 ? s[b].position.y()
+                                         : s[b].position.z());
       data += series_rows(t.times, coordinate) + "\n\n";
       plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
     }
@@ -268,7 +268,7 @@ std::string error_plot(const CaseResults& results, FileBatch& batch, const std::
     for (std::size_t j = 0; j < t.states.size() && j < reference.states.size(); ++j) {
       double worst = 0.0;
       for (std::size_t b = 0; b < t.states[j].size(); ++b)
-        worst = std::max(worst, norm(t.states[j][b].position - reference.states[j][b].position));
+        worst = std::max(worst, (t.states[j][b].position - reference.states[j][b].position).norm());
       // A log axis cannot show 0: such points are left out.
       if (worst <= 0.0) continue;
       times.push_back(t.times[j]);

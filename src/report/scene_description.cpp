@@ -10,8 +10,8 @@ namespace bb {
 namespace {
 
 std::string vec(const Vec3& v, int dims) {
-  return dims == 2 ? fmt::format("({:g}, {:g})", v.x, v.y)
-                   : fmt::format("({:g}, {:g}, {:g})", v.x, v.y, v.z);
+  return dims == 2 ? fmt::format("({:g}, {:g})", v.x(), v.y())
+                   : fmt::format("({:g}, {:g}, {:g})", v.x(), v.y(), v.z());
 }
 
 std::string shape_cell(const Body& b) {
@@ -19,8 +19,8 @@ std::string shape_cell(const Body& b) {
     case Shape::Sphere:
       return fmt::format("{} r = {:g} m", b.shell ? "shell" : "solid sphere", b.radius);
     case Shape::Box:
-      return fmt::format("box {:g} x {:g} x {:g} m", 2 * b.half_extents.x, 2 * b.half_extents.y,
-                         2 * b.half_extents.z);
+      return fmt::format("box {:g} x {:g} x {:g} m", 2 * b.half_extents.x(), 2 * b.half_extents.y(),
+                         2 * b.half_extents.z());
     case Shape::Point:
       return "point";
   }
@@ -50,11 +50,11 @@ std::string describe_scene(const Scene& scene) {
                "magnus k", "position m", "velocity m/s", "spin rad/s"};
   t.right_aligned = {false, false, true, true, true, false, false, false};
   for (const Body& b : scene.bodies)
-    t.rows.push_back(
-        {b.name, shape_cell(b), b.fixed ? "fixed" : fmt::format("{:g}", b.mass),
-         fmt::format("{:g}", b.drag_coefficient), fmt::format("{:g}", b.magnus),
-         vec(b.position, scene.dims), vec(b.velocity, scene.dims),
-         scene.dims == 2 ? fmt::format("{:g}", b.angular_velocity.z) : vec(b.angular_velocity, 3)});
+    t.rows.push_back({b.name, shape_cell(b), b.fixed ? "fixed" : fmt::format("{:g}", b.mass),
+                      fmt::format("{:g}", b.drag_coefficient), fmt::format("{:g}", b.magnus),
+                      vec(b.position, scene.dims), vec(b.velocity, scene.dims),
+                      scene.dims == 2 ? fmt::format("{:g}", b.angular_velocity.z())
+                                      : vec(b.angular_velocity, 3)});
   return out + "\n" + render_markdown(t);
 }
 

@@ -10,12 +10,12 @@ DivergenceBounds divergence_bounds(const Scene& scene) {
   // adds over the whole run; the farthest travel follows from it.
   double speed = 0.0, size = 1.0, mass = 0.0;
   for (const Body& b : scene.bodies) {
-    speed = std::max(speed, norm(b.velocity) + norm(b.angular_velocity) * b.radius);
-    size = std::max(size, norm(b.position) + b.radius + norm(b.half_extents));
+    speed = std::max(speed, b.velocity.norm() + b.angular_velocity.norm() * b.radius);
+    size = std::max(size, b.position.norm() + b.radius + b.half_extents.norm());
     mass += b.mass;
   }
-  const double t = scene.duration, g = norm(scene.gravity);
-  if (scene.air) speed += norm(scene.air->wind);
+  const double t = scene.duration, g = scene.gravity.norm();
+  if (scene.air) speed += scene.air->wind.norm();
   speed += g * t;
   const double travel = speed * t + size;
   DivergenceBounds bounds;
@@ -30,9 +30,9 @@ std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds
   for (std::size_t i = 0; i < state.size(); ++i) {
     const BodyState& s = state[i];
     const std::string& name = scene.bodies[i].name;
-    if (!is_finite(s.position) || !is_finite(s.velocity) || !is_finite(s.angular_velocity))
+    if (!s.position.allFinite() || !s.velocity.allFinite() || !s.angular_velocity.allFinite())
       return "body '" + name + "' has a NaN or infinite position or velocity";
-    if (norm(s.position - scene.bodies[i].position) > bounds.travel) {
+    if ((s.position - scene.bodies[i].position).norm() > bounds.travel) {
       std::ostringstream m;
       m << "body '" << name << "' moved more than " << bounds.travel
         << " m from its start, ten times what gravity and the initial speeds allow";

@@ -58,7 +58,7 @@ class Reader {
 };
 
 void put(Writer& w, const Vec3& v) {
-  w.raw(v.x), w.raw(v.y), w.raw(v.z);
+  w.raw(v.x()), w.raw(v.y()), w.raw(v.z());
 }
 Vec3 get_vec(Reader& r) {
   const double x = r.raw<double>(), y = r.raw<double>(), z = r.raw<double>();
@@ -132,8 +132,8 @@ std::string encode(const RunRecord& run) {
     w.raw(t.times[j]);
     for (const BodyState& b : t.states[j]) {
       put(w, b.position), put(w, b.velocity), put(w, b.angular_velocity);
-      w.raw(b.orientation.w), w.raw(b.orientation.x), w.raw(b.orientation.y),
-          w.raw(b.orientation.z);
+      w.raw(b.orientation.w()), w.raw(b.orientation.x()), w.raw(b.orientation.y()),
+          w.raw(b.orientation.z());
     }
   }
   put(w, t.events);

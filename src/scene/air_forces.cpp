@@ -5,11 +5,11 @@ namespace bb {
 Vec3 drag_force(const Body& body, const Air& air, const Vec3& velocity) {
   const Vec3 relative = velocity - air.wind;
   const double k = 0.5 * body.drag_coefficient * frontal_area(body) * air.density;
-  return relative * (-k * norm(relative));
+  return relative * (-k * relative.norm());
 }
 
 Vec3 magnus_force(const Body& body, const Air& air, const Vec3& velocity, const Vec3& omega) {
-  return cross(omega, velocity - air.wind) * body.magnus;
+  return omega.cross(velocity - air.wind) * body.magnus;
 }
 
 Vec3 air_force(const Scene& scene, const Body& body, const Vec3& velocity, const Vec3& omega) {

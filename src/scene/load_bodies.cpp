@@ -34,7 +34,7 @@ void read_geometry(TomlReader& r, Body& b) {
   }
   if (b.shape == Shape::Box) {
     b.half_extents = r.vec3("half_extents");
-    if (b.half_extents.x <= 0.0 || b.half_extents.y <= 0.0 || b.half_extents.z <= 0.0)
+    if (b.half_extents.x() <= 0.0 || b.half_extents.y() <= 0.0 || b.half_extents.z() <= 0.0)
       r.fail(r.line_of("half_extents"),
              "every 'half_extents' in " + r.where() + " must be greater than 0");
   } else {
@@ -59,11 +59,11 @@ void read_orientation(TomlReader& r, const Scene& scene, Body& b) {
       const std::vector<double> q = r.numbers("orientation", 4);
       const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
       if (n < 1e-12) r.fail(r.line_of("orientation"), "'orientation' must not be all zeros");
-      b.orientation = normalized({q[0], q[1], q[2], q[3]});
+      b.orientation = Quat(q[0], q[1], q[2], q[3]).normalized();
     }
   }
   b.angular_velocity = r.vec3_or("angular_velocity", {});
-  if (scene.dims == 2 && (b.angular_velocity.x != 0.0 || b.angular_velocity.y != 0.0))
+  if (scene.dims == 2 && (b.angular_velocity.x() != 0.0 || b.angular_velocity.y() != 0.0))
     r.fail(r.line_of("angular_velocity"),
            "a 2D body spins about z only: 'angular_velocity' must be [0, 0, wz]");
 }

@@ -27,7 +27,7 @@ int require_body(const TomlReader& reader, const Scene& scene, const std::string
 }
 
 Vec3 unit_vector(const TomlReader& reader, const std::string& key, const Vec3& v) {
-  const double length = norm(v);
+  const double length = v.norm();
   if (length < 1e-12)
     reader.fail(reader.line_of(key), "'" + key + "' in " + reader.where() +
                                          " must not be the zero vector (it gives a direction)");
@@ -36,7 +36,7 @@ Vec3 unit_vector(const TomlReader& reader, const std::string& key, const Vec3& v
 
 void require_planar(const TomlReader& reader, const Scene& scene, const std::string& key,
                     const Vec3& v) {
-  if (scene.dims == 2 && v.z != 0.0)
+  if (scene.dims == 2 && v.z() != 0.0)
     reader.fail(reader.line_of(key), "'" + key + "' in " + reader.where() +
                                          " has a z component, but the case is 2D (dims = 2): "
                                          "motion stays in the x-y plane");

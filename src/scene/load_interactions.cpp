@@ -83,7 +83,7 @@ void read_springs(TomlReader& root, Scene& scene) {
     s.damping = r.number_or("damping", 0.0);
     require_range(r, "damping", s.damping, 0.0, 0.0);
     s.rest_length =
-        r.number_or("rest_length", norm(scene.bodies[a].position - scene.bodies[b].position));
+        r.number_or("rest_length", (scene.bodies[a].position - scene.bodies[b].position).norm());
     require_range(r, "rest_length", s.rest_length, 0.0, 0.0);
     r.finish();
     scene.springs.push_back(s);
@@ -102,7 +102,7 @@ void read_hinges(TomlReader& root, Scene& scene) {
     h.anchor = r.vec3("anchor");
     require_planar(r, scene, "anchor", h.anchor);
     const Vec3 axis = r.vec3_or("axis", h.axis);
-    if (scene.dims == 2 && (axis.x != 0.0 || axis.y != 0.0))
+    if (scene.dims == 2 && (axis.x() != 0.0 || axis.y() != 0.0))
       r.fail(r.line_of("axis"), "in a 2D case a hinge turns about z: 'axis' must be [0, 0, 1]");
     h.axis = unit_vector(r, "axis", axis);
     r.finish();

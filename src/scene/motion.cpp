@@ -26,11 +26,11 @@ double total_energy(const Scene& scene, const State& state) {
     const BodyState& s = state[i];
     const Vec3 inertia = principal_inertia(body);
     // Rotational energy uses the spin in the body's own frame, where the inertia is diagonal.
-    const Vec3 w = rotate(conjugate(s.orientation), s.angular_velocity);
-    const double rotational =
-        0.5 * (inertia.x * w.x * w.x + inertia.y * w.y * w.y + inertia.z * w.z * w.z);
-    energy += 0.5 * body.mass * dot(s.velocity, s.velocity) + rotational -
-              body.mass * dot(scene.gravity, s.position);
+    const Vec3 w = rotate(s.orientation.conjugate(), s.angular_velocity);
+    const double rotational = 0.5 * (inertia.x() * w.x() * w.x() + inertia.y() * w.y() * w.y() +
+                                     inertia.z() * w.z() * w.z());
+    energy += 0.5 * body.mass * s.velocity.dot(s.velocity) + rotational -
+              body.mass * scene.gravity.dot(s.position);
   }
   return energy;
 }

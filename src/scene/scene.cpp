@@ -22,19 +22,19 @@ int Scene::body_index(const std::string& body_name) const {
 FeatureSet Scene::features() const {
   FeatureSet f;
   if (dims == 3) f.add(Feature::ThreeD);
-  if (norm(gravity) > 0.0) f.add(Feature::Gravity);
+  if (gravity.norm() > 0.0) f.add(Feature::Gravity);
   bool drag = false;
   bool magnus_used = false;
   for (const Body& b : bodies) {
     if (b.fixed) continue;
     if (air && air->density > 0.0 && b.drag_coefficient > 0.0) drag = true;
     if (air && b.magnus != 0.0) magnus_used = true;
-    if (norm(b.angular_velocity) > 0.0) f.add(Feature::Rotation);
+    if (b.angular_velocity.norm() > 0.0) f.add(Feature::Rotation);
     if (b.shape == Shape::Box) f.add(Feature::Boxes);
   }
   if (drag) f.add(Feature::Drag);
   if (magnus_used) f.add(Feature::Magnus);
-  if ((drag || magnus_used) && norm(air->wind) > 0.0) f.add(Feature::Wind);
+  if ((drag || magnus_used) && air->wind.norm() > 0.0) f.add(Feature::Wind);
   // Restitution and friction count only where something can touch.
   if (ground) {
     f.add(Feature::GroundContact);
@@ -63,8 +63,9 @@ Vec3 principal_inertia(const Body& body) {
     case Shape::Box: {
       // Full side lengths are twice the half extents.
       const Vec3 s = body.half_extents * 2.0;
-      return {m / 12.0 * (s.y * s.y + s.z * s.z), m / 12.0 * (s.x * s.x + s.z * s.z),
-              m / 12.0 * (s.x * s.x + s.y * s.y)};
+      return {m / 12.0 * (s.y() * s.y() + s.z() * s.z()),
+              m / 12.0 * (s.x() * s.x() + s.z() * s.z()),
+              m / 12.0 * (s.x() * s.x() + s.y() * s.y())};
     }
     case Shape::Point:
       return {};

@@ -18,18 +18,18 @@ enum class Shape { Sphere, Box, Point };
 struct Body {
   std::string name;
   Shape shape = Shape::Sphere;
-  double radius = 0.0;            ///< metres (sphere)
-  Vec3 half_extents;              ///< metres (box)
-  double mass = 0.0;              ///< kilograms; 0 for a fixed body
-  bool shell = false;             ///< sphere inertia 2/3 m r^2 when true, 2/5 m r^2 otherwise
-  Vec3 position;                  ///< metres
-  Vec3 velocity;                  ///< metres per second
-  Quat orientation;               ///< unit quaternion; 2D scenes rotate about z only
-  Vec3 angular_velocity;          ///< radians per second, world frame
-  double drag_coefficient = 0.0;  ///< Cd, dimensionless
-  double magnus = 0.0;            ///< k in F = k (omega x (v - wind)), kilograms
-  bool fixed = false;             ///< infinite mass, never moves
-  int line = 0;                   ///< line of the [[body]] header in the case file
+  double radius = 0.0;                  ///< metres (sphere)
+  Vec3 half_extents;                    ///< metres (box)
+  double mass = 0.0;                    ///< kilograms; 0 for a fixed body
+  bool shell = false;                   ///< sphere inertia 2/3 m r^2 when true, 2/5 m r^2 otherwise
+  Vec3 position;                        ///< metres
+  Vec3 velocity;                        ///< metres per second
+  Quat orientation = Quat::Identity();  ///< unit quaternion; 2D scenes rotate about z only
+  Vec3 angular_velocity;                ///< radians per second, world frame
+  double drag_coefficient = 0.0;        ///< Cd, dimensionless
+  double magnus = 0.0;                  ///< k in F = k (omega x (v - wind)), kilograms
+  bool fixed = false;                   ///< infinite mass, never moves
+  int line = 0;                         ///< line of the [[body]] header in the case file
 };
 
 /// Still air with an optional uniform wind.
@@ -95,8 +95,8 @@ struct Hinge {
 /// changes by impulse / mass; off the centre it also gets an angular impulse r x J.
 struct Impulse {
   int body = -1;
-  double time = 0.0;  ///< seconds; a multiple of every dt
-  Vec3 impulse;       ///< newton seconds
+  double time = 0.0;          ///< seconds; a multiple of every dt
+  Vec3 impulse;               ///< newton seconds
   std::optional<Vec3> point;  ///< world point where it acts, metres; none: the centre
   int line = 0;
 };

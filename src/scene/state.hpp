@@ -8,10 +8,10 @@
 namespace bb {
 
 struct BodyState {
-  Vec3 position;          ///< metres
-  Vec3 velocity;          ///< metres per second
-  Quat orientation;       ///< unit quaternion
-  Vec3 angular_velocity;  ///< radians per second, world frame
+  Vec3 position;                        ///< metres
+  Vec3 velocity;                        ///< metres per second
+  Quat orientation = Quat::Identity();  ///< unit quaternion
+  Vec3 angular_velocity;                ///< radians per second, world frame
 };
 
 /// One entry per body, in the scene's body order.

@@ -155,7 +155,7 @@ TEST(Engines, EveryEngineRunsAPointBodyLikeSemiImplicitEuler) {
     const RunRecord same_method = run_accuracy(euler, scene, scene.report_dt);
     EXPECT_LT(max_position_difference(run.trajectory, same_method.trajectory), tolerance);
     // The point really fell: from 20 m, thrown up at 4 m/s, it is below 0 after 3 s.
-    EXPECT_LT(run.trajectory.states.back()[0].position.y, 0.0);
+    EXPECT_LT(run.trajectory.states.back()[0].position.y(), 0.0);
     const std::string stand_in = text_setting(run.engine_settings, "point_body");
     EXPECT_NE(stand_in.find("sphere of radius 0.01 m"), std::string::npos) << stand_in;
     EXPECT_NE(stand_in.find("no collisions"), std::string::npos) << stand_in;

@@ -46,14 +46,14 @@ impulse = [2.0, 0.0, 0.0]
     // Four steps bring the run to t = 0.2 s: nothing has happened yet.
     for (int i = 0; i < 4; ++i) sim->step();
     sim->read(s);
-    EXPECT_EQ(s[0].velocity.x, 0.0) << integrator;
+    EXPECT_EQ(s[0].velocity.x(), 0.0) << integrator;
     // The fifth step starts at the impulse's time.
     sim->step();
     sim->read(s);
-    EXPECT_EQ(s[0].velocity.x, -2.0 / 1.0) << integrator;
-    EXPECT_EQ(s[1].velocity.x, 2.0 / 4.0) << integrator;
+    EXPECT_EQ(s[0].velocity.x(), -2.0 / 1.0) << integrator;
+    EXPECT_EQ(s[1].velocity.x(), 2.0 / 4.0) << integrator;
     // Momentum is what the two equal and opposite impulses gave: zero.
-    EXPECT_EQ(s[0].velocity.x * 1.0 + s[1].velocity.x * 4.0, 0.0) << integrator;
+    EXPECT_EQ(s[0].velocity.x() * 1.0 + s[1].velocity.x() * 4.0, 0.0) << integrator;
   }
 }
 

@@ -47,9 +47,9 @@ Bounces bounce(const Scene& scene, const std::string& integrator, const std::str
     sim->step();
     sim->read(s);
     // An apex is the step where the vertical velocity turns from up to down.
-    if (previous_vy > 0.0 && s[0].velocity.y <= 0.0) out.apexes.push_back(s[0].position.y);
-    previous_vy = s[0].velocity.y;
-    out.lowest = std::min(out.lowest, s[0].position.y);
+    if (previous_vy > 0.0 && s[0].velocity.y() <= 0.0) out.apexes.push_back(s[0].position.y());
+    previous_vy = s[0].velocity.y();
+    out.lowest = std::min(out.lowest, s[0].position.y());
   }
   out.end = s[0];
   return out;
@@ -57,7 +57,7 @@ Bounces bounce(const Scene& scene, const std::string& integrator, const std::str
 
 TEST(ThreeBeachballs, TheSeedsStoryHoldsInNumbers) {
   const Scene scene = test::scene_from(kThreeBeachballs);
-  const double drop = scene.bodies[0].position.y, r = scene.bodies[0].radius;
+  const double drop = scene.bodies[0].position.y(), r = scene.bodies[0].radius;
   // Left ball: semi-implicit Euler, moved up to touch the floor. Its apex stays in a band.
   const Bounces left = bounce(scene, "semi-implicit-euler", "clamp");
   ASSERT_GT(left.apexes.size(), 20u);
@@ -68,7 +68,7 @@ TEST(ThreeBeachballs, TheSeedsStoryHoldsInNumbers) {
   EXPECT_GT(middle.apexes.back(), middle.apexes.front() + 0.5);
   // Right ball: semi-implicit Euler, velocity reversed only: it loses energy and sinks.
   const Bounces right = bounce(scene, "semi-implicit-euler", "reflect");
-  EXPECT_LT(right.end.position.y, 0.0) << "ends below the floor";
+  EXPECT_LT(right.end.position.y(), 0.0) << "ends below the floor";
 }
 
 }  // namespace

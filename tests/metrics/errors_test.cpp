@@ -18,8 +18,8 @@ TEST(ErrorMetrics, WorstBodyMaxRmsAndFinal) {
     r[0].position = {0, 10.0 - j, 0};
     r[1].position = {5, 10.0, 0};
     s = r;
-    s[0].position.y += 0.1 * j;              // body 0 drifts: 0, 0.1, 0.2, 0.3
-    s[1].position.x += j == 1 ? 0.25 : 0.0;  // body 1 jumps once
+    s[0].position.y() += 0.1 * j;              // body 0 drifts: 0, 0.1, 0.2, 0.3
+    s[1].position.x() += j == 1 ? 0.25 : 0.0;  // body 1 jumps once
     ref.times.push_back(j);
     run.times.push_back(j);
     ref.states.push_back(r);

@@ -25,7 +25,7 @@ const ObservableResult& observable(const RunRecord& run, const std::string& name
 /// The terminal speed from the scene's own numbers, written out here once more.
 double elephant_terminal_speed(const Scene& scene) {
   const Body& b = scene.bodies[scene.body_index("elephant")];
-  const double g = std::hypot(scene.gravity.x, scene.gravity.y, scene.gravity.z);
+  const double g = std::hypot(scene.gravity.x(), scene.gravity.y(), scene.gravity.z());
   const double area = std::numbers::pi * b.radius * b.radius;
   return std::sqrt(2.0 * b.mass * g / (scene.air->density * b.drag_coefficient * area));
 }
@@ -74,7 +74,7 @@ TEST_F(DragFall, FinalSpeedIsTheSpeedAtTheEnd) {
     const ObservableResult& fs = observable(*run, "final_speed/elephant");
     ASSERT_TRUE(fs.measured.value.has_value()) << run->backend;
     const Vec3 v = run->trajectory.states.back()[elephant].velocity;
-    EXPECT_EQ(*fs.measured.value, std::hypot(v.x, v.y, v.z)) << run->backend;
+    EXPECT_EQ(*fs.measured.value, std::hypot(v.x(), v.y(), v.z())) << run->backend;
   }
   // A backend's final_speed is compared with the reference's, not with a formula.
   const ObservableResult& fs = observable(euler(), "final_speed/elephant");
@@ -88,7 +88,7 @@ TEST_F(DragFall, TheReferencesFinalSpeedApproachesTheTerminalSpeed) {
   // From rest the speed climbs towards v_t and never passes it.
   double previous = 0.0;
   for (const State& s : results_->reference_run.trajectory.states) {
-    const double speed = norm(s[elephant].velocity);
+    const double speed = s[elephant].velocity.norm();
     EXPECT_GE(speed, previous);
     EXPECT_LT(speed, vt);
     previous = speed;

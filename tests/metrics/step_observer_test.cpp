@@ -102,7 +102,7 @@ restitution = 0.5
   const BodyEvents truth = exact(scene).bodies[0];
   ASSERT_EQ(truth.contact_times.size(), 1u);
   EXPECT_NEAR(truth.contact_times[0], (5.4 - 0.05 - 0.01) / 50.0, 1e-9);
-  EXPECT_NEAR(truth.post_velocity->x, -25.0, 1e-9);
+  EXPECT_NEAR(truth.post_velocity->x(), -25.0, 1e-9);
   EXPECT_TRUE(observed(scene, scene.dt[0]).bodies[0].contact_times.empty());
   const BodyEvents fine = observed(scene, scene.dt[1]).bodies[0];
   ASSERT_EQ(fine.contact_times.size(), 1u);

@@ -15,7 +15,7 @@ TEST(GslReference, MatchesTheClosedFormOfADragFallTo1e8Relative) {
   const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
   const RunRecord run = run_accuracy(ReferenceBackend(), scene, scene.sample);
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
-  const double g = -scene.gravity.y;
+  const double g = -scene.gravity.y();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];
     // Every constant of the closed form comes from the case file.
@@ -24,12 +24,12 @@ TEST(GslReference, MatchesTheClosedFormOfADragFallTo1e8Relative) {
     for (std::size_t j = 1; j < run.trajectory.times.size(); ++j) {
       const double t = run.trajectory.times[j];
       const BodyState& s = run.trajectory.states[j][i];
-      const double fallen = b.position.y - s.position.y;
-      const double speed = -s.velocity.y;
+      const double fallen = b.position.y() - s.position.y();
+      const double speed = -s.velocity.y();
       EXPECT_NEAR(fallen, closed_form::fall_distance(vt, g, t), 1e-8 * fallen)
           << b.name << " t=" << t;
       EXPECT_NEAR(speed, closed_form::fall_speed(vt, g, t), 1e-8 * speed) << b.name << " t=" << t;
-      EXPECT_EQ(s.position.x, b.position.x);
+      EXPECT_EQ(s.position.x(), b.position.x());
     }
   }
 }
@@ -52,8 +52,9 @@ TEST(GslReference, TighterToleranceChangesItLittle) {
   double worst = 0.0;
   for (std::size_t j = 0; j < loose.trajectory.states.size(); ++j)
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-      worst = std::max(worst, norm(loose.trajectory.states[j][i].position -
-                                   tight.trajectory.states[j][i].position));
+      worst = std::max(
+          worst,
+          (loose.trajectory.states[j][i].position - tight.trajectory.states[j][i].position).norm());
   EXPECT_GT(worst, 0.0);
   EXPECT_LT(worst, 1e-4);
 }
@@ -69,15 +70,15 @@ TEST(GslReference, SolvesAStiffFallImplicitlyAndNamesTheMethod) {
     if (key == "method") method = std::get<std::string>(value);
   EXPECT_NE(method.find("msbdf"), std::string::npos) << method;
   const Body& b = scene.bodies[0];
-  const double g = -scene.gravity.y;
+  const double g = -scene.gravity.y();
   const double vt = closed_form::terminal_speed(b.mass, g, scene.air->density, b.drag_coefficient,
                                                 frontal_area(b));
   for (std::size_t j = 1; j < run.trajectory.times.size(); ++j) {
     const double t = run.trajectory.times[j];
     const BodyState& s = run.trajectory.states[j][0];
-    const double fallen = b.position.y - s.position.y;
+    const double fallen = b.position.y() - s.position.y();
     EXPECT_NEAR(fallen, closed_form::fall_distance(vt, g, t), 1e-8 * fallen) << "t=" << t;
-    EXPECT_NEAR(-s.velocity.y, closed_form::fall_speed(vt, g, t), 1e-8 * vt) << "t=" << t;
+    EXPECT_NEAR(-s.velocity.y(), closed_form::fall_speed(vt, g, t), 1e-8 * vt) << "t=" << t;
   }
 }
 

@@ -42,7 +42,7 @@ TEST(SceneModel, ADroppedBallBouncesAtTheClosedFormsTimesAndHeights) {
   SceneModel model(scene);
   simulate(scene, model);
   // Constants from the scene: g, radius, drop height, restitution.
-  const double g = -scene.gravity.y, r = scene.bodies[0].radius, h = scene.bodies[0].position.y;
+  const double g = -scene.gravity.y(), r = scene.bodies[0].radius, h = scene.bodies[0].position.y();
   const double e = scene.ground->restitution, v0 = std::sqrt(2.0 * g * (h - r));
   double contact = v0 / g;
   const BodyEvents& events = model.trace().bodies[0];
@@ -55,7 +55,7 @@ TEST(SceneModel, ADroppedBallBouncesAtTheClosedFormsTimesAndHeights) {
         << "apex " << n + 1;
   }
   // Right after the first contact the ball rises at e times its impact speed.
-  EXPECT_NEAR(events.post_velocity->y, e * v0, 1e-9);
+  EXPECT_NEAR(events.post_velocity->y(), e * v0, 1e-9);
 }
 
 TEST(SceneModel, EverSmallerBouncesEndWithTheBallRestingOnTheGround) {
@@ -68,11 +68,11 @@ TEST(SceneModel, EverSmallerBouncesEndWithTheBallRestingOnTheGround) {
       std::string(kDrop).find("duration = 12.0"), 15, "duration = 14.0"));
   SceneModel rests(longer);
   const State at_rest = simulate(longer, rests);
-  EXPECT_NEAR(at_rest[0].position.y, 0.5, 1e-9);
-  EXPECT_EQ(at_rest[0].velocity.y, 0.0);
+  EXPECT_NEAR(at_rest[0].position.y(), 0.5, 1e-9);
+  EXPECT_EQ(at_rest[0].velocity.y(), 0.0);
   // Finitely many events: the rule ends the series after a few dozen bounces.
   EXPECT_LT(rests.trace().bodies[0].contact_times.size(), 200u);
-  EXPECT_GT(end[0].position.y, 0.5 - 1e-9);
+  EXPECT_GT(end[0].position.y(), 0.5 - 1e-9);
 }
 
 TEST(SceneModel, TwoBallsKeepTheirMomentumAndSeparateAtTheRestitution) {
@@ -107,13 +107,13 @@ restitution = 0.6
   const double m1 = 1.0, m2 = 2.25;
   const Vec3 before = Vec3{2.0, 0.3, 0.0} * m1 + Vec3{-1.0, 0.0, 0.0} * m2;
   const Vec3 after = end[0].velocity * m1 + end[1].velocity * m2;
-  EXPECT_NEAR(after.x, before.x, 1e-12);
-  EXPECT_NEAR(after.y, before.y, 1e-12);
+  EXPECT_NEAR(after.x(), before.x(), 1e-12);
+  EXPECT_NEAR(after.y(), before.y(), 1e-12);
   // One contact, seen by both bodies; the reference's own balance says the same.
   EXPECT_EQ(model.trace().bodies[0].contact_times.size(), 1u);
   EXPECT_EQ(model.trace().bodies[1].contact_times.size(), 1u);
   ASSERT_TRUE(model.trace().first_collision);
-  EXPECT_NEAR(norm(model.trace().first_collision->momentum_change), 0.0, 1e-12);
+  EXPECT_NEAR(model.trace().first_collision->momentum_change.norm(), 0.0, 1e-12);
   EXPECT_LT(model.trace().first_collision->kinetic_energy_after,
             model.trace().first_collision->kinetic_energy_before);
 }
@@ -158,9 +158,9 @@ point = [-1.0, 0.25, 0.0]
   model.apply_impulse(scene.impulses[0], 0.0, y.data());
   State s(1);
   model.read(y.data(), s);
-  EXPECT_EQ(s[0].velocity.x, -2.0 / 2.0);
+  EXPECT_EQ(s[0].velocity.x(), -2.0 / 2.0);
   // r x J = (0, 0.25, 0) x (-2, 0, 0) = (0, 0, 0.5); I = 2/5 m r^2 = 0.2.
-  EXPECT_NEAR(s[0].angular_velocity.z, 0.5 / 0.2, 1e-12);
+  EXPECT_NEAR(s[0].angular_velocity.z(), 0.5 / 0.2, 1e-12);
 }
 
 // The analytic Jacobian msbdf uses agrees with central differences of derivatives() on a

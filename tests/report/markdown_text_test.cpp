@@ -8,8 +8,8 @@ namespace bb {
 namespace {
 
 TEST(MarkdownText, PlainTextIsUnchanged) {
-  EXPECT_EQ(markdown_text("course/rk4 diverged at 1.2 s (ball_1.x)"),
-            "course/rk4 diverged at 1.2 s (ball_1.x)");
+  EXPECT_EQ(markdown_text("course/rk4 diverged at 1.2 s (ball_1.x())"),
+            "course/rk4 diverged at 1.2 s (ball_1.x())");
   EXPECT_EQ(markdown_text(""), "");
 }
 

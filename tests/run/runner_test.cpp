@@ -32,7 +32,7 @@ class FaultyBackend : public Backend {
         t = static_cast<double>(++n) * dt;
         if (t >= throw_at) throw std::runtime_error("engine gave up");
         if (t > blow_up_at)
-          for (auto& b : state) b.position.y = b.position.y * 2.0 + 1.0;
+          for (auto& b : state) b.position.y() = b.position.y() * 2.0 + 1.0;
       }
       void read(State& out) const override { out = state; }
     };

@@ -20,7 +20,7 @@ class ThresholdBackend : public Backend {
       State state;
       bool blow_up = false;
       void step() override {
-        if (blow_up) state[0].position.y = NAN;
+        if (blow_up) state[0].position.y() = NAN;
       }
       void read(State& out) const override { out = state; }
     };

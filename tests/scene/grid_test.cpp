@@ -36,8 +36,8 @@ TEST(Grid, RestLengthsAreLatticeDistancesAndJitterIsRepeatable) {
   for (std::size_t i = 0; i < a.bodies.size(); ++i) {
     EXPECT_EQ(a.bodies[i].position, b.bodies[i].position);
     const Vec3 lattice{(i % 4) * 0.5, -double(i / 4) * 0.5, 0.0};
-    EXPECT_LE(std::abs(a.bodies[i].position.x - lattice.x), 0.01);
-    EXPECT_EQ(a.bodies[i].position.z, 0.0);  // 2D jitter stays in the plane
+    EXPECT_LE(std::abs(a.bodies[i].position.x() - lattice.x()), 0.01);
+    EXPECT_EQ(a.bodies[i].position.z(), 0.0);  // 2D jitter stays in the plane
     moved = moved || !(a.bodies[i].position == lattice);
     differs = differs || !(a.bodies[i].position == c.bodies[i].position);
   }

@@ -17,9 +17,9 @@ TEST(LoadCase, EveryKeyOfTheFormatLoads) {
   EXPECT_EQ(s.name, "every_key");
   EXPECT_EQ(s.seed, "7. Springs");
   ASSERT_TRUE(s.air.has_value());
-  EXPECT_DOUBLE_EQ(s.air->wind.x, 1.0);
+  EXPECT_DOUBLE_EQ(s.air->wind.x(), 1.0);
   ASSERT_TRUE(s.ground.has_value());
-  EXPECT_DOUBLE_EQ(s.ground->normal.y, 1.0);  // normalised
+  EXPECT_DOUBLE_EQ(s.ground->normal.y(), 1.0);  // normalised
   EXPECT_DOUBLE_EQ(s.ground->friction_kinetic, 0.5);
   // Three bodies plus a 3 x 2 grid of particles.
   ASSERT_EQ(s.bodies.size(), 3u + 6u);
@@ -63,7 +63,7 @@ TEST(LoadCase, CourseVariantsAreNamedOnlyByWhatVaries) {
 TEST(LoadCase, DefaultsWhenOptionalKeysAreOmitted) {
   const Scene s = test::scene_from(test::kMinimalCase);
   EXPECT_EQ(s.title, "minimal");
-  EXPECT_DOUBLE_EQ(s.gravity.y, -9.81);
+  EXPECT_DOUBLE_EQ(s.gravity.y(), -9.81);
   EXPECT_EQ(s.course.integrators.size(), 4u);
   EXPECT_EQ(s.sample_count(), 10);
   EXPECT_EQ(s.steps_per_sample(0.05), 2);
