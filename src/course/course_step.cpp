@@ -5,7 +5,7 @@ namespace bb::course {
 namespace {}  // namespace
 
 ContactPhases::ContactPhases(const Scene& scene, GroundRule rule)
-    : scene_(scene), rule_(rule), pairs_(contact::contact_pairs(scene)) {
+    : scene_(scene), rule_(rule), pairs_(contact_pairs(scene)) {
   for (const Body& b : scene.bodies) orientation_.push_back(b.orientation);
   found_.reserve(pairs_.size());
 }
@@ -13,7 +13,7 @@ ContactPhases::ContactPhases(const Scene& scene, GroundRule rule)
 void ContactPhases::detect(const std::vector<Vec3>& x) {
   found_.clear();
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const contact::ContactPair& p = pairs_[k];
+    const ContactPair& p = pairs_[k];
     const int b = p.ground() ? p.a : p.b;
     const contact::Proximity near = contact::measure(scene_, p, x[p.a], x[b], orientation_[b]);
     if (near.gap < 0.0) found_.push_back({k, near});
@@ -22,7 +22,7 @@ void ContactPhases::detect(const std::vector<Vec3>& x) {
 
 void ContactPhases::resolve(std::vector<Vec3>& x, std::vector<Vec3>& v) {
   for (const FoundContact& c : found_) {
-    const contact::ContactPair& p = pairs_[c.pair];
+    const ContactPair& p = pairs_[c.pair];
     const bool against_fixed = p.ground() || scene_.bodies[p.b].fixed;
     Eigen::Vector3d xa = x[p.a], va = v[p.a];
     if (against_fixed) {

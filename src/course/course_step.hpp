@@ -42,7 +42,7 @@ class ContactPhases {
  private:
   const Scene& scene_;
   GroundRule rule_;
-  std::vector<contact::ContactPair> pairs_;
+  std::vector<ContactPair> pairs_;
   std::vector<Eigen::Quaterniond> orientation_;  ///< of fixed bodies, which never turn
   std::vector<FoundContact> found_;
 };

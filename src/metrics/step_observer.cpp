@@ -27,7 +27,7 @@ Vec3 momentum(const Scene& scene, const State& s, int a, int b) {
 
 StepObserver::StepObserver(const Scene& scene)
     : scene_(scene),
-      pairs_(contact::contact_pairs(scene)),
+      pairs_(contact_pairs(scene)),
       closing_(pairs_.size(), 0.0),
       normals_(pairs_.size(), Eigen::Vector3d::Zero()),
       rising_(scene.bodies.size(), false),
@@ -39,7 +39,7 @@ void StepObserver::observe(double t, const State& s) {
   if (!active()) return;
   const double dt = t - previous_t_;
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const contact::ContactPair& pair = pairs_[k];
+    const ContactPair& pair = pairs_[k];
     const int b = pair.ground() ? pair.a : pair.b;
     const contact::Proximity p =
         contact::measure(scene_, pair, s[pair.a].position, s[b].position, s[b].orientation);

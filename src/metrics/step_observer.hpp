@@ -24,7 +24,7 @@ class StepObserver {
 
  private:
   const Scene& scene_;
-  std::vector<contact::ContactPair> pairs_;
+  std::vector<ContactPair> pairs_;
   std::vector<double> closing_;           ///< per pair: normal speed of approach at the last step
   std::vector<Eigen::Vector3d> normals_;  ///< per pair: the contact normal at the last step
   std::vector<bool> rising_;   ///< per body: moving away from the ground at the last step

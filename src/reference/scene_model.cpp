@@ -75,7 +75,7 @@ SceneModel::SceneModel(const Scene& scene)
       resting_(scene.bodies.size(), false),
       after_bounce_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
-  for (const contact::ContactPair& pair : contact::contact_pairs(scene))
+  for (const ContactPair& pair : contact_pairs(scene))
     sources_.push_back({false, -1, pair});
   // Apexes are heights above the ground, watched while gravity pulls towards it.
   if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
@@ -84,7 +84,7 @@ SceneModel::SceneModel(const Scene& scene)
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it
   // down, starts at rest there (a gap of exactly zero is no crossing, so no event would).
   const std::vector<double> y = initial_state();
-  for (const contact::ContactPair& pair : contact::contact_pairs(scene)) {
+  for (const ContactPair& pair : contact_pairs(scene)) {
     if (!pair.ground()) continue;
     const Vector3d n = scene.ground->normal;
     const bool pressed = -scene.gravity.dot(n) > 0.0;
@@ -190,7 +190,7 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
   }
 }
 
-contact::Proximity SceneModel::proximity(const contact::ContactPair& pair, const double* y) const {
+contact::Proximity SceneModel::proximity(const ContactPair& pair, const double* y) const {
   const int b = pair.ground() ? pair.a : pair.b;
   return contact::measure(scene_, pair, position(y, pair.a), position(y, b), orientation(y, b));
 }
@@ -242,10 +242,10 @@ Vector3d SceneModel::momentum(const double* y) const {
   return p;
 }
 
-void SceneModel::check_simultaneous(const contact::ContactPair& pair, const double* y,
+void SceneModel::check_simultaneous(const ContactPair& pair, const double* y,
                                     double t) const {
   for (const Source& other : sources_) {
-    const contact::ContactPair& o = other.pair;
+    const ContactPair& o = other.pair;
     if (other.apex || (o.a == pair.a && o.b == pair.b)) continue;
     const bool shares =
         o.a == pair.a || o.a == pair.b || o.b == pair.a || (o.b >= 0 && o.b == pair.b);
@@ -257,7 +257,7 @@ void SceneModel::check_simultaneous(const contact::ContactPair& pair, const doub
   }
 }
 
-void SceneModel::resolve(const contact::ContactPair& pair, double* y, double t) {
+void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
   const bool ground = pair.ground();
   const contact::Proximity p = proximity(pair, y);
   const Vector3d relative =

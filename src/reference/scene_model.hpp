@@ -64,15 +64,15 @@ class SceneModel : public HybridModel {
   struct Source {
     bool apex = false;
     int body = -1;  ///< the apex's body
-    contact::ContactPair pair;
+    ContactPair pair;
   };
   double kinetic_energy(const double* y) const;     ///< J, of every moving body
   Eigen::Vector3d momentum(const double* y) const;  ///< N s, of every moving body
-  contact::Proximity proximity(const contact::ContactPair& pair, const double* y) const;
+  contact::Proximity proximity(const ContactPair& pair, const double* y) const;
   /// Newton's restitution along the contact normal; the ground and fixed bodies do not move.
-  void resolve(const contact::ContactPair& pair, double* y, double t);
+  void resolve(const ContactPair& pair, double* y, double t);
   /// Throws BeyondExactAnswer when another contact on the bodies of `pair` is closed.
-  void check_simultaneous(const contact::ContactPair& pair, const double* y, double t) const;
+  void check_simultaneous(const ContactPair& pair, const double* y, double t) const;
 
   const Scene& scene_;
   std::vector<Source> sources_;

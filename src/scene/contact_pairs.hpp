@@ -1,0 +1,27 @@
+// Which things in a scene can touch, and with what restitution and friction: the ground
+// with every moving body, and the pairs the case's [[contact]] entries name. Scene data,
+// read the same way by the course methods, the reference and the engine adapters (which
+// detect the contacts themselves).
+#pragma once
+
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace bb {
+
+/// Two things that may touch: body `a` against body `b`, or against the ground (b = -1).
+struct ContactPair {
+  int a = -1;
+  int b = -1;  ///< -1: the ground; a fixed box, when one takes part, is always b
+  double restitution = 0.0;
+  double friction_static = 0.0;
+  double friction_kinetic = 0.0;
+  bool ground() const { return b < 0; }
+};
+
+/// Every pair that can touch, the ground's first, in a fixed order. A pair named by several
+/// [[contact]] entries takes the first; two fixed bodies never touch.
+std::vector<ContactPair> contact_pairs(const Scene& scene);
+
+}  // namespace bb
