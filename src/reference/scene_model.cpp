@@ -67,6 +67,19 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
       return "body '" + b.name +
              "' is a moving box that touches something: its contacts (edges, faces, tipping) "
              "have no event model in the reference";
+  // Bodies that start touching each other (a stack, a ball resting on another) press on
+  // each other at once: no single event resolves that.
+  const std::vector<double> y = SceneModel(scene).initial_state();
+  for (const ContactPair& pair : contact_pairs(scene)) {
+    if (pair.ground()) continue;
+    const Body& b = scene.bodies[pair.b];
+    const contact::Proximity p = contact::measure(scene, pair, Vector3d(y.data() + at(pair.a)),
+                                                  Vector3d(y.data() + at(pair.b)), b.orientation);
+    if (p.gap <= kSimultaneousGap)
+      return "bodies '" + scene.bodies[pair.a].name + "' and '" + b.name +
+             "' touch at the start: resting contact between bodies has no event model in the "
+             "reference";
+  }
   return "";
 }
 
@@ -75,8 +88,7 @@ SceneModel::SceneModel(const Scene& scene)
       resting_(scene.bodies.size(), false),
       after_bounce_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
-  for (const ContactPair& pair : contact_pairs(scene))
-    sources_.push_back({false, -1, pair});
+  for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, pair});
   // Apexes are heights above the ground, watched while gravity pulls towards it.
   if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
@@ -242,8 +254,7 @@ Vector3d SceneModel::momentum(const double* y) const {
   return p;
 }
 
-void SceneModel::check_simultaneous(const ContactPair& pair, const double* y,
-                                    double t) const {
+void SceneModel::check_simultaneous(const ContactPair& pair, const double* y, double t) const {
   for (const Source& other : sources_) {
     const ContactPair& o = other.pair;
     if (other.apex || (o.a == pair.a && o.b == pair.b)) continue;

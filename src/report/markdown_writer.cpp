@@ -46,6 +46,15 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
                      describe_scene(scene));
 
   out += fmt::format("## Results at report_dt = {} s\n\n", format_dt(scene.report_dt));
+  // Say first what the errors are measured against when it is not the reference.
+  if (results.reference_run.status != RunStatus::Ok)
+    out +=
+        markdown_text("The reference has no answer for this case: " + results.reference_run.reason +
+                      ". Each backend's errors below are against its own run at the finest "
+                      "dt of the sweep (self-consistency, DESIGN.md's fallback): they show "
+                      "how far a step is from converged, not how far from the truth; the "
+                      "finest run has none.") +
+        "\n\n";
   out +=
       "Errors are against the reference at every sample, worst body: pos max, pos rms and "
       "pos final are position_max, position_rms and position_final (m), vel max is "
@@ -124,8 +133,10 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
 
   out += fmt::format(
       "\n## Reference and cost\n\n- reference: {}, absolute and relative tolerance {:g}; solved "
-      "again 100 times tighter, the largest position change was {:.3g} m (self-check)\n",
-      results.reference.method, results.reference.tolerance, results.reference.self_check);
+      "again 100 times tighter with smaller steps forced, the largest position change was "
+      "{:.3g} m (self-check)\n",
+      markdown_text(results.reference.method), results.reference.tolerance,
+      results.reference.self_check);
   out +=
       "- cost: time spent in step() only, in a serial pass after the accuracy runs; each run "
       "is repeated until the timed total reaches a minimum and the median is reported\n";

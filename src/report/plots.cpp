@@ -215,12 +215,18 @@ std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const 
           shown, quote(scene.name + ": main coordinate of each body at report_dt"));
   int block = 0;
   for (std::size_t b = 0; b < shown; ++b) {
-    const int axis = main_axis(results.reference_run.trajectory, b);
+    // The reference decides the axis; without one, the first run that has states.
+    const Trajectory* guide = &results.reference_run.trajectory;
+    for (const RunRecord* r : runs)
+      if (guide->states.empty()) guide = &r->trajectory;
+    const int axis = main_axis(*guide, b);
     const char* axis_name = axis == 0 ? "x" : axis == 1 ? "y" : "z";
     std::string plot;
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      data += "# " + runs[i]->backend + "\n";
       const Trajectory& t = runs[i]->trajectory;
+      // A run without states (a reference with no answer) draws nothing.
+      if (t.states.empty()) continue;
+      data += "# " + runs[i]->backend + "\n";
       std::vector<double> coordinate;
       for (const State& s : t.states)
         coordinate.push_back(axis == 0   ? s[b].position.x()
@@ -239,14 +245,15 @@ std::string energy_plot(const CaseResults& results, FileBatch& batch, const std:
   const Scene& scene = *results.scene;
   const auto runs = report_runs(results);
   std::string data, plot;
+  int block = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    data += "# " + runs[i]->backend + "\n";
     const Trajectory& t = runs[i]->trajectory;
+    if (t.states.empty()) continue;
+    data += "# " + runs[i]->backend + "\n";
     std::vector<double> energy;
     for (const State& s : t.states) energy.push_back(total_energy(scene, s));
     data += series_rows(t.times, energy) + "\n\n";
-    plot += (plot.empty() ? "plot " : ", \\\n     ") +
-            series_line(i, static_cast<int>(i), runs[i]->backend);
+    plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
   }
   const std::string script = fmt::format(
       "set grid\nset key outside right top\nset xlabel \"t (s)\"\n"
@@ -259,6 +266,8 @@ std::string energy_plot(const CaseResults& results, FileBatch& batch, const std:
 /// time: where the methods part from the reference, and when (a bounce shows as a jump).
 std::string error_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
   const Trajectory& reference = results.reference_run.trajectory;
+  if (reference.states.empty())
+    return "no plot of the distance from the reference: " + results.reference_run.reason;
   const auto runs = report_runs(results);
   std::string data, plot;
   int block = 0;

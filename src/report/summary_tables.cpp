@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "report/format.hpp"
 
 namespace bb {
@@ -63,9 +65,13 @@ std::vector<std::string> run_notes(const CaseResults& results, double dt) {
   std::vector<std::string> notes;
   // Without a reference no error can be measured: the first note says why there is none.
   const RunRecord& reference = results.reference_run;
-  if (reference.status != RunStatus::Ok)
+  if (reference.status != RunStatus::Ok) {
+    const bool fallback = std::any_of(results.runs.begin(), results.runs.end(),
+                                      [](const RunRecord& r) { return r.errors.has_value(); });
     notes.push_back("reference: " + status_name(reference.status) + ": " + reference.reason +
-                    "; without it no error column can be filled");
+                    (fallback ? "; errors are against each backend's own run at its finest dt"
+                              : "; without it no error column can be filled"));
+  }
   for (const RunRecord& run : results.runs) {
     if (!run.dt || *run.dt != dt) continue;
     if (run.status != RunStatus::Ok) {

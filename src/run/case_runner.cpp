@@ -62,6 +62,17 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& refere
   }
 }
 
+/// Per backend, its ok run at the smallest dt: the fallback reference of DESIGN.md.
+std::map<std::string, const RunRecord*> finest_runs(const std::vector<RunRecord>& runs) {
+  std::map<std::string, const RunRecord*> out;
+  for (const RunRecord& run : runs) {
+    if (run.status != RunStatus::Ok || !run.dt) continue;
+    const RunRecord*& best = out[run.backend];
+    if (best == nullptr || *run.dt < *best->dt) best = &run;
+  }
+  return out;
+}
+
 /// A run record from what its child process reported.
 RunRecord record_from(const ChildOutcome& outcome, const std::string& backend,
                       std::optional<double> dt) {
@@ -217,10 +228,24 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     }
   }
 
+  // Errors against the reference; where it has no answer, against each backend's own run at
+  // its finest dt (DESIGN.md's fallback), and reference.method says so.
+  const bool fallback = out.reference_run.status != RunStatus::Ok;
+  const std::map<std::string, const RunRecord*> finest = finest_runs(out.runs);
+  if (fallback && !finest.empty())
+    out.reference.method = "none: the reference is " + status_name(out.reference_run.status) +
+                           " (" + out.reference_run.reason +
+                           "); each backend's errors are against its own run at the finest dt "
+                           "of the sweep (self-consistency: convergence, not accuracy)";
   for (RunRecord& run : out.runs) {
-    if (run.status == RunStatus::Ok && out.reference_run.status == RunStatus::Ok)
-      run.errors = compare(scene, run.trajectory, out.reference_run.trajectory);
-    add_observables(scene, run, out.reference_run);
+    const auto own = finest.find(run.backend);
+    const RunRecord* against = !fallback             ? &out.reference_run
+                               : own != finest.end() ? own->second
+                                                     : nullptr;
+    if (run.status == RunStatus::Ok && against && against != &run &&
+        against->status == RunStatus::Ok)
+      run.errors = compare(scene, run.trajectory, against->trajectory);
+    add_observables(scene, run, against ? *against : out.reference_run);
   }
 
   // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
@@ -234,11 +259,15 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
 
   // Observed order of position_max over the dt sweep, per backend.
   std::map<std::string, std::vector<ErrorPoint>> points;
-  for (const RunRecord& run : out.runs)
-    if (run.errors)
-      points[run.backend].push_back(
-          {*run.dt, run.errors->position_max,
-           error_floor(out.reference_run.trajectory, out.reference.self_check, run.steps)});
+  for (const RunRecord& run : out.runs) {
+    if (!run.errors) continue;
+    // The floor's position scale comes from whatever the errors were measured against.
+    const auto own = finest.find(run.backend);
+    const Trajectory& against =
+        fallback && own != finest.end() ? own->second->trajectory : out.reference_run.trajectory;
+    points[run.backend].push_back({*run.dt, run.errors->position_max,
+                                   error_floor(against, out.reference.self_check, run.steps)});
+  }
   for (const auto& [name, series] : points) {
     const OrderFit fit = fit_order(series);
     if (fit.slope) out.order[name] = *fit.slope;
@@ -259,7 +288,14 @@ CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOpt
   options.dts = {scene.report_dt};
   options.cost = false;
   if (options.backends.empty()) options.backends.push_back("reference");
-  return run_case(scene, registry, options);
+  CaseResults results = run_case(scene, registry, options);
+  // Without a reference, errors are against the finest dt: run it too.
+  const double finest = *std::min_element(scene.dt.begin(), scene.dt.end());
+  if (results.reference_run.status != RunStatus::Ok && finest != scene.report_dt) {
+    options.dts = {scene.report_dt, finest};
+    results = run_case(scene, registry, options);
+  }
+  return results;
 }
 
 }  // namespace bb

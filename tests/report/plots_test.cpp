@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "support/program.hpp"
 
@@ -65,6 +66,44 @@ drag_coefficient = 0.47
     EXPECT_LT(fs::file_size(entry.path()), 1u << 20) << entry.path();
   }
   EXPECT_GE(svgs, 3);
+}
+
+// A case the reference cannot answer (two balls stacked at the start) still gets its page
+// and its plots: runs without states draw nothing (gnuplot refused the empty series before),
+// the distance plot is left out with the reason, and the page says what errors are against.
+TEST(Plots, ACaseWithoutAReferenceStillGetsItsPageAndPlots) {
+  const std::string dir = test::fresh_dir("no_reference_plots");
+  const std::string path = test::write_case(dir, "stack.toml", R"(name = "stack"
+dims = 2
+duration = 1.0
+sample = 0.0166666666666666667
+dt = [0.0166666666666666667, 0.00833333333333333333]
+report_dt = 0.0166666666666666667
+[ground]
+restitution = 0.5
+[[body]]
+name = "low"
+radius = 0.5
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+[[body]]
+name = "high"
+radius = 0.5
+mass = 1.0
+position = [0.0, 1.5, 0.0]
+[[contact]]
+bodies = ["low", "high"]
+restitution = 0.5
+)");
+  const test::Outcome o = test::beachball(
+      "run " + path + " --no-cost --backends course/semi-implicit-euler --out " + dir + "/out");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_TRUE(fs::exists(dir + "/out/stack-trajectory.svg"));
+  EXPECT_TRUE(fs::exists(dir + "/out/stack-energy.svg"));
+  EXPECT_FALSE(fs::exists(dir + "/out/stack-error.svg"));
+  std::ifstream in(dir + "/out/stack.md");
+  const std::string page(std::istreambuf_iterator<char>(in), {});
+  EXPECT_NE(page.find("finest dt"), std::string::npos);
 }
 
 }  // namespace

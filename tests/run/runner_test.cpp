@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "course/course_backend.hpp"
+#include "metrics/errors.hpp"
 #include "report/summary_tables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
@@ -154,6 +155,62 @@ position = [0.0, 2.0, 0.0]
   EXPECT_EQ(notes.front().rfind("reference: unsupported: ", 0), 0u) << notes.front();
   EXPECT_NE(notes.front().find("moving box"), std::string::npos) << notes.front();
   EXPECT_NE(notes.front().find("no error column"), std::string::npos) << notes.front();
+}
+
+// Two balls stacked on the ground touch at the start: the reference has no exact answer,
+// so (DESIGN.md's fallback) each backend's errors are against its own finest-dt run, and
+// reference.method, the notes and run_gates say so.
+TEST(Runner, WithoutAReferenceErrorsAreAgainstTheFinestDt) {
+  const Scene scene = test::scene_from(R"(name = "stack"
+dims = 2
+duration = 1.0
+sample = 0.0166666666666666667
+dt = [0.0166666666666666667, 0.00833333333333333333, 0.00416666666666666667]
+report_dt = 0.0166666666666666667
+[ground]
+restitution = 0.5
+[[body]]
+name = "low"
+radius = 0.5
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+[[body]]
+name = "high"
+radius = 0.5
+mass = 1.0
+position = [0.0, 1.5, 0.0]
+[[contact]]
+bodies = ["low", "high"]
+restitution = 0.5
+[[gate]]
+backend = "course/semi-implicit-euler"
+metric = "position_max"
+max = 10.0
+)");
+  RunOptions options;
+  options.backends = {"course/semi-implicit-euler"};
+  options.cost = false;
+  options.isolation = false;
+  const CaseResults results = run_case(scene, Registry::load(), options);
+  ASSERT_EQ(results.reference_run.status, RunStatus::Unsupported);
+  EXPECT_NE(results.reference.method.find("finest dt"), std::string::npos);
+  ASSERT_EQ(results.runs.size(), 3u);
+  // The two coarser runs are compared with the finest, which is its own reference.
+  const RunRecord& finest = results.runs[2];
+  EXPECT_FALSE(finest.errors.has_value());
+  for (int i = 0; i < 2; ++i) {
+    const RunRecord& run = results.runs[i];
+    ASSERT_TRUE(run.errors.has_value()) << *run.dt;
+    EXPECT_DOUBLE_EQ(run.errors->position_max,
+                     compare(scene, run.trajectory, finest.trajectory).position_max);
+    EXPECT_GT(run.errors->position_max, 0.0);
+  }
+  EXPECT_NE(run_notes(results, scene.report_dt).front().find("finest dt"), std::string::npos);
+  // check runs report_dt and, for the fallback, the finest dt too, so the gate has a value.
+  const CaseResults gated = run_gates(scene, Registry::load(), options);
+  ASSERT_EQ(gated.gates.size(), 1u);
+  EXPECT_TRUE(gated.gates[0].value.has_value());
+  EXPECT_TRUE(gated.gates[0].passed);
 }
 
 }  // namespace
