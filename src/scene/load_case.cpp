@@ -16,17 +16,12 @@ namespace bb {
 
 namespace {
 
+using load::show;
+
 /// True when `ratio` is within rounding of a whole number >= 1.
 bool is_whole(double ratio) {
   const double r = std::round(ratio);
   return r >= 1.0 && std::abs(ratio - r) <= 1e-9 * r;
-}
-
-std::string show(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
 }
 
 void read_timing(TomlReader& root, Scene& scene) {

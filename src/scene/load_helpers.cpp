@@ -4,14 +4,12 @@
 
 namespace bb::load {
 
-namespace {
 std::string show(double v) {
   std::ostringstream s;
   s.precision(10);
   s << v;
   return s.str();
 }
-}  // namespace
 
 TomlReader sub_reader(const TomlReader& parent, const toml::table& table,
                       const std::string& where) {

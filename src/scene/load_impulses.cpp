@@ -7,17 +7,6 @@
 
 namespace bb::load {
 
-namespace {
-
-std::string show(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
-}  // namespace
-
 void read_impulses(TomlReader& root, Scene& scene) {
   for (const toml::table* t : root.tables("impulse")) {
     TomlReader r = sub_reader(root, *t, "[[impulse]]");
@@ -34,7 +23,8 @@ void read_impulses(TomlReader& root, Scene& scene) {
       const double ratio = imp.time / step;
       if (std::abs(ratio - std::round(ratio)) > 1e-9 * std::max(1.0, ratio))
         r.fail(r.line_of("time"), "'time' " + show(imp.time) + " s is not a multiple of 'dt' " +
-                                      show(step) + " s; every backend applies the impulse at "
+                                      show(step) +
+                                      " s; every backend applies the impulse at "
                                       "the start of a step");
     }
     imp.impulse = r.vec3("impulse");

@@ -22,6 +22,8 @@ void read_observes(TomlReader& root, Scene& scene);
 void read_gates(TomlReader& root, Scene& scene);
 void read_report_and_stability(TomlReader& root, Scene& scene);
 
+/// A number as messages show it: up to ten significant digits.
+std::string show(double v);
 /// Index of a named body, or a CaseError at `line` naming what is missing.
 int require_body(const TomlReader& reader, const Scene& scene, const std::string& name, int line);
 /// A non-zero vector scaled to unit length, or a CaseError.

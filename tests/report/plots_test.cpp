@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "support/program.hpp"
+#include "support/test_support.hpp"
 
 namespace bb {
 namespace {
@@ -73,28 +74,7 @@ drag_coefficient = 0.47
 // the distance plot is left out with the reason, and the page says what errors are against.
 TEST(Plots, ACaseWithoutAReferenceStillGetsItsPageAndPlots) {
   const std::string dir = test::fresh_dir("no_reference_plots");
-  const std::string path = test::write_case(dir, "stack.toml", R"(name = "stack"
-dims = 2
-duration = 1.0
-sample = 0.0166666666666666667
-dt = [0.0166666666666666667, 0.00833333333333333333]
-report_dt = 0.0166666666666666667
-[ground]
-restitution = 0.5
-[[body]]
-name = "low"
-radius = 0.5
-mass = 1.0
-position = [0.0, 0.5, 0.0]
-[[body]]
-name = "high"
-radius = 0.5
-mass = 1.0
-position = [0.0, 1.5, 0.0]
-[[contact]]
-bodies = ["low", "high"]
-restitution = 0.5
-)");
+  const std::string path = test::write_case(dir, "stack.toml", test::kStackedBalls);
   const test::Outcome o = test::beachball(
       "run " + path + " --no-cost --backends course/semi-implicit-euler --out " + dir + "/out");
   ASSERT_EQ(o.exit_code, 0) << o.out;

@@ -161,28 +161,7 @@ position = [0.0, 2.0, 0.0]
 // so (DESIGN.md's fallback) each backend's errors are against its own finest-dt run, and
 // reference.method, the notes and run_gates say so.
 TEST(Runner, WithoutAReferenceErrorsAreAgainstTheFinestDt) {
-  const Scene scene = test::scene_from(R"(name = "stack"
-dims = 2
-duration = 1.0
-sample = 0.0166666666666666667
-dt = [0.0166666666666666667, 0.00833333333333333333, 0.00416666666666666667]
-report_dt = 0.0166666666666666667
-[ground]
-restitution = 0.5
-[[body]]
-name = "low"
-radius = 0.5
-mass = 1.0
-position = [0.0, 0.5, 0.0]
-[[body]]
-name = "high"
-radius = 0.5
-mass = 1.0
-position = [0.0, 1.5, 0.0]
-[[contact]]
-bodies = ["low", "high"]
-restitution = 0.5
-[[gate]]
+  const Scene scene = test::scene_from(std::string(test::kStackedBalls) + R"([[gate]]
 backend = "course/semi-implicit-euler"
 metric = "position_max"
 max = 10.0

@@ -61,4 +61,29 @@ inline std::string slow_case(const std::string& name) {
   return text;
 }
 
+/// Two balls stacked on the ground, touching at the start: a case the reference has no
+/// exact answer for, with a sweep of three steps.
+inline const char* kStackedBalls = R"(name = "stack"
+dims = 2
+duration = 1.0
+sample = 0.0166666666666666667
+dt = [0.0166666666666666667, 0.00833333333333333333, 0.00416666666666666667]
+report_dt = 0.0166666666666666667
+[ground]
+restitution = 0.5
+[[body]]
+name = "low"
+radius = 0.5
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+[[body]]
+name = "high"
+radius = 0.5
+mass = 1.0
+position = [0.0, 1.5, 0.0]
+[[contact]]
+bodies = ["low", "high"]
+restitution = 0.5
+)";
+
 }  // namespace bb::test
