@@ -62,8 +62,17 @@ void read_contacts(TomlReader& root, Scene& scene) {
     c.body_b = b;
     c.restitution = r.number_or("restitution", 0.0);
     require_range(r, "restitution", c.restitution, 0.0, 1.0);
-    c.friction = r.number_or("friction", 0.0);
-    require_range(r, "friction", c.friction, 0.0, 0.0);
+    // `friction` sets both coefficients; or friction_static and friction_kinetic, as
+    // [ground] takes them (kinetic defaults to static).
+    if (r.has("friction") && (r.has("friction_static") || r.has("friction_kinetic")))
+      r.fail(r.line_of("friction"),
+             "give 'friction', or 'friction_static' and 'friction_kinetic', not both");
+    const double both = r.number_or("friction", 0.0);
+    require_range(r, "friction", both, 0.0, 0.0);
+    c.friction_static = r.number_or("friction_static", both);
+    require_range(r, "friction_static", c.friction_static, 0.0, 0.0);
+    c.friction_kinetic = r.number_or("friction_kinetic", c.friction_static);
+    require_range(r, "friction_kinetic", c.friction_kinetic, 0.0, 0.0);
     r.finish();
     scene.contacts.push_back(c);
   }

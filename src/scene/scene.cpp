@@ -44,7 +44,7 @@ FeatureSet Scene::features() const {
   for (const Contact& c : contacts) {
     f.add(Feature::BodyContact);
     if (c.restitution > 0.0) f.add(Feature::Restitution);
-    if (c.friction > 0.0) f.add(Feature::Friction);
+    if (c.friction_static > 0.0 || c.friction_kinetic > 0.0) f.add(Feature::Friction);
   }
   if (!springs.empty()) f.add(Feature::Springs);
   if (!hinges.empty()) f.add(Feature::Hinge);

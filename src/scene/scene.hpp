@@ -53,7 +53,8 @@ struct Contact {
   int body_a = -1;
   int body_b = -1;
   double restitution = 0.0;
-  double friction = 0.0;
+  double friction_static = 0.0;
+  double friction_kinetic = 0.0;
   int line = 0;
 };
 

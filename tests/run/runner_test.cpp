@@ -192,5 +192,25 @@ max = 10.0
   EXPECT_TRUE(gated.gates[0].passed);
 }
 
+// A case written from DESIGN.md's format alone (a ball thrown into the corner of two
+// walls on a sloped floor, [[contact]] with friction_static and friction_kinetic) loads and
+// runs with no change to the code: the reference and a course method both bounce it.
+TEST(Runner, ACaseWrittenFromTheDesignAloneRuns) {
+  const Scene scene = load_case(test::source_path("tests/cases/corner_throw.toml"));
+  RunOptions options;
+  options.backends = {"course/semi-implicit-euler"};
+  options.dts = {scene.report_dt};
+  options.cost = false;
+  options.isolation = false;
+  const CaseResults results = run_case(scene, Registry::load(), options);
+  ASSERT_EQ(results.reference_run.status, RunStatus::Ok) << results.reference_run.reason;
+  ASSERT_EQ(results.runs.front().status, RunStatus::Ok) << results.runs.front().reason;
+  for (const RunRecord* run : {&results.reference_run, &results.runs.front()}) {
+    const BodyEvents& ball = run->trajectory.events.bodies[0];
+    EXPECT_GE(ball.contact_times.size(), 2u) << run->backend;
+  }
+  EXPECT_TRUE(results.runs.front().errors.has_value());
+}
+
 }  // namespace
 }  // namespace bb
