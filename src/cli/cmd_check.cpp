@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "cli/commands.hpp"
@@ -80,15 +81,23 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
     const std::string folder = std::filesystem::path(junit).parent_path().string();
     check_writable(folder.empty() ? "." : folder);
   }
+  // Column widths from every gate of every case, known before any run.
+  std::size_t case_width = 4, backend_width = 7, metric_width = 6;
+  for (const Scene& scene : scenes)
+    for (const Gate& g : scene.gates) {
+      case_width = std::max(case_width, scene.name.size());
+      backend_width = std::max(backend_width, g.backend.size());
+      metric_width = std::max(metric_width, g.metric.size());
+    }
   std::vector<CaseResults> all;
   bool failed = false;
   for (const Scene& scene : scenes) {
     all.push_back(run_gates(scene, registry, options));
     for (const GateResult& g : all.back().gates) {
       failed = failed || !g.passed;
-      fmt::print("{:<4} {:<22} {:<28} {:<16} {:>10} <= {:<10} {}\n", g.passed ? "ok" : "FAIL",
-                 scene.name, g.gate.backend, g.gate.metric, format_value(g.value),
-                 format_value(g.gate.max), g.note);
+      fmt::print("{:<4} {:<{}} {:<{}} {:<{}} {:>10} <= {:<10} {}\n", g.passed ? "ok" : "FAIL",
+                 scene.name, case_width, g.gate.backend, backend_width, g.gate.metric, metric_width,
+                 format_value(g.value), format_value(g.gate.max), g.note);
     }
   }
   if (!junit.empty()) write_file_atomically(junit, junit_xml(all));
