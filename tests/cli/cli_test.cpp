@@ -180,6 +180,21 @@ TEST(Cli, ReportWritesAnIndexPagesPlotsAndStability) {
   EXPECT_NE(text.find("unsupported"), std::string::npos);  // box2d on the 3D case
 }
 
+// A report folder reused for a smaller suite keeps no page, data or plot of a case that is
+// no longer in it: the new report replaces the old folder as a whole.
+TEST(Cli, AReusedReportFolderLosesThePagesOfCasesNoLongerReported) {
+  const std::string out = fresh_dir("report_reused");
+  const std::string push = test::source_path("cases/push.toml");
+  const std::string arrow = test::source_path("cases/arrow.toml");
+  ASSERT_EQ(beachball("report " + push + " " + arrow + " --out " + out + " --no-cost").exit_code,
+            0);
+  ASSERT_TRUE(fs::exists(out + "/arrow.md"));
+  ASSERT_EQ(beachball("report " + push + " --out " + out + " --no-cost").exit_code, 0);
+  EXPECT_TRUE(fs::exists(out + "/push.md"));
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_EQ(entry.path().filename().string().find("arrow"), std::string::npos) << entry.path();
+}
+
 TEST(Cli, StabilityWritesTheStabilitySection) {
   const std::string out = fresh_dir("stability");
   const Outcome o = beachball("stability " + test::source_path("cases/drag_fall.toml") +
