@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
-#include <regex>
 
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -21,12 +21,20 @@ TEST(Readme, NamesTheEngineVersionsListReports) {
   ASSERT_EQ(list.exit_code, 0) << list.out;
   std::ifstream in(test::source_path("README.md"));
   const std::string readme = lower(std::string(std::istreambuf_iterator<char>(in), {}));
-  // "built (bullet 3.24)": the library and the version its plugin reports.
-  const std::regex built(R"(built \(([a-z0-9]+) ([0-9][0-9.]*))");
+  // "built (bullet 3.24)": the library and the version its plugin reports. (Parsed by hand:
+  // std::regex trips GCC 12's maybe-uninitialized warning in the sanitizer build.)
+  const std::string marker = "built (";
   int engines = 0;
-  for (std::sregex_iterator m(list.out.begin(), list.out.end(), built), end; m != end; ++m) {
-    const std::string named = lower((*m)[1].str() + " " + (*m)[2].str());
-    EXPECT_NE(readme.find(named), std::string::npos) << "README does not say '" << named << "'";
+  for (std::size_t at = list.out.find(marker); at != std::string::npos;
+       at = list.out.find(marker, at + 1)) {
+    const std::size_t start = at + marker.size();
+    const std::size_t space = list.out.find(' ', start);
+    std::size_t end = space + 1;
+    while (end < list.out.size() &&
+           (std::isdigit(static_cast<unsigned char>(list.out[end])) || list.out[end] == '.'))
+      ++end;
+    const std::string named = lower(list.out.substr(start, end - start));
+    EXPECT_NE(readme.find(named), std::string::npos) << "README does not name '" << named << "'";
     ++engines;
   }
   if (engines == 0) GTEST_SKIP() << "no engine plugin is built";
