@@ -128,7 +128,12 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
     out += render_markdown(stability_table(results));
   }
 
-  out += "\n## Every dt\n\n" + render_markdown(sweep_table(results));
+  out += "\n## Every dt\n\n";
+  if (!scene.observes.empty())
+    out +=
+        "Every run of the sweep, with each observable and, in brackets, its difference from the "
+        "reference: a course claim that holds at one step and fails at another shows here.\n\n";
+  out += render_markdown(sweep_table(results));
   if (!results.gates.empty()) out += "\n## Gates\n\n" + render_markdown(gate_table(results));
 
   out += fmt::format(

@@ -29,6 +29,13 @@ std::string observable_cell(const ObservableResult& o, bool is_reference) {
          ")";
 }
 
+/// The cell of a named observable, "-" where the run has none (it failed before measuring).
+std::string observable_cell(const RunRecord& run, const std::string& name, bool is_reference) {
+  for (const ObservableResult& o : run.observables)
+    if (o.name == name) return observable_cell(o, is_reference);
+  return "-";
+}
+
 }  // namespace
 
 Table summary_table(const CaseResults& results, double dt) {
@@ -45,8 +52,8 @@ Table summary_table(const CaseResults& results, double dt) {
     for (const char* m :
          {"position_max", "position_rms", "position_final", "velocity_max", "energy_max"})
       row.push_back(is_reference ? "-" : format_value(error_of(run, m)));
-    for (const ObservableResult& o : run.observables)
-      row.push_back(observable_cell(o, is_reference));
+    for (const Observe& o : scene.observes)
+      row.push_back(observable_cell(run, o.name, is_reference));
     row.push_back(
         format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt));
     row.push_back(format_value(
@@ -88,18 +95,28 @@ std::vector<std::string> run_notes(const CaseResults& results, double dt) {
 
 Table sweep_table(const CaseResults& results) {
   Table t;
-  t.headers = {"backend",     "dt s",       "status",  "steps",      "pos max m",
-               "vel max m/s", "energy max", "ns/step", "s per sim s"};
-  t.right_aligned = {false, true, false, true, true, true, true, true, true};
+  t.headers = {"backend", "dt s", "status", "steps", "pos max m", "vel max m/s", "energy max"};
+  // Each observable at every dt: a claim that holds at one step and fails at another shows here.
+  for (const Observe& o : results.scene->observes) t.headers.push_back(o.name);
+  for (const char* h : {"ns/step", "s per sim s"}) t.headers.push_back(h);
+  t.right_aligned.assign(t.headers.size(), true);
+  t.right_aligned[0] = t.right_aligned[2] = false;
   for (const RunRecord& run : results.runs) {
     if (run.status == RunStatus::Unsupported) continue;
-    t.rows.push_back(
-        {run.backend, format_dt(*run.dt), status_cell(run), std::to_string(run.steps),
-         format_value(error_of(run, "position_max")), format_value(error_of(run, "velocity_max")),
-         format_value(error_of(run, "energy_max")),
-         format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt),
-         format_value(run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second)
-                               : std::nullopt)});
+    std::vector<std::string> row = {run.backend,
+                                    format_dt(*run.dt),
+                                    status_cell(run),
+                                    std::to_string(run.steps),
+                                    format_value(error_of(run, "position_max")),
+                                    format_value(error_of(run, "velocity_max")),
+                                    format_value(error_of(run, "energy_max"))};
+    for (const Observe& o : results.scene->observes)
+      row.push_back(observable_cell(run, o.name, false));
+    row.push_back(
+        format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt));
+    row.push_back(format_value(
+        run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second) : std::nullopt));
+    t.rows.push_back(row);
   }
   return t;
 }
