@@ -74,6 +74,7 @@ HybridIntegrator::HybridIntegrator(HybridModel& model, const HybridOptions& opti
   g0_.resize(model.event_count());
   g1_.resize(model.event_count());
   g_probe_.resize(model.event_count());
+  located_.resize(model.event_count());
   h_ = 1e-6;
 }
 
@@ -135,21 +136,27 @@ void HybridIntegrator::advance_to(double target) {
         gsl_odeiv2_evolve_apply(evolve_, control_, stepper_, &system_, &t_, target, &h_, y_.data()),
         "step", t_);
     ++steps_;
-    // The earliest event whose function crossed from above zero to zero or below.
+    // The earliest event whose function crossed from above zero to zero or below; events
+    // located at the same instant (within the tolerance) all happen there, in order.
     model_.events(t_, y_.data(), g1_.data());
     double first = t_;
-    std::size_t which = g1_.size();
+    bool any = false;
     for (std::size_t k = 0; k < g1_.size(); ++k) {
+      located_[k] = -1.0;
       if (!(g0_[k] > 0.0 && g1_[k] <= 0.0)) continue;
-      const double at = locate(k, t0_, g0_[k], t_, g1_[k]);
-      if (which == g1_.size() || at < first) first = at, which = k;
+      located_[k] = locate(k, t0_, g0_[k], t_, g1_[k]);
+      if (!any || located_[k] < first) first = located_[k];
+      any = true;
     }
-    if (which == g1_.size()) continue;
+    if (!any) continue;
     // Move to the event, apply its reset map, and restart the solver from there.
     state_at(first, y_);
     t_ = first;
-    model_.apply(which, t_, y_.data());
-    events_.push_back({t_, which});
+    for (std::size_t k = 0; k < g1_.size(); ++k) {
+      if (located_[k] < 0.0 || located_[k] > first + options_.event_tolerance) continue;
+      model_.apply(k, t_, y_.data());
+      events_.push_back({t_, k});
+    }
     restart();
     if (++events_here > options_.max_events_per_advance)
       throw std::runtime_error("more than " + std::to_string(options_.max_events_per_advance) +

@@ -95,6 +95,7 @@ class HybridIntegrator {
   gsl_odeiv2_evolve* evolve_ = nullptr;
   gsl_odeiv2_driver* refine_ = nullptr;  ///< re-integrates sub-intervals to place events
   std::vector<double> y_, y0_, probe_, g0_, g1_, g_probe_;
+  std::vector<double> located_;  ///< per event: where it was located in this step, or -1
   double t_ = 0.0;
   double t0_ = 0.0;  ///< start of the step being examined
   double h_ = 0.0;   ///< the next step size the controller proposes
