@@ -17,7 +17,8 @@ class CourseSimulation : public Simulation {
       : scene_(scene),
         dt_(dt),
         phases_{course::integrator(variant.integrator), course::ground_rule(variant.ground)},
-        contacts_(scene, phases_.ground) {
+        contacts_(scene, phases_.ground),
+        equations_(scene) {
     const State start = initial_state(scene);
     for (const BodyState& b : start) {
       points_.x.push_back(b.position);
@@ -30,7 +31,7 @@ class CourseSimulation : public Simulation {
     settings_ = {{"integrator", variant.integrator}};
     if (!contacts_.empty()) settings_.push_back({"ground_rule", variant.ground});
     acceleration_ = [this](const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                           std::vector<Vec3>& a) { accelerations(scene_, x, v, omega_, a); };
+                           std::vector<Vec3>& a) { equations_.accelerations(x, v, omega_, a); };
   }
 
   void step() override {
@@ -74,6 +75,7 @@ class CourseSimulation : public Simulation {
   double dt_;
   course::Phases phases_;
   course::ContactPhases contacts_;
+  EquationsOfMotion equations_;
   course::PointState points_;
   course::Workspace work_;
   course::AccelerationFn acceleration_;
@@ -90,7 +92,7 @@ class CourseSimulation : public Simulation {
 FeatureSet CourseBackend::supports() const {
   return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
           Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
-          Feature::Restitution, Feature::Impulse};
+          Feature::Restitution, Feature::Impulse,  Feature::Springs};
 }
 
 std::unique_ptr<Simulation> CourseBackend::start(const Scene& scene, double dt) const {

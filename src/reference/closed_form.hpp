@@ -13,4 +13,12 @@ double fall_speed(double vt, double g, double t);
 /// Distance (m) fallen from rest in t seconds: vt^2 / g ln cosh(g t / vt).
 double fall_distance(double vt, double g, double t);
 
+/// Extension (m) at time t of two masses on a spring, released at rest with extension x0:
+/// the relative coordinate is a damped oscillator of reduced mass mu = m1 m2 / (m1 + m2),
+/// x'' = -(k / mu) x - (c / mu) x'. Underdamped, critically damped or overdamped.
+double spring_pair_extension(double m1, double m2, double k, double c, double x0, double t);
+
+/// Period (s) of the undamped pair: 2 pi sqrt(mu / k).
+double spring_pair_period(double m1, double m2, double k);
+
 }  // namespace bb::closed_form

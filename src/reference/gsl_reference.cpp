@@ -16,13 +16,30 @@ namespace {
 
 const char* kEvents = "contacts located as events to 1e-12 s";
 
+/// The fastest rate (1/s) at which springs move a body: for each body, the bound
+/// sqrt(2 sum k / m) on the angular frequency of the stiffest mode it takes part in
+/// (Gershgorin's circles on M^-1 K) and the damping rate 2 sum c / m.
+double spring_rate(const Scene& scene) {
+  std::vector<double> k(scene.bodies.size()), c(scene.bodies.size());
+  for (const Spring& s : scene.springs)
+    for (int body : {s.body_a, s.body_b}) k[body] += s.stiffness, c[body] += s.damping;
+  double rate = 0.0;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& body = scene.bodies[i];
+    if (body.fixed) continue;
+    rate = std::max({rate, std::sqrt(2.0 * k[i] / body.mass), 2.0 * c[i] / body.mass});
+  }
+  return rate;
+}
+
 /// The fastest rate (1/s) at which the air changes a body's velocity at state y: the
-/// largest singular value of dF/dv / m over the moving bodies. Drag on a light body makes
-/// it large; it is what limits an explicit method's step.
+/// largest singular value of dF/dv / m over the moving bodies, or the springs' rate when
+/// larger. Drag on a light body or a stiff spring makes it large; it is what limits an
+/// explicit method's step.
 double fastest_rate(const Scene& scene, const SceneModel& model, const std::vector<double>& y) {
   State state(scene.bodies.size());
   model.read(y.data(), state);
-  double rate = 0.0;
+  double rate = spring_rate(scene);
   for (std::size_t i = 0; i < state.size(); ++i) {
     const Body& body = scene.bodies[i];
     if (body.fixed) continue;
@@ -138,6 +155,14 @@ class ReferenceSimulation : public Simulation {
     const double rate = fastest_rate(scene_, *model_, integrator_->state());
     if (rate * scene_.sample <= kStiffRateTimesSample) return;
     const double t = integrator_->time();
+    // msbdf factors a dense Jacobian of the whole state: beyond some size, too slow to use.
+    if (scene_.bodies.size() > kMaxImplicitBodies)
+      throw BeyondExactAnswer("stiff (the fastest rate times the sample is " +
+                              number(rate * scene_.sample) + ") with " +
+                              std::to_string(scene_.bodies.size()) +
+                              " bodies: the implicit solver's "
+                              "dense Jacobian would take too long (it is used up to " +
+                              std::to_string(kMaxImplicitBodies) + " bodies)");
     switch_note_ = "stiff from t = " + number(t) + " s, where the fastest rate is " + number(rate) +
                    " /s (times the sample: " + number(rate * scene_.sample) + ")";
     implicit_ = true;
@@ -166,7 +191,7 @@ class ReferenceSimulation : public Simulation {
 FeatureSet ReferenceBackend::supports() const {
   return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
           Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
-          Feature::Restitution, Feature::Impulse,  Feature::Boxes};
+          Feature::Restitution, Feature::Impulse,  Feature::Boxes,         Feature::Springs};
 }
 
 std::pair<std::string, std::string> ReferenceBackend::library_version() const {

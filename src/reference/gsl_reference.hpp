@@ -16,6 +16,14 @@ inline constexpr double kReferenceTolerance = 1e-10;
 /// reference solves with msbdf.
 inline constexpr double kStiffRateTimesSample = 20.0;
 
+/// The implicit method factors a dense Jacobian of 13 values per body; above this many
+/// bodies a stiff scene is beyond the reference (DESIGN.md's fallback).
+inline constexpr std::size_t kMaxImplicitBodies = 80;
+
+/// Above this many bodies a scene with springs is beyond a tight reference in the time a
+/// report allows (DESIGN.md's fallback).
+inline constexpr std::size_t kMaxReferenceBodies = 400;
+
 class ReferenceBackend : public Backend {
  public:
   /// `max_step_per_sample`: when above 0, no internal step is longer than this fraction of

@@ -6,6 +6,7 @@
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
 #include "reference/air_force_jacobian.hpp"
+#include "reference/gsl_reference.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/motion.hpp"
 
@@ -61,6 +62,11 @@ constexpr double kSimultaneousGap = 1e-9;
 }  // namespace
 
 std::string SceneModel::beyond_exact_answer(const Scene& scene) {
+  if (!scene.springs.empty() && scene.bodies.size() > kMaxReferenceBodies)
+    return std::to_string(scene.bodies.size()) +
+           " bodies on springs: a reference to 1e-10 would take longer than a report allows "
+           "(it is solved up to " +
+           std::to_string(kMaxReferenceBodies) + " bodies)";
   const bool touching = scene.ground || !scene.contacts.empty();
   for (const Body& b : scene.bodies)
     if (touching && !b.fixed && b.shape == Shape::Box)
@@ -86,13 +92,23 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
 SceneModel::SceneModel(const Scene& scene)
     : scene_(scene),
       resting_(scene.bodies.size(), false),
-      after_bounce_(scene.bodies.size(), false) {
+      after_bounce_(scene.bodies.size(), false),
+      springs_(spring_network(scene)),
+      x_(scene.bodies.size()),
+      v_(scene.bodies.size()),
+      force_(scene.bodies.size()),
+      accelerations_(scene.bodies.size()),
+      held_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
-  for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, pair});
+  for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, -1, pair});
   // Apexes are heights above the ground, watched while gravity pulls towards it.
   if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
-      if (!scene.bodies[i].fixed) sources_.push_back({true, i, {}});
+      if (!scene.bodies[i].fixed) sources_.push_back({true, -1, i, {}});
+  // Swings are timed exactly, as every backend's are from its steps.
+  for (const Observe& o : scene.observes)
+    if (o.kind == "period")
+      for (int axis = 0; axis < 3; ++axis) sources_.push_back({false, axis, o.body, {}});
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it
   // down, starts at rest there (a gap of exactly zero is no crossing, so no event would).
   const std::vector<double> y = initial_state();
@@ -130,7 +146,37 @@ void SceneModel::read(const double* y, State& out) const {
   }
 }
 
+void SceneModel::linear_accelerations(const double* y) {
+  const int n = static_cast<int>(scene_.bodies.size());
+  for (int i = 0; i < n; ++i) force_[i].setZero();
+  if (!springs_.empty()) {
+    for (int i = 0; i < n; ++i) x_[i] = position(y, i), v_[i] = velocity(y, i);
+    add_spring_forces(springs_, x_.data(), v_.data(), force_.data());
+  }
+  for (int i = 0; i < n; ++i) {
+    const Body& body = scene_.bodies[i];
+    held_[i] = false;
+    if (body.fixed) {
+      accelerations_[i].setZero();
+      continue;
+    }
+    Vector3d a = scene_.gravity +
+                 (force_[i] + air_force(scene_, body, velocity(y, i), spin(y, i))) / body.mass;
+    // A body resting on the ground is held there: the ground takes any push into it.
+    held_[i] = resting_[i] && a.dot(scene_.ground->normal) < 0.0;
+    if (held_[i]) a -= a.dot(scene_.ground->normal) * scene_.ground->normal;
+    accelerations_[i] = a;
+  }
+}
+
+Eigen::Matrix3d SceneModel::resting_projection(int i) const {
+  Eigen::Matrix3d project = Eigen::Matrix3d::Identity();
+  if (held_[i]) project -= scene_.ground->normal * scene_.ground->normal.transpose();
+  return project;
+}
+
 void SceneModel::derivatives(double, const double* y, double* dydt) {
+  linear_accelerations(y);
   for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i) {
     const Body& body = scene_.bodies[i];
     double* d = dydt + at(i);
@@ -139,14 +185,8 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
       continue;
     }
     const Vector3d v = velocity(y, i), omega = spin(y, i);
-    Vector3d a = scene_.gravity + (air_force(scene_, body, v, omega)) / body.mass;
-    // A body resting on the ground is held there: the ground takes any push into it.
-    if (resting_[i]) {
-      const Vector3d n = scene_.ground->normal;
-      if (a.dot(n) < 0.0) a -= a.dot(n) * n;
-    }
     Vec{d} = v;
-    Vec(d + 3) = a;
+    Vec(d + 3) = accelerations_[i];
     // Orientation: dq/dt = 1/2 (0, omega) q, with omega in the world frame.
     const Quaterniond q = orientation(y, i);
     const Quaterniond dq = Quaterniond(0.0, omega.x(), omega.y(), omega.z()) * q;
@@ -155,10 +195,43 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
   }
 }
 
+void SceneModel::add_spring_jacobian(const double* y, double* dfdy) const {
+  const auto n = static_cast<Eigen::Index>(dimension());
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> j(dfdy, n, n);
+  for (std::size_t k = 0; k < springs_.size(); ++k) {
+    const int a = springs_.a[k], b = springs_.b[k];
+    const Vector3d d = Vector3d(position(y, b)) - Vector3d(position(y, a));
+    const double length = d.norm();
+    if (length == 0.0) continue;
+    const Vector3d u = d / length, dv = Vector3d(velocity(y, b)) - Vector3d(velocity(y, a));
+    const double stiffness = springs_.stiffness[k], damping = springs_.damping[k];
+    const double tension = stiffness * (length - springs_.rest_length[k]) + damping * dv.dot(u);
+    // F_a = tension u with d = x_b - x_a: dF_a/dd = k u u^T + c u dv^T P / l + tension P / l,
+    // P = I - u u^T the projection across the spring; dF_a/dv_b = c u u^T; F_b = -F_a.
+    const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - u * u.transpose();
+    const Eigen::Matrix3d by_d = stiffness * u * u.transpose() +
+                                 (damping / length) * u * dv.transpose() * across +
+                                 (tension / length) * across;
+    const Eigen::Matrix3d by_dv = damping * u * u.transpose();
+    for (const auto& [body, sign] : {std::pair{a, 1.0}, std::pair{b, -1.0}}) {
+      const Body& moving = scene_.bodies[body];
+      if (moving.fixed) continue;
+      const Eigen::Matrix3d p = resting_projection(body) * (sign / moving.mass);
+      const auto row = static_cast<Eigen::Index>(at(body) + 3);
+      const auto xa = static_cast<Eigen::Index>(at(a)), xb = static_cast<Eigen::Index>(at(b));
+      j.block<3, 3>(row, xb) += p * by_d;
+      j.block<3, 3>(row, xa) -= p * by_d;
+      j.block<3, 3>(row, xb + 3) += p * by_dv;
+      j.block<3, 3>(row, xa + 3) -= p * by_dv;
+    }
+  }
+}
+
 void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
   const std::size_t n = dimension();
   std::fill(dfdy, dfdy + n * n, 0.0);
   std::fill(dfdt, dfdt + n, 0.0);
+  linear_accelerations(y);
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> j(
       dfdy, static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i) {
@@ -169,14 +242,10 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
     const Quaterniond q = orientation(y, i);
     // dx/dt = v.
     j.block<3, 3>(o, o + 3).setIdentity();
-    // dv/dt = g + F_air(v, omega) / m, projected onto the ground's plane while resting.
+    // dv/dt = g + (F_springs + F_air(v, omega)) / m, projected onto the ground's plane while
+    // resting; the springs' part is added below.
     const AirForceJacobian air = air_force_jacobian(scene_, body, v, omega);
-    Eigen::Matrix3d project = Eigen::Matrix3d::Identity();
-    if (resting_[i]) {
-      const Vector3d n_ground = scene_.ground->normal;
-      const Vector3d a = scene_.gravity + (air_force(scene_, body, v, omega)) / body.mass;
-      if (a.dot(n_ground) < 0.0) project -= n_ground * n_ground.transpose();
-    }
+    const Eigen::Matrix3d project = resting_projection(i);
     j.block<3, 3>(o + 3, o + 3) = project * air.by_velocity / body.mass;
     j.block<3, 3>(o + 3, o + 10) = project * air.by_spin / body.mass;
     // dq/dt = 1/2 (0, omega) q: w' = -omega.q_v / 2, q_v' = (w omega + omega x q_v) / 2.
@@ -200,6 +269,7 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
       j.block<3, 1>(o + 10, o + 6 + c) = (plus - minus) / (2.0 * h);
     }
   }
+  add_spring_jacobian(y, dfdy);
 }
 
 contact::Proximity SceneModel::proximity(const ContactPair& pair, const double* y) const {
@@ -210,7 +280,10 @@ contact::Proximity SceneModel::proximity(const ContactPair& pair, const double* 
 void SceneModel::events(double, const double* y, double* g) {
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const Source& s = sources_[k];
-    if (s.apex) {
+    if (s.swing_axis >= 0) {
+      // Falls through zero when the velocity component rises through zero.
+      g[k] = -velocity(y, s.body)[s.swing_axis];
+    } else if (s.apex) {
       // The normal velocity falling through zero after a bounce is the apex.
       const bool watching = after_bounce_[s.body] && !resting_[s.body];
       g[k] = watching ? velocity(y, s.body).dot(scene_.ground->normal) : 1.0;
@@ -232,7 +305,7 @@ double SceneModel::max_step(double, const double* y) {
   };
   double limit = std::numeric_limits<double>::infinity();
   for (const Source& s : sources_) {
-    if (s.apex || s.pair.ground()) continue;
+    if (!s.contact() || s.pair.ground()) continue;
     const double speed = (Vector3d(velocity(y, s.pair.a)) - Vector3d(velocity(y, s.pair.b))).norm();
     const double region = thickness(s.pair.a) + thickness(s.pair.b);
     if (speed > 0.0 && region > 0.0) limit = std::min(limit, 0.25 * region / speed);
@@ -257,7 +330,7 @@ Vector3d SceneModel::momentum(const double* y) const {
 void SceneModel::check_simultaneous(const ContactPair& pair, const double* y, double t) const {
   for (const Source& other : sources_) {
     const ContactPair& o = other.pair;
-    if (other.apex || (o.a == pair.a && o.b == pair.b)) continue;
+    if (!other.contact() || (o.a == pair.a && o.b == pair.b)) continue;
     const bool shares =
         o.a == pair.a || o.a == pair.b || o.b == pair.a || (o.b >= 0 && o.b == pair.b);
     if (!shares || (o.ground() && resting_[o.a])) continue;
@@ -329,11 +402,18 @@ void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
   // Pressed into the ground it rests on: the ground answers at once, as at a contact.
   if (v.dot(scene_.ground->normal) < 0.0)
     for (const Source& s : sources_)
-      if (!s.apex && s.pair.ground() && s.pair.a == i) resolve(s.pair, y, t);
+      if (s.contact() && s.pair.ground() && s.pair.a == i) resolve(s.pair, y, t);
 }
 
 void SceneModel::apply(std::size_t k, double t, double* y) {
   const Source& s = sources_[k];
+  if (s.swing_axis >= 0) {
+    // A crossing applied with another event at the same instant may show up again just
+    // after it, when its velocity was still a hair below zero: it is one crossing.
+    std::vector<double>& crossings = trace_.bodies[s.body].upward_crossings[s.swing_axis];
+    if (crossings.empty() || t - crossings.back() > 1e-9) crossings.push_back(t);
+    return;
+  }
   if (!s.apex) return resolve(s.pair, y, t);
   const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
   trace_.bodies[s.body].apex_heights.push_back(above.dot(scene_.ground->normal));

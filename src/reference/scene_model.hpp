@@ -11,6 +11,7 @@
 #include "reference/hybrid_integrator.hpp"
 #include "scene/event_trace.hpp"
 #include "scene/scene.hpp"
+#include "scene/spring_forces.hpp"
 #include "scene/state.hpp"
 
 namespace bb {
@@ -60,12 +61,22 @@ class SceneModel : public HybridModel {
   static std::string beyond_exact_answer(const Scene& scene);
 
  private:
-  /// What one event function watches: a contact pair's gap, or a body's apex.
+  /// What one event function watches: a contact pair's gap, a body's apex, or the
+  /// upward zero crossing of one velocity component of a body whose period is observed.
   struct Source {
     bool apex = false;
-    int body = -1;  ///< the apex's body
-    ContactPair pair;
+    int swing_axis = -1;  ///< 0, 1, 2 for a swing
+    int body = -1;        ///< the apex's or swing's body
+    ContactPair pair;     ///< a contact's pair
+    bool contact() const { return !apex && swing_axis < 0; }
   };
+  /// Each body's linear acceleration at `y` into accelerations_: gravity, air, springs, and
+  /// a resting body held on the ground.
+  void linear_accelerations(const double* y);
+  /// The projection a resting body's acceleration goes through (the identity otherwise).
+  Eigen::Matrix3d resting_projection(int body) const;
+  /// Adds the springs' derivatives to the Jacobian's velocity rows.
+  void add_spring_jacobian(const double* y, double* dfdy) const;
   double kinetic_energy(const double* y) const;     ///< J, of every moving body
   Eigen::Vector3d momentum(const double* y) const;  ///< N s, of every moving body
   contact::Proximity proximity(const ContactPair& pair, const double* y) const;
@@ -79,6 +90,10 @@ class SceneModel : public HybridModel {
   std::vector<bool> resting_;       ///< per body: resting on the ground
   std::vector<bool> after_bounce_;  ///< per body: an apex is awaited
   EventTrace trace_;
+  SpringNetwork springs_;
+  std::vector<Eigen::Vector3d> x_, v_, force_;  ///< buffers for the spring forces
+  std::vector<Eigen::Vector3d> accelerations_;  ///< m/s^2, from linear_accelerations()
+  std::vector<bool> held_;  ///< per body: resting, its acceleration projected onto the ground
 };
 
 }  // namespace bb

@@ -17,10 +17,21 @@ DivergenceBounds divergence_bounds(const Scene& scene) {
   const double t = scene.duration, g = scene.gravity.norm();
   if (scene.air) speed += scene.air->wind.norm();
   speed += g * t;
+  // Springs stretched at the start give their energy to the lightest body at most.
+  double spring_energy = 0.0, lightest = 0.0;
+  for (const Spring& s : scene.springs) {
+    const double stretch =
+        (scene.bodies[s.body_b].position - scene.bodies[s.body_a].position).norm() -
+        s.rest_length;
+    spring_energy += 0.5 * s.stiffness * stretch * stretch;
+  }
+  for (const Body& b : scene.bodies)
+    if (!b.fixed && (lightest == 0.0 || b.mass < lightest)) lightest = b.mass;
+  if (lightest > 0.0) speed += std::sqrt(2.0 * spring_energy / lightest);
   const double travel = speed * t + size;
   DivergenceBounds bounds;
   bounds.travel = 10.0 * travel;
-  bounds.energy_scale = 0.5 * mass * speed * speed + mass * g * travel + 1.0;
+  bounds.energy_scale = 0.5 * mass * speed * speed + mass * g * travel + spring_energy + 1.0;
   bounds.energy = 10.0 * bounds.energy_scale;
   return bounds;
 }

@@ -19,7 +19,8 @@ std::vector<ContactPair> contact_pairs(const Scene& scene) {
         if (!named || paired[a][b] || (scene.bodies[a].fixed && scene.bodies[b].fixed)) continue;
         paired[a][b] = true;
         const bool swap = scene.bodies[a].shape == Shape::Box;
-        out.push_back({swap ? b : a, swap ? a : b, c.restitution, c.friction_static, c.friction_kinetic});
+        out.push_back(
+            {swap ? b : a, swap ? a : b, c.restitution, c.friction_static, c.friction_kinetic});
       }
   return out;
 }

@@ -4,18 +4,24 @@
 
 namespace bb {
 
-void accelerations(const Scene& scene, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                   const std::vector<Vec3>& omega, std::vector<Vec3>& out) {
-  (void)x;  // no position-dependent force yet (springs and contacts add them)
-  out.resize(scene.bodies.size());
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const Body& body = scene.bodies[i];
-    if (body.fixed) {
-      out[i] = {};
-      continue;
-    }
-    out[i] = scene.gravity + air_force(scene, body, v[i], omega[i]) / body.mass;
-  }
+EquationsOfMotion::EquationsOfMotion(const Scene& scene)
+    : scene_(scene), springs_(spring_network(scene)) {
+  for (const Body& b : scene.bodies) inverse_mass_.push_back(b.fixed ? 0.0 : 1.0 / b.mass);
+}
+
+void EquationsOfMotion::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                      const std::vector<Vec3>& omega,
+                                      std::vector<Vec3>& out) const {
+  const std::size_t n = scene_.bodies.size();
+  // Forces first (springs act on both ends), then each body's acceleration from its force.
+  for (std::size_t i = 0; i < n; ++i) out[i].setZero();
+  if (!springs_.empty()) add_spring_forces(springs_, x.data(), v.data(), out.data());
+  if (scene_.air)
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] += air_force(scene_, scene_.bodies[i], v[i], omega[i]);
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] =
+        inverse_mass_[i] == 0.0 ? Vec3::Zero() : Vec3(scene_.gravity + out[i] * inverse_mass_[i]);
 }
 
 double total_energy(const Scene& scene, const State& state) {
@@ -31,6 +37,11 @@ double total_energy(const Scene& scene, const State& state) {
                                      inertia.z() * w.z() * w.z());
     energy += 0.5 * body.mass * s.velocity.dot(s.velocity) + rotational -
               body.mass * scene.gravity.dot(s.position);
+  }
+  for (const Spring& spring : scene.springs) {
+    const double stretch =
+        (state[spring.body_b].position - state[spring.body_a].position).norm() - spring.rest_length;
+    energy += 0.5 * spring.stiffness * stretch * stretch;
   }
   return energy;
 }

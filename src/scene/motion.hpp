@@ -1,21 +1,35 @@
-// The scene's equations of motion for free bodies: gravity plus air forces, per body.
-// The course methods and the reference integrate these same equations; they differ only
-// in how they step through time.
+// The scene's equations of motion between contacts: gravity, air forces and springs. The
+// course methods and the reference integrate these same equations; they differ only in how
+// they step through time.
 #pragma once
 
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "scene/spring_forces.hpp"
 #include "scene/state.hpp"
 
 namespace bb {
 
-/// Linear acceleration (m/s^2) of every body at positions `x` and velocities `v`;
-/// `omega` is each body's angular velocity. Fixed bodies get zero.
-void accelerations(const Scene& scene, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                   const std::vector<Vec3>& omega, std::vector<Vec3>& out);
+/// The equations set up once per run, so that evaluating them allocates nothing.
+class EquationsOfMotion {
+ public:
+  explicit EquationsOfMotion(const Scene& scene);
+  /// Linear acceleration (m/s^2) of every body at positions `x` and velocities `v`; `omega`
+  /// is each body's angular velocity. Fixed bodies get zero. `out` must have one entry per
+  /// body.
+  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                     const std::vector<Vec3>& omega, std::vector<Vec3>& out) const;
+  const SpringNetwork& springs() const { return springs_; }
 
-/// Total mechanical energy (J): kinetic, rotational and gravitational (zero at the origin).
+ private:
+  const Scene& scene_;
+  SpringNetwork springs_;
+  std::vector<double> inverse_mass_;  ///< 1/kg, 0 for fixed bodies
+};
+
+/// Total mechanical energy (J): kinetic, rotational, gravitational (zero at the origin) and
+/// the springs' potential energy.
 double total_energy(const Scene& scene, const State& state);
 
 /// The state the case file describes at t = 0.

@@ -164,7 +164,8 @@ point = [-1.0, 0.25, 0.0]
 }
 
 // The analytic Jacobian msbdf uses agrees with central differences of derivatives() on a
-// spinning box and a ball in drag, Magnus and wind, away from zero relative speed.
+// spinning box and a ball in drag, Magnus and wind, away from zero relative speed, joined
+// by a stretched, damped spring.
 TEST(SceneModel, TheAnalyticJacobianAgreesWithNumericalDifferences) {
   const Scene scene = test::scene_from(R"(name = "jacobian"
 dims = 3
@@ -191,6 +192,11 @@ mass = 2.0
 position = [2.0, 3.0, 0.0]
 velocity = [-1.0, 0.0, 0.5]
 angular_velocity = [1.0, 4.0, -2.0]
+[[spring]]
+bodies = ["ball", "crate"]
+stiffness = 50.0
+damping = 0.7
+rest_length = 1.5
 )");
   SceneModel model(scene);
   std::vector<double> y = model.initial_state();
