@@ -10,12 +10,32 @@ ObservableValue nth(const std::vector<double>& values, int n, const char* what) 
   return {std::nullopt, "only " + std::to_string(values.size()) + " " + what + " in the run"};
 }
 
+/// The mean time between upward zero crossings of the velocity along the axis it crosses
+/// zero most often on (the swing's axis; a fall or a drift never crosses), the widest
+/// swing among equals.
+ObservableValue period(const BodyEvents& b) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k) {
+    const std::size_t n = b.upward_crossings[k].size(), best = b.upward_crossings[axis].size();
+    if (n > best || (n == best && b.velocity_range[k] > b.velocity_range[axis])) axis = k;
+  }
+  const std::vector<double>& t = b.upward_crossings[axis];
+  if (t.size() < 2)
+    return {std::nullopt, "fewer than two full swings in the run (" + std::to_string(t.size()) +
+                              " upward zero crossings of the velocity)"};
+  return {(t.back() - t.front()) / static_cast<double>(t.size() - 1), ""};
+}
+
 }  // namespace
 
 std::optional<ObservableValue> measure_event(const Observe& observe, const EventTrace& events) {
   const std::string& kind = observe.kind;
+  if (kind == "max_stretch") {
+    if (!events.max_stretch) return ObservableValue{std::nullopt, "the run has no event trace"};
+    return ObservableValue{*events.max_stretch, ""};
+  }
   const bool body_kind = kind == "contact_time" || kind == "bounce_apex" ||
-                         kind == "post_velocity" || kind == "max_penetration";
+                         kind == "post_velocity" || kind == "max_penetration" || kind == "period";
   if (body_kind) {
     if (observe.body < 0 || static_cast<std::size_t>(observe.body) >= events.bodies.size())
       return ObservableValue{std::nullopt, "the run has no event trace"};
@@ -23,6 +43,7 @@ std::optional<ObservableValue> measure_event(const Observe& observe, const Event
     if (kind == "contact_time") return nth(b.contact_times, observe.n, "contacts");
     if (kind == "bounce_apex") return nth(b.apex_heights, observe.n, "apexes after a contact");
     if (kind == "max_penetration") return ObservableValue{b.max_penetration, ""};
+    if (kind == "period") return period(b);
     if (!b.post_velocity) return ObservableValue{std::nullopt, "the body touched nothing"};
     return ObservableValue{(*b.post_velocity).norm(), ""};
   }

@@ -22,6 +22,24 @@ ObservableValue terminal_speed(const Scene& scene, const Body& body) {
   return {std::sqrt(body.mass * g / k), ""};
 }
 
+ObservableValue sag(const Scene& scene, const State& state) {
+  if (!scene.grid) return {std::nullopt, "does not apply: the case has no [grid]"};
+  const double g = scene.gravity.norm();
+  if (g <= 0.0) return {std::nullopt, "does not apply: the case has no gravity"};
+  // Heights along -gravity; rows are the grid's j index (its first row is the top row).
+  const Vec3 up = -scene.gravity / g;
+  const std::vector<int>& size = scene.grid->size;
+  const int nx = size[0], ny = size[1], nz = size.size() > 2 ? size[2] : 1;
+  const int first = scene.grid->first_body;
+  double top = 0.0, bottom = 0.0;
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      top += state[first + k * ny * nx + i].position.dot(up);
+      bottom += state[first + (k * ny + ny - 1) * nx + i].position.dot(up);
+    }
+  return {(top - bottom) / (nx * nz), ""};
+}
+
 std::optional<double> formula_value(const Scene& scene, const Observe& observe) {
   if (observe.kind != "terminal_velocity") return std::nullopt;
   return terminal_speed(scene, scene.bodies[observe.body]).value;
@@ -31,6 +49,7 @@ ObservableValue measure(const Scene& scene, const Observe& observe, const Trajec
   if (trajectory.states.empty()) return {std::nullopt, "no samples"};
   // Bounces, contacts and collisions come from the run's events, seen at every step.
   if (auto from_events = measure_event(observe, trajectory.events)) return *from_events;
+  if (observe.kind == "sag") return sag(scene, trajectory.states.back());
   const Vec3& v = trajectory.states.back()[observe.body].velocity;
   if (observe.kind == "final_speed") return {v.norm(), ""};
   if (observe.kind == "terminal_velocity") {

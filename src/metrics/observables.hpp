@@ -18,8 +18,14 @@ struct ObservableValue {
 /// The observable's value on one run:
 /// - final_speed: |v| at the end of the run (m/s);
 /// - terminal_velocity: |v - wind| at the end of the run (m/s), the speed relative to the
-///   air that tends to the terminal speed; a note where the terminal speed does not apply.
+///   air that tends to the terminal speed; a note where the terminal speed does not apply;
+/// - sag: how far the grid's last row hangs below its first at the end (m, along gravity);
+/// - the event kinds (bounces, contacts, period, max_stretch): see event_observables.hpp.
 ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory);
+
+/// The sag of the scene's grid at `state`: the mean height of its first row (j = 0, the
+/// anchored row of a cloth) less that of its last row, heights along -gravity (m).
+ObservableValue sag(const Scene& scene, const State& state);
 
 /// The terminal speed of `body`, sqrt(2 m |g| / (rho Cd A)) with A = pi r^2 (m/s), or a
 /// note saying why it does not apply (no drag, no air, no gravity, or a Magnus force).

@@ -33,11 +33,47 @@ StepObserver::StepObserver(const Scene& scene)
       rising_(scene.bodies.size(), false),
       bounced_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
+  for (const Observe& o : scene.observes) {
+    if (o.kind == "period") swinging_.push_back(o.body);
+    if (o.kind == "max_stretch") watch_stretch_ = true;
+  }
+  if (watch_stretch_) trace_.max_stretch = 0.0;
+}
+
+void StepObserver::observe_swings(double t, const State& s) {
+  const double h = t - previous_t_;
+  for (int i : swinging_) {
+    BodyEvents& e = trace_.bodies[i];
+    const Vec3 v0 = previous_[i].velocity, v1 = s[i].velocity;
+    for (int axis = 0; axis < 3; ++axis) {
+      // Upwards through zero: negative at the last step, not at this one.
+      // Linear interpolation: a sine is straight near its zero, so the crossing is placed
+      // to third order in the step, whatever the integrator staggers.
+      if (v0[axis] < 0.0 && v1[axis] >= 0.0)
+        e.upward_crossings[axis].push_back(previous_t_ + h * v0[axis] / (v0[axis] - v1[axis]));
+    }
+  }
 }
 
 void StepObserver::observe(double t, const State& s) {
   if (!active()) return;
   const double dt = t - previous_t_;
+  if (!first_ && !swinging_.empty()) observe_swings(t, s);
+  for (std::size_t k = 0; k < swinging_.size(); ++k) {
+    // The swing of each component, to choose the axis the body oscillates along.
+    const Vec3& v = s[swinging_[k]].velocity;
+    if (first_) low_.push_back(v), high_.push_back(v);
+    low_[k] = low_[k].cwiseMin(v);
+    high_[k] = high_[k].cwiseMax(v);
+    trace_.bodies[swinging_[k]].velocity_range = high_[k] - low_[k];
+  }
+  if (watch_stretch_)
+    for (const Spring& spring : scene_.springs) {
+      if (spring.rest_length <= 0.0) continue;
+      const double length = (s[spring.body_b].position - s[spring.body_a].position).norm();
+      trace_.max_stretch =
+          std::max(*trace_.max_stretch, (length - spring.rest_length) / spring.rest_length);
+    }
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const ContactPair& pair = pairs_[k];
     const int b = pair.ground() ? pair.a : pair.b;

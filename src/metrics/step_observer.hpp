@@ -1,6 +1,7 @@
 // Watches a fixed-step run at every step and finds its contacts and apexes from the
 // states alone, the way a viewer of the run would: a contact is a step where two things
-// that are close stop approaching, an apex a step where a body stops rising.
+// that are close stop approaching, an apex a step where a body stops rising. It also
+// times the swings of bodies whose period is observed and the springs' largest stretch.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,8 +20,8 @@ class StepObserver {
   /// The state at time t (seconds), after every step, starting with t = 0.
   void observe(double t, const State& state);
   const EventTrace& trace() const { return trace_; }
-  /// False when the scene has nothing to touch: observing costs nothing then.
-  bool active() const { return !pairs_.empty(); }
+  /// False when the scene has nothing to touch, time or stretch: observing costs nothing then.
+  bool active() const { return !pairs_.empty() || !swinging_.empty() || watch_stretch_; }
 
  private:
   const Scene& scene_;
@@ -29,6 +30,11 @@ class StepObserver {
   std::vector<Eigen::Vector3d> normals_;  ///< per pair: the contact normal at the last step
   std::vector<bool> rising_;   ///< per body: moving away from the ground at the last step
   std::vector<bool> bounced_;  ///< per body: a contact happened since its last apex
+  /// Zero crossings of the velocity of the bodies whose period is observed.
+  void observe_swings(double t, const State& s);
+  std::vector<int> swinging_;     ///< bodies with a period observable
+  std::vector<Vec3> low_, high_;  ///< per swinging body: smallest and largest velocity seen
+  bool watch_stretch_ = false;    ///< a max_stretch observable is asked for
   State previous_;
   double previous_t_ = 0.0;
   bool first_ = true;

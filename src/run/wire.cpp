@@ -82,12 +82,16 @@ void put(Writer& w, const EventTrace& events) {
     w.raw<char>(b.post_velocity.has_value());
     if (b.post_velocity) put(w, *b.post_velocity);
     w.raw(b.max_penetration);
+    for (const auto& crossings : b.upward_crossings) put(w, crossings);
+    put(w, b.velocity_range);
   }
   w.raw<char>(events.first_collision.has_value());
   if (const auto& c = events.first_collision) {
     w.raw(c->body_a), w.raw(c->body_b), w.raw(c->time), put(w, c->momentum_change);
     w.raw(c->kinetic_energy_before), w.raw(c->kinetic_energy_after);
   }
+  w.raw<char>(events.max_stretch.has_value());
+  if (events.max_stretch) w.raw(*events.max_stretch);
 }
 EventTrace get_events(Reader& r) {
   EventTrace events;
@@ -96,6 +100,8 @@ EventTrace get_events(Reader& r) {
     b.contact_times = get_values(r), b.apex_heights = get_values(r);
     if (r.raw<char>()) b.post_velocity = get_vec(r);
     b.max_penetration = r.raw<double>();
+    for (auto& crossings : b.upward_crossings) crossings = get_values(r);
+    b.velocity_range = get_vec(r);
   }
   if (r.raw<char>()) {
     CollisionBalance c;
@@ -104,6 +110,7 @@ EventTrace get_events(Reader& r) {
     c.kinetic_energy_before = r.raw<double>(), c.kinetic_energy_after = r.raw<double>();
     events.first_collision = c;
   }
+  if (r.raw<char>()) events.max_stretch = r.raw<double>();
   return events;
 }
 

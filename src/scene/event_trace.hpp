@@ -4,6 +4,7 @@
 // reference reports its located events exactly.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -17,6 +18,10 @@ struct BodyEvents {
   std::vector<double> apex_heights;
   std::optional<Vec3> post_velocity;  ///< m/s, right after the body's first contact
   double max_penetration = 0.0;       ///< metres: the deepest overlap seen (0: none)
+  /// Per axis x, y, z: the times (s) the velocity component crossed zero upwards, for a
+  /// body whose period is observed.
+  std::array<std::vector<double>, 3> upward_crossings;
+  Vec3 velocity_range;  ///< m/s per axis: largest minus smallest component seen
 };
 
 /// Momentum and kinetic energy of the whole scene just before and just after the first
@@ -34,6 +39,8 @@ struct CollisionBalance {
 struct EventTrace {
   std::vector<BodyEvents> bodies;  ///< one per body, in scene order
   std::optional<CollisionBalance> first_collision;
+  /// The largest relative extension (l - L) / L of any spring seen, when observed.
+  std::optional<double> max_stretch;
 };
 
 }  // namespace bb

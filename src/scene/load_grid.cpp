@@ -106,6 +106,7 @@ void read_grid(TomlReader& root, Scene& scene) {
   const auto index = [&](int i, int j, int k) {
     return static_cast<int>(scene.bodies.size()) - nx * ny * nz + (k * ny + j) * nx + i;
   };
+  g.first_body = static_cast<int>(scene.bodies.size());
   SplitMix64 rng{g.seed};
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)

@@ -83,9 +83,17 @@ void read_observes(TomlReader& root, Scene& scene) {
     if (!contains(observable_kinds(), o.kind))
       r.fail(r.line_of("kind"),
              "unknown observable kind '" + o.kind + "'; known: " + joined(observable_kinds()));
-    const std::string body = r.string("body");
-    o.body = require_body(r, scene, body, r.line_of("body"));
-    o.name = o.kind + "/" + body;
+    if (observable_is_scene_wide(o.kind)) {
+      // A quantity of the whole scene: it is named by its kind and takes no body.
+      if (r.has("body"))
+        r.fail(r.line_of("body"),
+               "kind '" + o.kind + "' describes the whole scene; it takes no 'body'");
+      o.name = o.kind;
+    } else {
+      const std::string body = r.string("body");
+      o.body = require_body(r, scene, body, r.line_of("body"));
+      o.name = o.kind + "/" + body;
+    }
     if (observable_is_counted(o.kind)) {
       o.n = r.integer_or("n", 1);
       require_range(r, "n", o.n, 1.0, 0.0);

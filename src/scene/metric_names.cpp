@@ -11,13 +11,27 @@ const std::vector<std::string>& error_metric_names() {
 }
 
 const std::vector<std::string>& observable_kinds() {
-  static const std::vector<std::string> v = {
-      "final_speed",     "terminal_velocity", "stop_time",
-      "stop_distance",   "rest_creep",        "bounce_apex",
-      "contact_time",    "post_velocity",     "post_angular_velocity",
-      "period",          "max_penetration",   "final_angle",
-      "momentum_change", "energy_change"};
+  static const std::vector<std::string> v = {"final_speed",
+                                             "terminal_velocity",
+                                             "stop_time",
+                                             "stop_distance",
+                                             "rest_creep",
+                                             "bounce_apex",
+                                             "contact_time",
+                                             "post_velocity",
+                                             "post_angular_velocity",
+                                             "period",
+                                             "max_penetration",
+                                             "final_angle",
+                                             "momentum_change",
+                                             "energy_change",
+                                             "max_stretch",
+                                             "sag"};
   return v;
+}
+
+bool observable_is_scene_wide(const std::string& kind) {
+  return kind == "max_stretch" || kind == "sag";
 }
 
 bool observable_is_counted(const std::string& kind) {

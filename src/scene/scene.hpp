@@ -81,6 +81,8 @@ struct Grid {
   std::string anchored = "none";
   double jitter = 0.0;
   std::uint64_t seed = 1;
+  int first_body = 0;  ///< index of p0_0 in Scene::bodies; particle (i, j, k) follows at
+                       ///< first_body + (k * rows + j) * cols + i
   int line = 0;
 };
 
