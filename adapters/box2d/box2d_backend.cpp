@@ -88,7 +88,7 @@ class Box2dSimulation : public Simulation {
     s.push_back({"precision", std::string("float")});
     s.push_back({"sleeping", false});
     if (contacts_)
-      add_contact_settings(scene_, s);
+      add_contact_settings(scene_, *contacts_, s);
     else
       s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
     if (!scene_.impulses.empty())

@@ -35,7 +35,10 @@ b2FixtureDef fixture_def(const b2Shape* shape, std::size_t slot, float restituti
 
 Box2dContacts::Box2dContacts(const Scene& scene, b2World& world, const std::vector<b2Body*>& bodies,
                              float restitution_threshold)
-    : pairs_(contact_pairs(scene)), slots_(scene.bodies.size() + 1), table_(slots_ * slots_, -1) {
+    : pairs_(contact_pairs(scene)),
+      restitution_threshold_(restitution_threshold),
+      slots_(scene.bodies.size() + 1),
+      table_(slots_ * slots_, -1) {
   const std::size_t ground = slots_ - 1;
   std::vector<bool> touches(slots_, false);
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
@@ -86,15 +89,26 @@ bool Box2dContacts::ShouldCollide(b2Fixture* fixture_a, b2Fixture* fixture_b) {
   return pair_of(fixture_a, fixture_b) != nullptr;
 }
 
-void Box2dContacts::PreSolve(b2Contact* contact, const b2Manifold* /*old_manifold*/) {
+void Box2dContacts::PreSolve(b2Contact* contact, const b2Manifold* old_manifold) {
   const ContactPair* pair = pair_of(contact->GetFixtureA(), contact->GetFixtureB());
   if (pair == nullptr) return;
   contact->SetRestitution(float(pair->restitution));
   // Box2D has one friction coefficient for sticking and sliding: the kinetic one.
   contact->SetFriction(float(pair->friction_kinetic));
+  // A contact that has just begun: would the solver bounce it? Its approach speed at the
+  // first point, as the contact solver measures it (b2ContactSolver's vRel).
+  if (old_manifold->pointCount > 0 || pair->restitution <= 0.0) return;
+  b2WorldManifold world;
+  contact->GetWorldManifold(&world);
+  const b2Vec2 point = world.points[0];
+  const b2Vec2 relative =
+      contact->GetFixtureB()->GetBody()->GetLinearVelocityFromWorldPoint(point) -
+      contact->GetFixtureA()->GetBody()->GetLinearVelocityFromWorldPoint(point);
+  const float approach = -b2Dot(world.normal, relative);
+  if (approach > 0.0f && approach < restitution_threshold_) ++bounces_below_threshold_;
 }
 
-void add_contact_settings(const Scene& scene, Settings& s) {
+void add_contact_settings(const Scene& scene, const Box2dContacts& contacts, Settings& s) {
   s.push_back(
       {"collision", std::string("Box2D's own detection: a b2CircleShape per sphere and a "
                                 "b2PolygonShape box per box that some pair lists; fixed bodies "
@@ -115,7 +129,9 @@ void add_contact_settings(const Scene& scene, Settings& s) {
                std::string("a contact whose normal approach speed is below "
                            "restitution_threshold m/s does not bounce (b2ContactSolver: "
                            "restitution only when vRel < -threshold), whatever the case's "
-                           "restitution")});
+                           "restitution; bounces_below_threshold counts this run's contacts "
+                           "that began so slowly with a restitution above zero")});
+  s.push_back({"bounces_below_threshold", double(contacts.bounces_below_threshold())});
   s.push_back({"linear_slop", std::string("0.005 m (b2_linearSlop, compile-time): the "
                                           "position solver leaves this much overlap")});
   s.push_back(

@@ -32,6 +32,10 @@ class Box2dContacts : public b2ContactFilter, public b2ContactListener {
   /// The case's restitution and friction for this pair, set before every solve.
   void PreSolve(b2Contact* contact, const b2Manifold* old_manifold) override;
 
+  /// Contacts so far that began approaching slower than the restitution threshold, with a
+  /// restitution above zero: bounces the case has and Box2D does not make.
+  int bounces_below_threshold() const { return bounces_below_threshold_; }
+
  private:
   /// The pair two fixtures stand for, or nullptr when the case lists none.
   const ContactPair* pair_of(b2Fixture* a, b2Fixture* b) const;
@@ -39,11 +43,14 @@ class Box2dContacts : public b2ContactFilter, public b2ContactListener {
   int& table(std::size_t a, std::size_t b) { return table_[a * slots_ + b]; }
 
   std::vector<ContactPair> pairs_;
+  float restitution_threshold_ = 1.0f;
+  int bounces_below_threshold_ = 0;
   std::size_t slots_ = 0;   ///< bodies + 1 (the ground)
   std::vector<int> table_;  ///< slots_ x slots_, symmetric; -1: may not touch
 };
 
-/// The engine_settings entries that describe how contacts work in Box2D and in this adapter.
-void add_contact_settings(const Scene& scene, Settings& settings);
+/// The engine_settings entries that describe how contacts work in Box2D and in this adapter,
+/// with what `contacts` saw during the run.
+void add_contact_settings(const Scene& scene, const Box2dContacts& contacts, Settings& settings);
 
 }  // namespace bb

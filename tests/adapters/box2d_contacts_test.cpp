@@ -148,6 +148,8 @@ TEST(Box2dContacts, SettingsNameTheRulesThatChangeBounces) {
   EXPECT_NE(setting(s, "restitution_rule").find("PreSolve"), std::string::npos);
   EXPECT_EQ(setting(s, "restitution_threshold"), "1");
   EXPECT_NE(setting(s, "restitution_threshold_rule").find("does not bounce"), std::string::npos);
+  // Every bounce of this case is faster than 1 m/s.
+  EXPECT_EQ(setting(s, "bounces_below_threshold"), "0");
   EXPECT_NE(setting(s, "linear_slop").find("0.005 m"), std::string::npos);
   EXPECT_EQ(setting(s, "bullet"), "false");
   EXPECT_NE(setting(s, "continuous_collision").find("bullet"), std::string::npos);
@@ -249,11 +251,13 @@ TEST(Box2dContacts, BelowTheRestitutionThresholdTheBallDoesNotBounce) {
   EXPECT_LT(highest_after_contact, 0.51);
   EXPECT_NE(setting(kept.engine_settings, "restitution_threshold_rule").find("does not bounce"),
             std::string::npos);
+  EXPECT_EQ(setting(kept.engine_settings, "bounces_below_threshold"), "1");
   // With the threshold set to zero in the case, the same drop bounces.
   const Scene no_threshold =
       test::scene_from(slow_drop("\n[engines.box2d]\nrestitution_threshold = 0.0\n"));
   const RunRecord bounced = run_ok(no_threshold, no_threshold.report_dt);
   EXPECT_EQ(setting(bounced.engine_settings, "restitution_threshold"), "0");
+  EXPECT_EQ(setting(bounced.engine_settings, "bounces_below_threshold"), "0");
   ASSERT_FALSE(bounced.trajectory.events.bodies[0].apex_heights.empty());
   EXPECT_GT(bounced.trajectory.events.bodies[0].apex_heights[0], 0.51);
 }
