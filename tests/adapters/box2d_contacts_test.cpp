@@ -140,6 +140,46 @@ TEST(Box2dContacts, ADroppedBallBouncesNearTheClosedForm) {
   }
 }
 
+// A ground tilted by 30 degrees whose line passes through (1, 0.5): a ball dropped onto it.
+const char* kSlope = R"(name = "slope"
+dims = 2
+duration = 1.5
+sample = 0.0166666666666666667
+dt = [0.0166666666666666667]
+report_dt = 0.0166666666666666667
+
+[ground]
+point = [1.0, 0.5, 0.0]
+normal = [0.5, 0.8660254037844386, 0.0]
+restitution = 0.8
+
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 5.0, 0.0]
+)";
+
+TEST(Box2dContacts, ATiltedGroundLiesWhereTheCaseSaysAndBouncesAlongItsNormal) {
+  REQUIRE_BOX2D();
+  const Scene scene = test::scene_from(kSlope);
+  const double dt = scene.report_dt, g = -scene.gravity.y(), e = scene.ground->restitution;
+  const Vec3 n = scene.ground->normal;
+  const Body& ball = scene.bodies[0];
+  // The gap along the normal closes at g n_y t^2 / 2.
+  const double gap = (ball.position - scene.ground->point).dot(n) - ball.radius;
+  const double first_contact = std::sqrt(2.0 * gap / (g * n.y()));
+  const RunRecord run = run_ok(scene, dt);
+  const BodyEvents& events = run.trajectory.events.bodies[0];
+  ASSERT_FALSE(events.contact_times.empty());
+  EXPECT_NEAR(events.contact_times[0], first_contact, 2.0 * dt);
+  // It leaves along the normal at e times the speed it came in with, give or take the
+  // step's gravity (the time-of-impact step bounces with the end-of-step velocity).
+  ASSERT_TRUE(events.post_velocity.has_value());
+  const double normal_in = g * n.y() * first_contact;
+  EXPECT_NEAR(events.post_velocity->dot(n), e * normal_in, (1.0 + e) * g * dt);
+}
+
 TEST(Box2dContacts, SettingsNameTheRulesThatChangeBounces) {
   REQUIRE_BOX2D();
   const Scene bounce = load_case(test::source_path("cases/double_bounce.toml"));
