@@ -117,12 +117,14 @@ class Box2dSimulation : public Simulation {
   float dt_;
   int velocity_iterations_ = 8;
   int position_iterations_ = 3;
+  /// Null when nothing can touch; declared before the world, which points at it, so that
+  /// it outlives the world.
+  std::unique_ptr<Box2dContacts> contacts_;
   b2World world_;
   std::vector<b2Body*> bodies_;
-  std::unique_ptr<Box2dContacts> contacts_;  ///< null when nothing can touch
-  long steps_ = 0;                           ///< steps taken; the next starts at steps_ * dt
-  std::size_t next_impulse_ = 0;             ///< the first impulse not applied yet
-  State state_{scene_.bodies.size()};        ///< read before each step for the forces
+  long steps_ = 0;                     ///< steps taken; the next starts at steps_ * dt
+  std::size_t next_impulse_ = 0;       ///< the first impulse not applied yet
+  State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
 };
 
