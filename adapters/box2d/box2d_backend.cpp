@@ -1,10 +1,12 @@
 // Box2D 2.4 as a backend: 2D scenes only, single precision.
 #include <box2d/box2d.h>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
 #include "../point_body.hpp"
+#include "box2d_contacts.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -20,10 +22,11 @@ b2Vec2 to_b2(const Vec3& v) {
 class Box2dSimulation : public Simulation {
  public:
   Box2dSimulation(const Scene& scene, double dt)
-      : scene_(scene), dt_(float(dt)), world_(to_b2(scene.gravity)) {
+      : scene_(scene), dt_seconds_(dt), dt_(float(dt)), world_(to_b2(scene.gravity)) {
     velocity_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "velocity_iterations"));
     position_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "position_iterations"));
     world_.SetAllowSleeping(false);
+    const bool contacts = has_contacts(scene);
     for (const Body& b : scene.bodies) {
       b2BodyDef def;
       def.type = b.fixed ? b2_staticBody : b2_dynamicBody;
@@ -34,18 +37,31 @@ class Box2dSimulation : public Simulation {
       def.linearDamping = float(engine_setting(scene, "box2d", "linear_damping"));
       def.angularDamping = float(engine_setting(scene, "box2d", "angular_damping"));
       def.allowSleep = false;
+      def.bullet = contacts && !b.fixed && engine_setting(scene, "box2d", "bullet") != 0.0;
       b2Body* body = world_.CreateBody(&def);
-      // No contacts in the scene, so no fixtures: mass and inertia are set directly. A point
-      // body gets a small sphere's inertia, as in every engine (point_body.hpp).
-      if (!b.fixed) {
-        b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z())};
-        body->SetMassData(&mass);
-      }
       bodies_.push_back(body);
     }
+    // Fixtures only where something can touch; they carry no mass of their own.
+    if (contacts)
+      contacts_ = std::make_unique<Box2dContacts>(
+          scene, world_, bodies_, float(engine_setting(scene, "box2d", "restitution_threshold")));
+    // Mass and inertia set directly: Box2D's circle would be a disc. A point body gets a
+    // small sphere's inertia, as in every engine (point_body.hpp).
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+      if (!scene.bodies[i].fixed) {
+        const Body& b = scene.bodies[i];
+        b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z())};
+        bodies_[i]->SetMassData(&mass);
+      }
   }
 
   void step() override {
+    // Impulses due at the start of this step, through the engine's own API.
+    for (; next_impulse_ < scene_.impulses.size() &&
+           std::llround(scene_.impulses[next_impulse_].time / dt_seconds_) <= steps_;
+         ++next_impulse_)
+      push(scene_.impulses[next_impulse_]);
+    ++steps_;
     // The harness's forces from the engine's own current state, as a game would add them.
     if (has_external_forces(scene_)) {
       read(state_);
@@ -71,7 +87,14 @@ class Box2dSimulation : public Simulation {
     Settings s = engine_key_settings(scene_, "box2d");
     s.push_back({"precision", std::string("float")});
     s.push_back({"sleeping", false});
-    s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
+    if (contacts_)
+      add_contact_settings(scene_, *contacts_, s);
+    else
+      s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
+    if (!scene_.impulses.empty())
+      s.push_back({"impulse", std::string("b2Body::ApplyLinearImpulse(J, point, true) before "
+                                          "the step that starts at the impulse's time: J's x "
+                                          "and y; the spin follows from the point")});
     add_point_body_setting(scene_, s);
     s.push_back({"max_translation", std::string("2 m per step (b2_maxTranslation, built in)")});
     s.push_back({"max_rotation", std::string("pi/2 rad per step (b2_maxRotation, built in)")});
@@ -79,12 +102,28 @@ class Box2dSimulation : public Simulation {
   }
 
  private:
+  static bool has_contacts(const Scene& scene) {
+    return scene.ground.has_value() || !scene.contacts.empty();
+  }
+
+  void push(const Impulse& imp) {
+    b2Body* body = bodies_[static_cast<std::size_t>(imp.body)];
+    const b2Vec2 point = imp.point ? to_b2(*imp.point) : body->GetWorldCenter();
+    body->ApplyLinearImpulse(to_b2(imp.impulse), point, true);
+  }
+
   const Scene& scene_;
+  double dt_seconds_;  ///< the step as the case gives it, for impulse times
   float dt_;
   int velocity_iterations_ = 8;
   int position_iterations_ = 3;
+  /// Null when nothing can touch; declared before the world, which points at it, so that
+  /// it outlives the world.
+  std::unique_ptr<Box2dContacts> contacts_;
   b2World world_;
   std::vector<b2Body*> bodies_;
+  long steps_ = 0;                     ///< steps taken; the next starts at steps_ * dt
+  std::size_t next_impulse_ = 0;       ///< the first impulse not applied yet
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
 };
@@ -93,8 +132,9 @@ class Box2dBackend : public Backend {
  public:
   std::string name() const override { return "box2d"; }
   FeatureSet supports() const override {
-    return {Feature::Gravity, Feature::Drag,     Feature::Magnus,
-            Feature::Wind,    Feature::Rotation, Feature::Boxes};
+    return {Feature::Gravity,     Feature::Drag,   Feature::Magnus,        Feature::Wind,
+            Feature::Rotation,    Feature::Boxes,  Feature::GroundContact, Feature::BodyContact,
+            Feature::Restitution, Feature::Impulse};
   }
   std::pair<std::string, std::string> library_version() const override {
     const std::string header = std::to_string(b2_version.major) + "." +

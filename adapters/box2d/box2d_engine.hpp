@@ -12,7 +12,13 @@ inline EngineDescription box2d_engine() {
           {{e, "velocity_iterations", KeyKind::Integer, 8, "velocity solver iterations"},
            {e, "position_iterations", KeyKind::Integer, 3, "position solver iterations"},
            {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
-           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"}}};
+           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"},
+           {e, "restitution_threshold", KeyKind::Number, 1.0,
+            "normal approach speed below which a contact does not bounce, m/s "
+            "(b2FixtureDef::restitutionThreshold; Box2D's default)"},
+           {e, "bullet", KeyKind::Boolean, 0.0,
+            "continuous collision between moving bodies (b2BodyDef::bullet; Box2D's default "
+            "is off)"}}};
 }
 
 }  // namespace bb
