@@ -97,7 +97,11 @@ void StepObserver::observe(double t, const State& s) {
     // Along the last step's normal, so a body that passed through a thin panel (whose
     // normal flips as the centre crosses it) is not mistaken for one that bounced.
     const double closing_before_normal = -relative.dot(normals_[k]);
-    if (!first_ && closing_[k] > 0.0 && closing_before_normal <= 0.0 && p.gap < near) {
+    // Stopped approaching, up to single precision's rounding: a plastic collision in a
+    // float engine leaves the two bodies a few ulps apart in speed.
+    const double rounding =
+        1e-5 * (s[pair.a].velocity.norm() + (b_moves ? s[pair.b].velocity.norm() : 0.0));
+    if (!first_ && closing_[k] > rounding && closing_before_normal <= rounding && p.gap < near) {
       for (int body : {pair.a, b_moves ? pair.b : -1}) {
         if (body < 0) continue;
         BodyEvents& e = trace_.bodies[body];
