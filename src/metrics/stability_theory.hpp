@@ -9,8 +9,9 @@
 namespace bb {
 
 struct TheoreticalLimit {
-  double dt = 0.0;      ///< seconds
+  double dt = 0.0;      ///< seconds; 0: no step is stable
   std::string formula;  ///< how it was derived, in words
+  std::string note;     ///< how to read the measured limit beside it, may be empty
 };
 
 /// The largest stable step theory predicts for `integrator` on `scene`, when the scene is

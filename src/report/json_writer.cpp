@@ -92,6 +92,7 @@ Json results_json(const CaseResults& results) {
                                  {"reason", r.reason},
                                  {"theory", optional_json(r.theory)},
                                  {"theory_formula", r.theory_formula},
+                                 {"theory_note", r.theory_note},
                                  {"trials", r.trials}};
   j["gates"] = Json::array();
   for (const GateResult& g : results.gates)

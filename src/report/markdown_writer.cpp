@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
 
 #include "report/format.hpp"
@@ -119,13 +120,21 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   if (!results.stability.empty()) {
     out += fmt::format(
         "\n## Stability\n\nThe largest stable step per backend, by bisection in log dt between "
-        "{:g} s and {:g} s. Stable means no divergence over the {:g} s of the case and energy "
-        "never "
-        "more than {:g} times its scale above its start. Theory, where the scene allows one, is "
+        "{:g} s and {:g} s. Stable means bounded over the {:g} s of the case: no divergence, "
+        "and the energy's rise above its start not still growing at the end (its largest rise "
+        "in the last quarter of the run at most {:g} times that in the second quarter). A "
+        "large swing that repeats itself is stable. Theory, where the scene allows one, is "
         "derived from the case's own numbers.\n\n",
         scene.stability.dt_min, scene.stability.dt_max, scene.duration,
-        scene.stability.energy_factor);
+        scene.stability.growth_factor);
     out += render_markdown(stability_table(results));
+    // How to read the measured limits beside the theory, once per distinct note.
+    std::vector<std::string> notes;
+    for (const StabilityResult& r : results.stability)
+      if (!r.theory_note.empty() &&
+          std::find(notes.begin(), notes.end(), r.theory_note) == notes.end())
+        notes.push_back(r.theory_note);
+    for (const std::string& note : notes) out += "\n" + markdown_text(note) + "\n";
   }
 
   out += "\n## Every dt\n\n";

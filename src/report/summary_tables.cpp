@@ -129,7 +129,9 @@ Table stability_table(const CaseResults& results) {
     std::string result = r.status;
     if (!r.reason.empty()) result += ": " + r.reason;
     t.rows.push_back({r.backend, format_value(r.critical_dt), format_value(r.unstable_dt),
-                      r.theory ? format_value(r.theory) + " (" + r.theory_formula + ")" : "-",
+                      !r.theory          ? "-"
+                      : *r.theory == 0.0 ? r.theory_formula
+                                         : format_value(r.theory) + " (" + r.theory_formula + ")",
                       result});
   }
   return t;

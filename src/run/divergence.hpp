@@ -9,11 +9,12 @@
 
 namespace bb {
 
-/// Bounds derived from the scene, each ten times what the physics can reach.
+/// Bounds derived from the scene: ten times the travel the physics can reach, ten thousand
+/// times the energy it can trade.
 struct DivergenceBounds {
   double travel = 0.0;        ///< metres from a body's start
   double energy = 0.0;        ///< joules of |E - E(0)|
-  double energy_scale = 0.0;  ///< joules the scene can plausibly trade (one tenth of `energy`)
+  double energy_scale = 0.0;  ///< joules the scene can plausibly trade (1e-4 of `energy`)
 };
 
 DivergenceBounds divergence_bounds(const Scene& scene);

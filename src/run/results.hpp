@@ -67,6 +67,7 @@ struct StabilityResult {
   std::string reason;                 ///< why unstable_dt failed, or why unsupported
   std::optional<double> theory;       ///< seconds, where theory covers the scene
   std::string theory_formula;
+  std::string theory_note;  ///< how to read the measured limit beside the theory
   int trials = 0;
 };
 

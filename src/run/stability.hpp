@@ -12,8 +12,9 @@
 
 namespace bb {
 
-/// One run at one step: stable means no divergence over the whole duration and energy never
-/// above its start by more than (energy_factor - 1) energy scales.
+/// One run at one step: stable means bounded: no divergence over the whole duration, and
+/// the energy's rise above its start not still growing by the run's end (its largest rise in
+/// the last quarter at most growth_factor times that in the second quarter).
 struct StabilityTrial {
   bool stable = false;
   std::string reason;  ///< why not, when unstable

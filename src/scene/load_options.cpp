@@ -154,8 +154,13 @@ void read_report_and_stability(TomlReader& root, Scene& scene) {
   StabilityOptions& s = scene.stability;
   if (const toml::table* t = root.table("stability")) {
     TomlReader r = sub_reader(root, *t, "[stability]");
-    s.energy_factor = r.number_or("energy_factor", s.energy_factor);
-    require_range(r, "energy_factor", s.energy_factor, 1.0, 0.0, false);
+    if (r.has("energy_factor"))
+      r.fail(r.line_of("energy_factor"),
+             "'energy_factor' is gone: stable now means bounded (DESIGN.md); 'growth_factor' "
+             "says how much the energy's rise may grow from the run's second quarter to its "
+             "last");
+    s.growth_factor = r.number_or("growth_factor", s.growth_factor);
+    require_range(r, "growth_factor", s.growth_factor, 1.0, 0.0, false);
     // Absent bounds stay 0 and get their defaults below.
     if (r.has("dt_min")) {
       s.dt_min = r.number("dt_min");

@@ -145,8 +145,10 @@ struct ReportOptions {
 
 /// How `beachball stability` searches ([stability], optional).
 struct StabilityOptions {
-  /// Unstable when the energy rises above its start by more than (factor - 1) energy scales.
-  double energy_factor = 10.0;
+  /// Unstable when the energy's largest rise above its start in the last quarter of the
+  /// run (after its last impulse) is more than this many times its largest rise in the
+  /// second quarter: the energy grows without bound rather than swinging.
+  double growth_factor = 1.5;
   double dt_min = 0.0;  ///< seconds; 0: a quarter of the case's smallest dt
   double dt_max = 0.0;  ///< seconds; 0: a quarter of the duration
 };

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include "course/course_backend.hpp"
+#include "metrics/spring_modes.hpp"
 #include "metrics/stability_theory.hpp"
+#include "scene/load_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -68,31 +71,56 @@ TEST(Stability, UnstableEverywhereAndStableEverywhereAreSaid) {
   EXPECT_EQ(*always.critical_dt, scene.stability.dt_max);
 }
 
-TEST(Stability, EnergyGainBeyondTheFactorIsUnstable) {
-  // Explicit Euler gains energy m g^2 dt t / 2 in free fall: with a factor barely above 1,
-  // large steps count as unstable and small ones do not.
-  const Scene scene = test::scene_from(R"(name = "gain"
-dims = 2
-duration = 4.0
-sample = 0.1
-dt = [0.1]
-[stability]
-energy_factor = 1.01
-dt_min = 0.001
-dt_max = 1.0
-[course]
-integrators = ["explicit-euler"]
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 1.0
-position = [0.0, 100.0, 0.0]
-)");
-  const Registry registry = Registry::load();
-  const auto results = find_stability_all(scene, registry, {"course/explicit-euler"}, 1);
-  ASSERT_EQ(results.size(), 1u);
-  EXPECT_EQ(results[0].status, "bracketed");
-  EXPECT_NE(results[0].reason.find("energy rose"), std::string::npos) << results[0].reason;
+CourseBackend course(const std::string& integrator) {
+  return CourseBackend({"course/" + integrator, integrator, "mirror", "clamp"});
+}
+
+// Stable means bounded (DESIGN.md): semi-implicit Euler 1 percent below 2 / omega swings
+// its energy far from its start and is stable; 1 percent above it, and explicit Euler on
+// the undamped spring at any step, the energy grows without bound.
+TEST(Stability, ABoundedSwingIsStableAndGrowthIsNot) {
+  const Scene scene = load_case(test::source_path("cases/spring_pair.toml"));
+  const double limit = 2.0 / std::sqrt(100.0 / 0.5);  // omega^2 = k / mu, mu = 0.5 kg
+  const StabilityTrial below = try_step(course("semi-implicit-euler"), scene, 0.99 * limit);
+  EXPECT_TRUE(below.stable) << below.reason;
+  const StabilityTrial above = try_step(course("semi-implicit-euler"), scene, 1.01 * limit);
+  EXPECT_FALSE(above.stable);
+  const StabilityTrial euler = try_step(course("explicit-euler"), scene, 1e-3);
+  EXPECT_FALSE(euler.stable);
+  EXPECT_NE(euler.reason.find("grows without bound"), std::string::npos) << euler.reason;
+}
+
+TEST(Stability, SpringPairBracketsSemiImplicitEulerWithinOnePercentOfTwoOverOmega) {
+  const Scene scene = load_case(test::source_path("cases/spring_pair.toml"));
+  const auto results = find_stability_all(
+      scene, Registry::load(), {"course/semi-implicit-euler", "course/explicit-euler"}, 2);
+  ASSERT_EQ(results.size(), 2u);
+  const double two_over_omega = 2.0 / std::sqrt(100.0 / 0.5);
+  for (const StabilityResult& r : results) {
+    ASSERT_TRUE(r.theory.has_value()) << r.backend;
+    if (r.backend == "course/explicit-euler") {
+      EXPECT_EQ(r.status, "unstable at every dt tried");
+      EXPECT_EQ(*r.theory, 0.0) << "theory: unstable at every dt";
+    } else {
+      EXPECT_EQ(r.status, "bracketed");
+      EXPECT_NEAR(*r.theory, two_over_omega, 1e-9 * two_over_omega);
+      EXPECT_NEAR(*r.critical_dt / two_over_omega, 1.0, 0.01);
+    }
+  }
+}
+
+TEST(StabilityTheory, LinearLimitsOfTheIntegratorsOnAnOscillator) {
+  const double omega = 10.0;
+  EXPECT_NEAR(linear_stability_limit("semi-implicit-euler", omega, 0.0), 0.2, 1e-8);
+  EXPECT_NEAR(linear_stability_limit("velocity-verlet", omega, 0.0), 0.2, 1e-8);
+  EXPECT_NEAR(linear_stability_limit("rk4", omega, 0.0), 2.0 * std::sqrt(2.0) / omega, 1e-8);
+  EXPECT_EQ(linear_stability_limit("explicit-euler", omega, 0.0), 0.0);
+  // Damped: explicit Euler holds while det = 1 - gamma h + omega^2 h^2 <= 1: h <= gamma /
+  // omega^2; semi-implicit Euler while omega^2 h^2 + 2 gamma h <= 4.
+  EXPECT_NEAR(linear_stability_limit("explicit-euler", omega, 5.0), 0.05, 1e-8);
+  const double gamma = 5.0;
+  EXPECT_NEAR(linear_stability_limit("semi-implicit-euler", omega, gamma),
+              (-gamma + std::sqrt(gamma * gamma + 4.0 * omega * omega)) / (omega * omega), 1e-8);
 }
 
 TEST(StabilityTheory, EulerLimitIsTerminalSpeedOverGravity) {
