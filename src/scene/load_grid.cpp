@@ -96,12 +96,17 @@ void read_grid(TomlReader& root, Scene& scene) {
   g.anchored = r.string_or("anchored", "none");
   if (g.anchored != "none" && g.anchored != "top-row")
     r.fail(r.line_of("anchored"), "'anchored' must be none or top-row, not '" + g.anchored + "'");
+  g.rows = r.string_or("rows", "down");
+  if (g.rows != "down" && g.rows != "up")
+    r.fail(r.line_of("rows"), "'rows' must be down or up, not '" + g.rows + "'");
   g.jitter = r.number_or("jitter", 0.0);
   require_range(r, "jitter", g.jitter, 0.0, 0.0);
   g.seed = static_cast<std::uint64_t>(r.integer_or("seed", 1));
   r.finish();
 
-  // Particles: column i along +x, row j downwards from the origin, layer k along +z.
+  // Particles: column i along +x, row j downwards from the origin (upwards with rows = "up":
+  // the seed's cloth starts raised above its anchored row), layer k along +z.
+  const double row_step = g.rows == "up" ? g.spacing : -g.spacing;
   const int nx = g.size[0], ny = g.size[1], nz = scene.dims == 3 ? g.size[2] : 1;
   const auto index = [&](int i, int j, int k) {
     return static_cast<int>(scene.bodies.size()) - nx * ny * nz + (k * ny + j) * nx + i;
@@ -117,7 +122,7 @@ void read_grid(TomlReader& root, Scene& scene) {
         b.mass = g.mass;
         b.line = g.line;
         b.fixed = g.anchored == "top-row" && j == 0;
-        b.position = g.origin + Vec3{i * g.spacing, -j * g.spacing, k * g.spacing};
+        b.position = g.origin + Vec3{i * g.spacing, j * row_step, k * g.spacing};
         if (!b.fixed && g.jitter > 0.0) {
           const double jx = rng.uniform_pm1(), jy = rng.uniform_pm1(), jz = rng.uniform_pm1();
           b.position += Vec3{jx, jy, scene.dims == 3 ? jz : 0.0} * g.jitter;

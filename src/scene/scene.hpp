@@ -78,7 +78,8 @@ struct Grid {
   double stiffness = 50.0;
   double damping = 0.2;
   Vec3 origin;
-  std::string anchored = "none";
+  std::string anchored = "none";  ///< "top-row": row j = 0, the row at the origin, is fixed
+  std::string rows = "down";      ///< rows laid from the origin "down" (-y) or "up" (+y)
   double jitter = 0.0;
   std::uint64_t seed = 1;
   int first_body = 0;  ///< index of p0_0 in Scene::bodies; particle (i, j, k) follows at

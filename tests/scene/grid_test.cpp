@@ -1,6 +1,7 @@
 // The [grid] generator builds the lattices of "Sproing" with the right springs.
 #include <gtest/gtest.h>
 
+#include "scene/case_error.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -50,6 +51,19 @@ TEST(Grid, AnchoredTopRowIsFixedAndHasNoSpringsAmongItself) {
   for (const Body& b : s.bodies) EXPECT_EQ(b.fixed, b.name.ends_with("_0")) << b.name;
   // 7 lattice springs, minus the 2 that join two anchored particles.
   EXPECT_EQ(s.springs.size(), 5u);
+}
+
+TEST(Grid, RowsUpStartTheSheetAboveItsAnchoredRow) {
+  // The seed's "Sproing Cloth" starts raised above the anchored row and falls from it.
+  const Scene s = grid_scene(2, "[2, 3]", 4,
+                             "anchored = \"top-row\"\nrows = \"up\"\norigin = [0.0, 5.0, 0.0]\n");
+  const Body& anchored = s.bodies[s.body_index("p0_0")];
+  const Body& highest = s.bodies[s.body_index("p0_2")];
+  EXPECT_TRUE(anchored.fixed);
+  EXPECT_FALSE(highest.fixed);
+  EXPECT_EQ(anchored.position.y(), 5.0);
+  EXPECT_EQ(highest.position.y(), 7.0);
+  EXPECT_THROW(grid_scene(2, "[2, 3]", 4, "rows = \"sideways\"\n"), CaseError);
 }
 
 }  // namespace
