@@ -218,6 +218,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     const std::string& why = missing.why;
     const bool asked = !options.backends.empty() && wanted(options, name);
     if (!asked && (!missing.shown_unasked || !options.backends.empty())) continue;
+    if (!missing.needs.missing_from(scene.features()).empty()) continue;
     for (double dt : dts) {
       RunRecord r;
       r.backend = name;

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -30,6 +31,12 @@ std::string plugin_folder() {
   return ec ? std::string("plugins") : (exe.parent_path() / "plugins").string();
 }
 
+std::string plugin_file_name(const std::string& backend) {
+  std::string file = "beachball-" + backend + ".so";
+  std::replace(file.begin(), file.end(), '/', '-');
+  return file;
+}
+
 Registry Registry::load() {
   Registry r;
   const std::filesystem::path folder = plugin_folder();
@@ -44,21 +51,24 @@ void Registry::load_plugin(const std::filesystem::path& folder, const std::strin
     missing_.push_back({name, "no adapter in this version of beachball", false});
     return;
   }
-  const std::filesystem::path path = folder / ("beachball-" + name + ".so");
+  const auto requirement = engine.needs.find(name);
+  const FeatureSet needs = requirement == engine.needs.end() ? FeatureSet{} : requirement->second;
+  const std::filesystem::path path = folder / plugin_file_name(name);
   if (!std::filesystem::exists(path)) {
-    missing_.push_back({name, "not built: its Debian package was not found at build time"});
+    missing_.push_back(
+        {name, "not built: its Debian package was not found at build time", true, needs});
     return;
   }
   // RTLD_LOCAL keeps each plugin's engine symbols apart: bullet and bullet-float link
   // libraries that define the same names with different layouts.
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
-    missing_.push_back({name, std::string("plugin failed to load: ") + dlerror()});
+    missing_.push_back({name, std::string("plugin failed to load: ") + dlerror(), true, needs});
     return;
   }
   auto create = reinterpret_cast<bb::Backend* (*)()>(dlsym(handle, BEACHBALL_PLUGIN_ENTRY));
   if (create == nullptr) {
-    missing_.push_back({name, "plugin has no " BEACHBALL_PLUGIN_ENTRY});
+    missing_.push_back({name, "plugin has no " BEACHBALL_PLUGIN_ENTRY, true, needs});
     return;
   }
   plugins_.push_back(std::make_unique<Plugin>(Plugin{handle}));
@@ -84,7 +94,10 @@ BackendSet backends_for(const Scene& scene, const Registry& registry) {
   for (const CourseVariant& v : course_variants(scene))
     set.owned.push_back(std::make_unique<CourseBackend>(v));
   for (const auto& b : set.owned) set.all.push_back(b.get());
-  for (const Backend* e : registry.engines()) set.all.push_back(e);
+  // An engine variant that differs from its engine only where the scene uses some feature
+  // (springs applied by hand) takes part only in scenes that use it.
+  for (const Backend* e : registry.engines())
+    if (e->needs().missing_from(scene.features()).empty()) set.all.push_back(e);
   return set;
 }
 

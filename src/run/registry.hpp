@@ -28,6 +28,7 @@ class Registry {
     std::string name;
     std::string why;
     bool shown_unasked = true;  ///< false for an engine with no adapter yet
+    FeatureSet needs = {};      ///< shown only on scenes that use these
   };
   /// Engine backends whose plugin is missing, with why.
   const std::vector<Missing>& missing_engines() const { return missing_; }
@@ -59,5 +60,9 @@ BackendSet backends_for(const Scene& scene, const Registry& registry);
 
 /// Where engine plugins are looked for: $BEACHBALL_PLUGIN_DIR, else plugins/ next to the program.
 std::string plugin_folder();
+
+/// The plugin file of an engine backend: beachball-<name>.so, a slash in the name (a second
+/// way of building the same physics, `box2d/force`) written as a dash.
+std::string plugin_file_name(const std::string& backend);
 
 }  // namespace bb

@@ -44,6 +44,10 @@ class Backend {
   /// "bullet", "course/velocity-verlet", "reference", ...
   virtual std::string name() const = 0;
   virtual FeatureSet supports() const = 0;
+  /// Features a scene must use for this backend to take part at all: a second way of
+  /// building the same physics (`box2d/force`, springs applied by hand) is the base engine
+  /// on a scene without them, so it is left out there. Default: none.
+  virtual FeatureSet needs() const { return {}; }
   /// Library and version, e.g. {"bullet", "3.24"}; empty name for none.
   virtual std::pair<std::string, std::string> library_version() const { return {}; }
   /// Start a run of `scene` at step `dt`; the scene outlives the simulation.

@@ -5,8 +5,11 @@
 // its own folder and that list, nothing in src/.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
+
+#include "scene/features.hpp"
 
 namespace bb {
 
@@ -26,6 +29,9 @@ struct EngineDescription {
   std::vector<EngineKey> keys;
   /// False for an engine with no adapter yet: it has a row only when asked for by name.
   bool has_adapter = true;
+  /// Per backend name, the features a scene must use for it to take part (Backend::needs
+  /// of its plugin, known here even when the plugin was not built); absent: none.
+  std::map<std::string, FeatureSet> needs = {};
 };
 
 /// Every engine the adapters describe, in the adapters' CMake order.

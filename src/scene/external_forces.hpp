@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "scene/spring_forces.hpp"
 #include "scene/state.hpp"
 
 namespace bb {
@@ -16,6 +17,9 @@ bool has_external_forces(const Scene& scene);
 
 /// The force (N, at the centre of mass) on each body at `state`; zero on fixed bodies.
 /// `forces` is resized to the number of bodies; nothing is allocated once it has that size.
-void external_forces(const Scene& scene, const State& state, std::vector<Vec3>& forces);
+/// `springs_by_hand`, when given, adds the scene's springs too (the `<engine>/force`
+/// backends, which build no engine joint for them).
+void external_forces(const Scene& scene, const State& state, std::vector<Vec3>& forces,
+                     const SpringNetwork* springs_by_hand = nullptr);
 
 }  // namespace bb

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "scene/state.hpp"
 
 namespace bb {
 
@@ -36,6 +37,24 @@ inline void add_spring_forces(const SpringNetwork& s, const Vec3* x, const Vec3*
     const Vec3 u = d / length;
     const double tension =
         s.stiffness[k] * (length - s.rest_length[k]) + s.damping[k] * (v[b] - v[a]).dot(u);
+    force[a] += tension * u;
+    force[b] -= tension * u;
+  }
+}
+
+/// The same forces read from an engine's state (its bodies' positions and velocities), for
+/// springs applied by hand before each engine step (`<engine>/force`).
+inline void add_spring_forces(const SpringNetwork& s, const std::vector<BodyState>& state,
+                              Vec3* force) {
+  const std::size_t n = s.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const int a = s.a[k], b = s.b[k];
+    const Vec3 d = state[b].position - state[a].position;
+    const double length = d.norm();
+    if (length == 0.0) continue;
+    const Vec3 u = d / length;
+    const double tension = s.stiffness[k] * (length - s.rest_length[k]) +
+                           s.damping[k] * (state[b].velocity - state[a].velocity).dot(u);
     force[a] += tension * u;
     force[b] -= tension * u;
   }

@@ -214,3 +214,35 @@ TEST(Runner, ACaseWrittenFromTheDesignAloneRuns) {
 
 }  // namespace
 }  // namespace bb
+
+namespace bb {
+namespace {
+
+/// A second way of building the same physics that only differs where a scene has springs.
+class SpringsByHandBackend : public FaultyBackend {
+ public:
+  SpringsByHandBackend() : FaultyBackend("faulty/force", 1e9) {}
+  FeatureSet supports() const override {
+    return {Feature::Gravity, Feature::ThreeD, Feature::Springs};
+  }
+  FeatureSet needs() const override { return {Feature::Springs}; }
+};
+
+TEST(Runner, AVariantThatNeedsSpringsTakesPartOnlyInSpringScenes) {
+  Registry registry = Registry::load();
+  registry.add_engine(std::make_unique<SpringsByHandBackend>());
+  const auto names = [&](const Scene& scene) {
+    std::vector<std::string> out;
+    for (const Backend* b : backends_for(scene, registry).all) out.push_back(b->name());
+    return out;
+  };
+  const Scene free_fall = test::scene_from(test::kMinimalCase);
+  const Scene springs = load_case(test::source_path("cases/spring_pair.toml"));
+  const auto without = names(free_fall), with = names(springs);
+  EXPECT_EQ(std::count(without.begin(), without.end(), "faulty/force"), 0);
+  EXPECT_EQ(std::count(with.begin(), with.end(), "faulty/force"), 1);
+  EXPECT_EQ(plugin_file_name("box2d/force"), "beachball-box2d-force.so");
+}
+
+}  // namespace
+}  // namespace bb
