@@ -13,9 +13,10 @@ namespace bb {
 inline constexpr std::size_t kMaxNameLength = 64;
 /// Largest case file accepted, in bytes.
 inline constexpr std::size_t kMaxCaseFileBytes = 1 << 20;
-/// Most particles a [grid] may generate, and most bodies in a case.
-inline constexpr long kMaxGridParticles = 20000;
-inline constexpr long kMaxBodies = 20000;
+/// Most particles a [grid] may generate, and most bodies in a case: a 300 x 300 sheet fits;
+/// what a run holds grows with bodies times samples, which kMaxBodySamples bounds.
+inline constexpr long kMaxGridParticles = 100000;
+inline constexpr long kMaxBodies = 100000;
 /// Most steps one run may take (duration / dt).
 inline constexpr double kMaxStepsPerRun = 1e7;
 /// Most samples a run keeps (duration / sample), and most body-samples (samples x bodies):
