@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "metrics/event_observables.hpp"
 #include "run/accuracy_run.hpp"
@@ -223,6 +225,75 @@ TEST_P(BulletContacts, APairTheCaseDoesNotListPassesThrough) {
   ASSERT_EQ(hit.status, RunStatus::Ok) << hit.reason;
   // Equal masses, e = 1: b leaves with a's speed (give or take the step's penetration push).
   EXPECT_GT(hit.trajectory.states.back()[1].velocity.x(), 1.5);
+}
+
+// Without CCD, as Bullet starts, the 50 m/s ball passes the 2 cm panel at 60 Hz; with the
+// ccd key its swept sphere stops it (a CCD contact has restitution 0, so it bounces back
+// slower than e v), as a user who turns CCD on sees.
+TEST_P(BulletContacts, TheFastBallTunnelsUnlessCcdIsOn) {
+  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  std::ifstream file(test::source_path("cases/tunnelling.toml"));
+  std::stringstream text;
+  text << file.rdbuf();
+  const Scene off = test::scene_from(text.str());
+  const Scene on = test::scene_from(text.str() + "\n[engines.bullet]\nccd = true\n");
+  const RunRecord passes = run_accuracy(*backend(), off, off.report_dt);
+  const RunRecord stops = run_accuracy(*backend(), on, on.report_dt);
+  ASSERT_EQ(passes.status, RunStatus::Ok) << passes.reason;
+  ASSERT_EQ(stops.status, RunStatus::Ok) << stops.reason;
+  const BodyState& through = passes.trajectory.states.back()[0];
+  const BodyState& back = stops.trajectory.states.back()[0];
+  std::printf("%s: final x without CCD %.3f m (v %.2f m/s), with CCD %.3f m (v %.2f m/s)\n",
+              GetParam().c_str(), through.position.x(), through.velocity.x(), back.position.x(),
+              back.velocity.x());
+  EXPECT_GT(through.position.x(), 0.0);
+  EXPECT_DOUBLE_EQ(through.velocity.x(), 50.0);
+  EXPECT_LT(back.position.x(), 0.0);
+  EXPECT_LT(back.velocity.x(), 0.0);
+  EXPECT_GT(back.velocity.x(), -25.0);  // slower than e v: the CCD contact took its bounce
+  EXPECT_NE(text_setting(stops.engine_settings, "ccd_contacts"), "");
+}
+
+// Without gravity, a ball that touches the ground moves into it at 0.15 m/s, below Bullet's
+// restitution velocity threshold (0.2 m/s): it stops though e = 1, and the run says why.
+// With the threshold at 0 it leaves at 0.15 m/s. (It starts touching: a ball that drifts
+// in from a gap loses its bounce at any threshold, as Bullet takes the gap off each step's
+// target speed, e v - d / dt.)
+std::string slow_approach(const std::string& engines) {
+  return std::string(R"(name = "slow_approach"
+dims = 2
+duration = 2.0
+sample = 0.00416666666666666667
+dt = [0.00416666666666666667]
+report_dt = 0.00416666666666666667
+gravity = [0.0, 0.0, 0.0]
+[ground]
+restitution = 1.0
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+velocity = [0.0, -0.15, 0.0]
+)") + engines;
+}
+
+TEST_P(BulletContacts, ABounceBelowTheRestitutionThresholdIsLost) {
+  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  const Scene engine_default = test::scene_from(slow_approach(""));
+  const Scene no_threshold =
+      test::scene_from(slow_approach("[engines.bullet]\nrestitution_velocity_threshold = 0.0\n"));
+  const RunRecord stops = run_accuracy(*backend(), engine_default, engine_default.report_dt);
+  const RunRecord leaves = run_accuracy(*backend(), no_threshold, no_threshold.report_dt);
+  ASSERT_EQ(stops.status, RunStatus::Ok) << stops.reason;
+  ASSERT_EQ(leaves.status, RunStatus::Ok) << leaves.reason;
+  const double v_stops = stops.trajectory.states.back()[0].velocity.y();
+  const double v_leaves = leaves.trajectory.states.back()[0].velocity.y();
+  std::printf("%s: speed after the contact %.4g m/s at the default threshold, %.4g m/s at 0\n",
+              GetParam().c_str(), v_stops, v_leaves);
+  EXPECT_LT(std::abs(v_stops), 1e-6);
+  EXPECT_NEAR(v_leaves, 0.15, precision_of(GetParam()));
+  EXPECT_NE(text_setting(stops.engine_settings, "restitution_below_threshold"), "");
 }
 
 }  // namespace
