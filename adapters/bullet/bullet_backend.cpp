@@ -34,6 +34,8 @@ class BulletSimulation : public Simulation {
   BulletSimulation(const Scene& scene, double dt)
       : scene_(scene), dt_(dt), contacts_(scene_has_contacts(scene)) {
     world_.setGravity(to_bt(scene.gravity));
+    dispatcher_.setDispatcherFlags(
+        btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
     configure_solver(scene, world_.getSolverInfo());
     if (contacts_) {
       pairs_ = std::make_unique<PairTable>(scene);
@@ -87,7 +89,7 @@ class BulletSimulation : public Simulation {
     s.push_back({"step", std::string("stepSimulation(dt, 1, dt): one fixed substep")});
     s.push_back({"sleeping", false});
     if (contacts_)
-      add_contact_settings(scene_, world_.getSolverInfo(), margins(), s);
+      add_contact_settings(scene_, world_.getSolverInfo(), shape_figures_, s);
     else
       s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
     if (!scene_.impulses.empty()) s.push_back({"impulse", std::string(kImpulseMethod)});
@@ -129,7 +131,12 @@ class BulletSimulation : public Simulation {
         body->setCcdMotionThreshold(btScalar(inner_radius(b)));
         body->setCcdSweptSphereRadius(btScalar(inner_radius(b)));
       }
-      margins_.push_back(shape->getMargin());
+      // Bullet's defaults, set or read back explicitly: every contact point goes to the
+      // solver; a pair's points start within the smaller of its shapes' thresholds.
+      body->setContactProcessingThreshold(BT_LARGE_FLOAT);
+      shape_figures_.margins.push_back(double(shape->getMargin()));
+      shape_figures_.breaking_thresholds.push_back(
+          double(shape->getContactBreakingThreshold(gContactBreakingThreshold)));
       shapes_.push_back(std::move(shape));
       world_.addRigidBody(body.get());
     } else {
@@ -145,6 +152,7 @@ class BulletSimulation : public Simulation {
     ground_->setUserIndex(pairs_->ground_index());
     ground_->setRestitution(1);
     ground_->setFriction(1);
+    ground_->setContactProcessingThreshold(BT_LARGE_FLOAT);
     take_part_in_contacts(*ground_);
     world_.addRigidBody(ground_.get());
   }
@@ -154,17 +162,6 @@ class BulletSimulation : public Simulation {
     body.setCollisionFlags(body.getCollisionFlags() |
                            btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
     body.setUserPointer(pairs_.get());
-  }
-
-  /// The smallest and largest collision margin of the bodies' shapes, metres.
-  std::pair<double, double> margins() const {
-    if (margins_.empty()) return {0.0, 0.0};
-    double lo = margins_.front(), hi = margins_.front();
-    for (btScalar m : margins_) {
-      lo = std::min(lo, double(m));
-      hi = std::max(hi, double(m));
-    }
-    return {lo, hi};
   }
 
   void push(const Impulse& imp) {
@@ -187,7 +184,7 @@ class BulletSimulation : public Simulation {
   std::unique_ptr<PairTable> pairs_;
   std::unique_ptr<PairFilter> filter_;
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
-  std::vector<btScalar> margins_;
+  ShapeFigures shape_figures_;
   std::unique_ptr<btCollisionShape> ground_shape_;
   std::unique_ptr<btRigidBody> ground_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;

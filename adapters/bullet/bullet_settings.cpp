@@ -1,5 +1,6 @@
 #include "bullet_settings.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "scene/engine_keys.hpp"
@@ -10,6 +11,13 @@ namespace {
 
 double key(const Scene& scene, const char* name) {
   return engine_setting(scene, "bullet", name);
+}
+
+/// Appends `<name>_min` and `<name>_max` of `values` (0 when there are none).
+void add_range(const std::string& name, const std::vector<double>& values, Settings& out) {
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  out.push_back({name + "_min", values.empty() ? 0.0 : *lo});
+  out.push_back({name + "_max", values.empty() ? 0.0 : *hi});
 }
 
 }  // namespace
@@ -33,7 +41,7 @@ void configure_solver(const Scene& scene, btContactSolverInfo& info) {
 }
 
 void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
-                          std::pair<double, double> margins, Settings& out) {
+                          const ShapeFigures& shapes, Settings& out) {
   using S = std::string;
   out.push_back(
       {"collision", S("Bullet's own detection: btSphereShape, btBoxShape, btStaticPlaneShape for "
@@ -64,12 +72,12 @@ void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
                  S("sphere: its radius (btSphereShape); box: 0.04 m, or a tenth of its "
                    "smallest half extent if less (btBoxShape::setSafeMargin), faces at the "
                    "half extents; ground plane: 0")});
-  out.push_back({"collision_margin_min", margins.first});
-  out.push_back({"collision_margin_max", margins.second});
+  add_range("collision_margin", shapes.margins, out);
   out.push_back({"contact_breaking_threshold",
                  S("0.02 x the smaller shape's bounding radius (gContactBreakingThreshold, "
                    "relative): contact points against a plane or box start within that gap, "
                    "sphere-sphere points only on overlap")});
+  add_range("contact_breaking_threshold", shapes.breaking_thresholds, out);
   out.push_back({"contact_processing_threshold",
                  S("BT_LARGE_FLOAT: every contact point goes to the solver")});
   out.push_back({"warm_starting_factor", double(info.m_warmstartingFactor)});

@@ -4,7 +4,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include <utility>
+#include <vector>
 
 #include "scene/backend.hpp"
 #include "scene/scene.hpp"
@@ -19,9 +19,15 @@ inline constexpr const char* kImpulseMethod =
 /// Sets every solver parameter that changes contacts, from the keys or explicitly.
 void configure_solver(const Scene& scene, btContactSolverInfo& info);
 
-/// Appends the contact rules and the values in effect; `margins` is the smallest and largest
-/// collision margin of the scene's shapes, metres.
+/// What the scene's collision shapes carry, one entry per shape, metres.
+struct ShapeFigures {
+  std::vector<double> margins;
+  /// Each shape's contact breaking threshold: a pair uses the smaller of its two.
+  std::vector<double> breaking_thresholds;
+};
+
+/// Appends the contact rules and the values in effect.
 void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
-                          std::pair<double, double> margins, Settings& out);
+                          const ShapeFigures& shapes, Settings& out);
 
 }  // namespace bb

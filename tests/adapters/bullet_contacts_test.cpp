@@ -164,9 +164,9 @@ TEST_P(BulletContacts, RunsWithContactsNameTheirRulesAndThresholds) {
   EXPECT_NE(rule.find("gContactAddedCallback"), std::string::npos) << rule;
   EXPECT_NE(text_setting(s, "restitution_below_threshold").find("restitutionCurve"),
             std::string::npos);
-  for (const char* key :
-       {"restitution_velocity_threshold", "split_impulse_penetration_threshold", "contact_erp",
-        "warm_starting_factor", "collision_margin_min", "collision_margin_max"})
+  for (const char* key : {"restitution_velocity_threshold", "split_impulse_penetration_threshold",
+                          "contact_erp", "warm_starting_factor", "collision_margin_min",
+                          "collision_margin_max", "contact_breaking_threshold_max"})
     EXPECT_TRUE(setting(s, key) && std::holds_alternative<double>(*setting(s, key))) << key;
   for (const char* key : {"split_impulse", "warm_starting", "ccd"})
     EXPECT_TRUE(setting(s, key) && std::holds_alternative<bool>(*setting(s, key))) << key;
@@ -177,6 +177,9 @@ TEST_P(BulletContacts, RunsWithContactsNameTheirRulesAndThresholds) {
   // Both balls are spheres: the margin is the radius, 0.5 m to 1 m.
   EXPECT_DOUBLE_EQ(std::get<double>(*setting(s, "collision_margin_min")), 0.5);
   EXPECT_DOUBLE_EQ(std::get<double>(*setting(s, "collision_margin_max")), 1.0);
+  // 0.02 x the bounding radius, which Bullet takes from the box around the sphere: sqrt(3) r.
+  EXPECT_NEAR(std::get<double>(*setting(s, "contact_breaking_threshold_min")),
+              0.02 * std::sqrt(3.0) * 0.5, 1e-6);
 }
 
 // Three balls in a row without gravity; "a" flies through "b" towards "c".
