@@ -15,8 +15,9 @@ inline EngineDescription bullet_engine() {
            {e, "contact_erp", KeyKind::Number, 0.2,
             "error reduction per step of contact penetration (m_erp2)"},
            {e, "split_impulse", KeyKind::Boolean, 1, "split-impulse position correction"},
-           {e, "split_impulse_penetration_threshold", KeyKind::Number, -0.04,
-            "m; deeper penetrations are split off, shallower ones push in the velocity"},
+           {e, "split_impulse_depth", KeyKind::Number, 0.04,
+            "m; deeper penetrations are split off (m_splitImpulsePenetrationThreshold = "
+            "-depth), shallower ones push in the velocity"},
            {e, "restitution_velocity_threshold", KeyKind::Number, 0.2,
             "m/s; slower normal approach bounces with no restitution"},
            {e, "warm_starting", KeyKind::Boolean, 1,

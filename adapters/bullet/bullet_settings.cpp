@@ -27,8 +27,7 @@ void configure_solver(const Scene& scene, btContactSolverInfo& info) {
   info.m_erp = btScalar(key(scene, "erp"));
   info.m_erp2 = btScalar(key(scene, "contact_erp"));
   info.m_splitImpulse = key(scene, "split_impulse") != 0.0;
-  info.m_splitImpulsePenetrationThreshold =
-      btScalar(key(scene, "split_impulse_penetration_threshold"));
+  info.m_splitImpulsePenetrationThreshold = -btScalar(key(scene, "split_impulse_depth"));
   info.m_restitutionVelocityThreshold = btScalar(key(scene, "restitution_velocity_threshold"));
   if (key(scene, "warm_starting") != 0.0)
     info.m_solverMode |= SOLVER_USE_WARMSTARTING;
@@ -63,7 +62,7 @@ void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
                    "is below restitution_velocity_threshold "
                    "(btSequentialImpulseConstraintSolver::restitutionCurve)")});
   out.push_back({"penetration_recovery",
-                 S("a penetration shallower than -split_impulse_penetration_threshold is "
+                 S("a penetration shallower than split_impulse_depth is "
                    "pushed out through the velocity (contact_erp x depth / dt, which adds "
                    "bounce height); a deeper one by the split impulse, which moves the body "
                    "without changing its velocity; a contact point with a gap d targets the "

@@ -164,9 +164,9 @@ TEST_P(BulletContacts, RunsWithContactsNameTheirRulesAndThresholds) {
   EXPECT_NE(rule.find("gContactAddedCallback"), std::string::npos) << rule;
   EXPECT_NE(text_setting(s, "restitution_below_threshold").find("restitutionCurve"),
             std::string::npos);
-  for (const char* key : {"restitution_velocity_threshold", "split_impulse_penetration_threshold",
-                          "contact_erp", "warm_starting_factor", "collision_margin_min",
-                          "collision_margin_max", "contact_breaking_threshold_max"})
+  for (const char* key : {"restitution_velocity_threshold", "split_impulse_depth", "contact_erp",
+                          "warm_starting_factor", "collision_margin_min", "collision_margin_max",
+                          "contact_breaking_threshold_max"})
     EXPECT_TRUE(setting(s, key) && std::holds_alternative<double>(*setting(s, key))) << key;
   for (const char* key : {"split_impulse", "warm_starting", "ccd"})
     EXPECT_TRUE(setting(s, key) && std::holds_alternative<bool>(*setting(s, key))) << key;
