@@ -2,10 +2,13 @@
 // libraries (backend "bullet") and its single-precision ones ("bullet-float").
 #include <btBulletDynamicsCommon.h>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
 #include "../point_body.hpp"
+#include "bullet_contacts.hpp"
+#include "bullet_settings.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -21,43 +24,41 @@ Vec3 from_bt(const btVector3& v) {
   return {v.x(), v.y(), v.z()};
 }
 
+/// The radius of the largest sphere inside a body: what CCD sweeps and its motion threshold.
+double inner_radius(const Body& b) {
+  return b.shape == Shape::Box ? b.half_extents.minCoeff() : b.radius;
+}
+
 class BulletSimulation : public Simulation {
  public:
-  BulletSimulation(const Scene& scene, double dt) : scene_(scene), dt_(btScalar(dt)) {
+  BulletSimulation(const Scene& scene, double dt)
+      : scene_(scene), dt_(dt), contacts_(scene_has_contacts(scene)) {
     world_.setGravity(to_bt(scene.gravity));
-    btContactSolverInfo& solver = world_.getSolverInfo();
-    solver.m_numIterations = static_cast<int>(engine_setting(scene, "bullet", "solver_iterations"));
-    solver.m_erp = btScalar(engine_setting(scene, "bullet", "erp"));
-    solver.m_splitImpulse = engine_setting(scene, "bullet", "split_impulse") != 0.0;
-    const btScalar linear_damping = btScalar(engine_setting(scene, "bullet", "linear_damping"));
-    const btScalar angular_damping = btScalar(engine_setting(scene, "bullet", "angular_damping"));
-    for (const Body& b : scene.bodies) {
-      // No contacts in the scene: every body gets an empty shape and collides with nothing.
-      // A point body gets a small sphere's inertia, as in every engine (point_body.hpp).
-      const btScalar mass = b.fixed ? btScalar(0) : btScalar(b.mass);
-      btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, &empty_shape_,
-                                                    to_bt(engine_inertia(b)));
-      info.m_startWorldTransform.setOrigin(to_bt(b.position));
-      info.m_startWorldTransform.setRotation(
-          btQuaternion(btScalar(b.orientation.x()), btScalar(b.orientation.y()),
-                       btScalar(b.orientation.z()), btScalar(b.orientation.w())));
-      info.m_linearDamping = linear_damping;
-      info.m_angularDamping = angular_damping;
-      auto body = std::make_unique<btRigidBody>(info);
-      if (!b.fixed) {
-        body->setLinearVelocity(to_bt(b.velocity));
-        body->setAngularVelocity(to_bt(b.angular_velocity));
-      }
-      body->setActivationState(DISABLE_DEACTIVATION);
-      world_.addRigidBody(body.get(), 1, 0);
-      bodies_.push_back(std::move(body));
+    dispatcher_.setDispatcherFlags(
+        btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
+    configure_solver(scene, world_.getSolverInfo());
+    if (contacts_) {
+      pairs_ = std::make_unique<PairTable>(scene);
+      filter_ = std::make_unique<PairFilter>(*pairs_);
+      world_.getPairCache()->setOverlapFilterCallback(filter_.get());
+      install_pair_material_callback();
     }
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+      add_body(scene.bodies[i], static_cast<int>(i));
+    if (scene.ground) add_ground(*scene.ground);
   }
   ~BulletSimulation() override {
     for (auto& body : bodies_) world_.removeRigidBody(body.get());
+    if (ground_) world_.removeRigidBody(ground_.get());
   }
 
   void step() override {
+    // Impulses due at the start of this step, through the engine's own API.
+    for (; next_impulse_ < scene_.impulses.size() &&
+           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
+         ++next_impulse_)
+      push(scene_.impulses[next_impulse_]);
+    ++steps_;
     // The harness's forces from the engine's own current state, as a game would add them.
     if (has_external_forces(scene_)) {
       read(state_);
@@ -66,7 +67,7 @@ class BulletSimulation : public Simulation {
         if (!scene_.bodies[i].fixed) bodies_[i]->applyCentralForce(to_bt(forces_[i]));
     }
     // One fixed substep of exactly dt: no interpolation, no accumulator.
-    world_.stepSimulation(dt_, 1, dt_);
+    world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_));
   }
 
   void read(State& out) const override {
@@ -87,32 +88,119 @@ class BulletSimulation : public Simulation {
         {"precision", sizeof(btScalar) == 8 ? std::string("double") : std::string("float")});
     s.push_back({"step", std::string("stepSimulation(dt, 1, dt): one fixed substep")});
     s.push_back({"sleeping", false});
-    s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
+    if (contacts_)
+      add_contact_settings(scene_, world_.getSolverInfo(), shape_figures_, s);
+    else
+      s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
+    if (!scene_.impulses.empty()) s.push_back({"impulse", std::string(kImpulseMethod)});
     add_point_body_setting(scene_, s);
     s.push_back({"max_angular_speed", std::string("pi/2 rad per step (built into btRigidBody)")});
     return s;
   }
 
  private:
+  void add_body(const Body& b, int index) {
+    std::unique_ptr<btCollisionShape> shape = contacts_ ? make_shape(b) : nullptr;
+    // Without a shape (no contacts, or a point) a body gets an empty one and collides with
+    // nothing. A point body gets a small sphere's inertia, as in every engine (point_body.hpp).
+    const btScalar mass = b.fixed ? btScalar(0) : btScalar(b.mass);
+    btRigidBody::btRigidBodyConstructionInfo info(
+        mass, nullptr, shape ? shape.get() : &empty_shape_, to_bt(engine_inertia(b)));
+    info.m_startWorldTransform.setOrigin(to_bt(b.position));
+    info.m_startWorldTransform.setRotation(
+        btQuaternion(btScalar(b.orientation.x()), btScalar(b.orientation.y()),
+                     btScalar(b.orientation.z()), btScalar(b.orientation.w())));
+    info.m_linearDamping = btScalar(engine_setting(scene_, "bullet", "linear_damping"));
+    info.m_angularDamping = btScalar(engine_setting(scene_, "bullet", "angular_damping"));
+    auto body = std::make_unique<btRigidBody>(info);
+    if (!b.fixed) {
+      body->setLinearVelocity(to_bt(b.velocity));
+      body->setAngularVelocity(to_bt(b.angular_velocity));
+    }
+    body->setActivationState(DISABLE_DEACTIVATION);
+    body->setUserIndex(index);
+    if (shape) {
+      take_part_in_contacts(*body);
+      // Bullet's own rule multiplies restitutions and frictions; with the ground's set to 1
+      // it already gives every ground pair the case's value. The callback sets every pair.
+      if (scene_.ground) {
+        body->setRestitution(btScalar(scene_.ground->restitution));
+        body->setFriction(btScalar(scene_.ground->friction_kinetic));
+      }
+      if (engine_setting(scene_, "bullet", "ccd") != 0.0 && !b.fixed) {
+        body->setCcdMotionThreshold(btScalar(inner_radius(b)));
+        body->setCcdSweptSphereRadius(btScalar(inner_radius(b)));
+      }
+      // Bullet's defaults, set or read back explicitly: every contact point goes to the
+      // solver; a pair's points start within the smaller of its shapes' thresholds.
+      body->setContactProcessingThreshold(BT_LARGE_FLOAT);
+      shape_figures_.margins.push_back(double(shape->getMargin()));
+      shape_figures_.breaking_thresholds.push_back(
+          double(shape->getContactBreakingThreshold(gContactBreakingThreshold)));
+      shapes_.push_back(std::move(shape));
+      world_.addRigidBody(body.get());
+    } else {
+      world_.addRigidBody(body.get(), 1, 0);
+    }
+    bodies_.push_back(std::move(body));
+  }
+
+  void add_ground(const Ground& ground) {
+    ground_shape_ = make_ground_shape(ground);
+    btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, ground_shape_.get());
+    ground_ = std::make_unique<btRigidBody>(info);
+    ground_->setUserIndex(pairs_->ground_index());
+    ground_->setRestitution(1);
+    ground_->setFriction(1);
+    ground_->setContactProcessingThreshold(BT_LARGE_FLOAT);
+    take_part_in_contacts(*ground_);
+    world_.addRigidBody(ground_.get());
+  }
+
+  /// Marks an object for the pair-material callback and points it at this run's pairs.
+  void take_part_in_contacts(btRigidBody& body) {
+    body.setCollisionFlags(body.getCollisionFlags() |
+                           btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+    body.setUserPointer(pairs_.get());
+  }
+
+  void push(const Impulse& imp) {
+    btRigidBody& body = *bodies_[static_cast<std::size_t>(imp.body)];
+    const btVector3 centre = body.getCenterOfMassPosition();
+    const btVector3 arm = imp.point ? to_bt(*imp.point) - centre : btVector3(0, 0, 0);
+    body.activate(true);
+    body.applyImpulse(to_bt(imp.impulse), arm);
+  }
+
   const Scene& scene_;
-  btScalar dt_;
+  double dt_;
+  bool contacts_;
   btDefaultCollisionConfiguration configuration_;
   btCollisionDispatcher dispatcher_{&configuration_};
   btDbvtBroadphase broadphase_;
   btSequentialImpulseConstraintSolver solver_;
   btDiscreteDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &configuration_};
   btEmptyShape empty_shape_;
+  std::unique_ptr<PairTable> pairs_;
+  std::unique_ptr<PairFilter> filter_;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  ShapeFigures shape_figures_;
+  std::unique_ptr<btCollisionShape> ground_shape_;
+  std::unique_ptr<btRigidBody> ground_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
+  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
+  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
 };
 
 class BulletBackend : public Backend {
  public:
   std::string name() const override { return BB_BULLET_NAME; }
   FeatureSet supports() const override {
-    return {Feature::ThreeD, Feature::Gravity,  Feature::Drag, Feature::Magnus,
-            Feature::Wind,   Feature::Rotation, Feature::Boxes};
+    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,   Feature::Magnus,
+            Feature::Wind,        Feature::Rotation,    Feature::Boxes,  Feature::GroundContact,
+            Feature::BodyContact, Feature::Restitution, Feature::Impulse};
   }
   std::pair<std::string, std::string> library_version() const override {
     const int v = btGetVersion();

@@ -11,8 +11,19 @@ inline EngineDescription bullet_engine() {
   return {e,
           {"bullet", "bullet-float"},
           {{e, "solver_iterations", KeyKind::Integer, 10, "sequential-impulse iterations"},
-           {e, "erp", KeyKind::Number, 0.2, "error reduction per step, contacts and joints"},
+           {e, "erp", KeyKind::Number, 0.2, "error reduction per step, joints (m_erp)"},
+           {e, "contact_erp", KeyKind::Number, 0.2,
+            "error reduction per step of contact penetration (m_erp2)"},
            {e, "split_impulse", KeyKind::Boolean, 1, "split-impulse position correction"},
+           {e, "split_impulse_depth", KeyKind::Number, 0.04,
+            "m; deeper penetrations are split off (m_splitImpulsePenetrationThreshold = "
+            "-depth), shallower ones push in the velocity"},
+           {e, "restitution_velocity_threshold", KeyKind::Number, 0.2,
+            "m/s; slower normal approach bounces with no restitution"},
+           {e, "warm_starting", KeyKind::Boolean, 1,
+            "start contacts from 0.85 of last step's impulse (SOLVER_USE_WARMSTARTING)"},
+           {e, "ccd", KeyKind::Boolean, 0,
+            "continuous collision detection: swept sphere, motion threshold the inner radius"},
            {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
            {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"}}};
 }

@@ -1,0 +1,91 @@
+#include "bullet_settings.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "scene/engine_keys.hpp"
+
+namespace bb {
+
+namespace {
+
+double key(const Scene& scene, const char* name) {
+  return engine_setting(scene, "bullet", name);
+}
+
+/// Appends `<name>_min` and `<name>_max` of `values` (0 when there are none).
+void add_range(const std::string& name, const std::vector<double>& values, Settings& out) {
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  out.push_back({name + "_min", values.empty() ? 0.0 : *lo});
+  out.push_back({name + "_max", values.empty() ? 0.0 : *hi});
+}
+
+}  // namespace
+
+void configure_solver(const Scene& scene, btContactSolverInfo& info) {
+  info.m_numIterations = static_cast<int>(key(scene, "solver_iterations"));
+  info.m_erp = btScalar(key(scene, "erp"));
+  info.m_erp2 = btScalar(key(scene, "contact_erp"));
+  info.m_splitImpulse = key(scene, "split_impulse") != 0.0;
+  info.m_splitImpulsePenetrationThreshold = -btScalar(key(scene, "split_impulse_depth"));
+  info.m_restitutionVelocityThreshold = btScalar(key(scene, "restitution_velocity_threshold"));
+  if (key(scene, "warm_starting") != 0.0)
+    info.m_solverMode |= SOLVER_USE_WARMSTARTING;
+  else
+    info.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
+  // Bullet's defaults, set here so that a change of default cannot pass unnoticed.
+  info.m_warmstartingFactor = btScalar(0.85);
+  info.m_linearSlop = 0;
+  info.m_globalCfm = 0;
+}
+
+void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
+                          const ShapeFigures& shapes, Settings& out) {
+  using S = std::string;
+  out.push_back(
+      {"collision", S("Bullet's own detection: btSphereShape, btBoxShape, btStaticPlaneShape for "
+                      "the ground; only the pairs [ground] and [[contact]] name "
+                      "(btOverlapFilterCallback on the pair cache); point bodies: btEmptyShape, "
+                      "never paired")});
+  out.push_back({"restitution_rule",
+                 S("Bullet multiplies the two objects' restitutions and frictions "
+                   "(btManifoldResult::calculateCombinedRestitution, "
+                   "calculateCombinedFriction); the adapter sets each contact point's "
+                   "m_combinedRestitution and m_combinedFriction to its pair's case value in "
+                   "gContactAddedCallback (CF_CUSTOM_MATERIAL_CALLBACK on every object; the "
+                   "ground's own restitution and friction are 1)")});
+  out.push_back(
+      {"friction_rule", S("one Coulomb coefficient per contact, for sticking and sliding: the "
+                          "case's friction_kinetic")});
+  out.push_back({"restitution_below_threshold",
+                 S("zero restitution when the normal approach speed at the start of the step "
+                   "is below restitution_velocity_threshold "
+                   "(btSequentialImpulseConstraintSolver::restitutionCurve)")});
+  out.push_back({"penetration_recovery",
+                 S("a penetration shallower than split_impulse_depth is "
+                   "pushed out through the velocity (contact_erp x depth / dt, which adds "
+                   "bounce height); a deeper one by the split impulse, which moves the body "
+                   "without changing its velocity; a contact point with a gap d targets the "
+                   "normal speed e v - d / dt")});
+  out.push_back({"collision_margin",
+                 S("sphere: its radius (btSphereShape); box: 0.04 m, or a tenth of its "
+                   "smallest half extent if less (btBoxShape::setSafeMargin), faces at the "
+                   "half extents; ground plane: 0")});
+  add_range("collision_margin", shapes.margins, out);
+  out.push_back({"contact_breaking_threshold",
+                 S("0.02 x the smaller shape's bounding radius (gContactBreakingThreshold, "
+                   "relative): contact points against a plane or box start within that gap, "
+                   "sphere-sphere points only on overlap")});
+  add_range("contact_breaking_threshold", shapes.breaking_thresholds, out);
+  out.push_back({"contact_processing_threshold",
+                 S("BT_LARGE_FLOAT: every contact point goes to the solver")});
+  out.push_back({"warm_starting_factor", double(info.m_warmstartingFactor)});
+  out.push_back({"linear_slop", double(info.m_linearSlop)});
+  out.push_back({"global_cfm", double(info.m_globalCfm)});
+  if (engine_setting(scene, "bullet", "ccd") != 0.0)
+    out.push_back(
+        {"ccd_contacts", S("a CCD contact (createPredictiveContacts) gets restitution 0 and the "
+                           "product of the frictions")});
+}
+
+}  // namespace bb
