@@ -58,6 +58,16 @@ std::string with_console(std::string reason, const std::string& console) {
   return printed.empty() ? reason : reason + "; it printed: " + printed;
 }
 
+/// This process's address space now (bytes), from /proc/self/statm; 0 if unreadable.
+long address_space_bytes() {
+  long pages = 0;
+  if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+    std::fclose(f);
+  }
+  return pages * sysconf(_SC_PAGESIZE);
+}
+
 /// Runs in the child: the work, its bytes to `result_fd`, then out without cleanup.
 [[noreturn]] void child_main(const ChildPool::Work& work, int result_fd, int console_fd) {
   struct sigaction action {};
@@ -68,8 +78,10 @@ std::string with_console(std::string reason, const std::string& console) {
   dup2(console_fd, STDERR_FILENO);
   close(console_fd);
 #ifndef BB_UNDER_ASAN
-  const rlimit memory{static_cast<rlim_t>(kChildMemoryBytes),
-                      static_cast<rlim_t>(kChildMemoryBytes)};
+  // The cap counts from what the child inherited at fork (the parent's results so far),
+  // so a backend's room does not depend on which runs came before it.
+  const rlim_t cap = static_cast<rlim_t>(address_space_bytes() + kChildMemoryBytes);
+  const rlimit memory{cap, cap};
   setrlimit(RLIMIT_AS, &memory);
 #endif
   int code = 0;

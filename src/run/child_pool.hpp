@@ -18,7 +18,8 @@ struct ChildOutcome {
   std::string console;  ///< everything the child wrote to stdout and stderr
 };
 
-/// Memory a child may map before allocations fail (not applied under AddressSanitizer).
+/// Memory a child may map beyond what it inherits at fork, before allocations fail (not
+/// applied under AddressSanitizer).
 inline constexpr long kChildMemoryBytes = 4L << 30;
 
 class ChildPool {

@@ -1,6 +1,7 @@
 // A backend that crashes, aborts through an engine's error handler, runs out of memory or
 // hangs becomes a result; every other run of the case is complete and unchanged.
 #include <gtest/gtest.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -95,8 +96,9 @@ TEST(Isolation, FailuresBecomeResultsAndTheOtherRunsAreUntouched) {
     if (run.backend == "segfault") {
       EXPECT_EQ(run.status, RunStatus::Crashed);
       // Under AddressSanitizer the sanitizer reports the SEGV itself and aborts.
-      const bool named = run.reason.find("signal 11") != std::string::npos ||
-                         (under_address_sanitizer() && run.reason.find("SEGV") != std::string::npos);
+      const bool named =
+          run.reason.find("signal 11") != std::string::npos ||
+          (under_address_sanitizer() && run.reason.find("SEGV") != std::string::npos);
       EXPECT_TRUE(named) << run.reason;
     } else if (run.backend == "engine-abort") {
       EXPECT_EQ(run.status, RunStatus::Crashed);
@@ -148,6 +150,44 @@ TEST(Isolation, OdesOwnErrorHandlerEndsInTheReason) {
   pool.run();
   EXPECT_EQ(outcome.kind, ChildOutcome::Kind::Crashed);
   EXPECT_NE(outcome.reason.find("ODE error"), std::string::npos) << outcome.reason;
+}
+
+// The cap counts from what the child inherits: a parent that already holds 3 GiB of
+// address space (the results of earlier runs, say) leaves each child its full 4 GiB.
+TEST(Isolation, AChildsMemoryCapDoesNotCountWhatTheParentHolds) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "no memory cap under AddressSanitizer";
+#endif
+  const std::size_t held = 3UL << 30;
+  void* parent = mmap(nullptr, held, PROT_READ | PROT_WRITE,
+                      MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  ASSERT_NE(parent, MAP_FAILED);
+  ChildPool pool(1, true);
+  ChildOutcome outcome;
+  pool.submit(
+      "two more GiB in the child",
+      [] {
+        void* more = mmap(nullptr, 2UL << 30, PROT_READ | PROT_WRITE,
+                          MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+        if (more == MAP_FAILED) throw std::bad_alloc();
+        return std::string("mapped");
+      },
+      10.0, [&](const ChildOutcome& o) { outcome = o; });
+  pool.run();
+  munmap(parent, held);
+  EXPECT_EQ(outcome.kind, ChildOutcome::Kind::Done) << outcome.reason;
+  // Beyond the cap, the child still fails.
+  pool.submit(
+      "five GiB in the child",
+      [] {
+        void* more = mmap(nullptr, 5UL << 30, PROT_READ | PROT_WRITE,
+                          MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+        if (more == MAP_FAILED) throw std::bad_alloc();
+        return std::string("mapped");
+      },
+      10.0, [&](const ChildOutcome& o) { outcome = o; });
+  pool.run();
+  EXPECT_NE(outcome.kind, ChildOutcome::Kind::Done);
 }
 
 TEST(Isolation, InProcessModeGivesTheSameResults) {
