@@ -1,4 +1,6 @@
-// The air forces of section 8 of the course text, as every backend applies them.
+// The air forces of section 8 of the course text, as every backend applies them. Defined
+// here so that every step that evaluates them (the course's, the reference's, each
+// adapter's) inlines them: no call into the shared library per body.
 #pragma once
 
 #include "scene/scene.hpp"
@@ -6,12 +8,26 @@
 namespace bb {
 
 /// Quadratic drag F = -1/2 Cd A rho |v - w| (v - w), A = pi r^2 (newtons).
-Vec3 drag_force(const Body& body, const Air& air, const Vec3& velocity);
+inline Vec3 drag_force(const Body& body, const Air& air, const Vec3& velocity) {
+  const Vec3 relative = velocity - air.wind;
+  const double k = 0.5 * body.drag_coefficient * frontal_area(body) * air.density;
+  return relative * (-k * relative.norm());
+}
 
 /// Magnus force F = k (omega x (v - w)) (newtons).
-Vec3 magnus_force(const Body& body, const Air& air, const Vec3& velocity, const Vec3& omega);
+inline Vec3 magnus_force(const Body& body, const Air& air, const Vec3& velocity,
+                         const Vec3& omega) {
+  return omega.cross(velocity - air.wind) * body.magnus;
+}
 
 /// Sum of drag and Magnus on a body; zero when the scene has no air.
-Vec3 air_force(const Scene& scene, const Body& body, const Vec3& velocity, const Vec3& omega);
+inline Vec3 air_force(const Scene& scene, const Body& body, const Vec3& velocity,
+                      const Vec3& omega) {
+  if (!scene.air) return Vec3::Zero();
+  Vec3 force = Vec3::Zero();
+  if (body.drag_coefficient > 0.0) force += drag_force(body, *scene.air, velocity);
+  if (body.magnus != 0.0) force += magnus_force(body, *scene.air, velocity, omega);
+  return force;
+}
 
 }  // namespace bb

@@ -9,21 +9,6 @@ EquationsOfMotion::EquationsOfMotion(const Scene& scene)
   for (const Body& b : scene.bodies) inverse_mass_.push_back(b.fixed ? 0.0 : 1.0 / b.mass);
 }
 
-void EquationsOfMotion::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                                      const std::vector<Vec3>& omega,
-                                      std::vector<Vec3>& out) const {
-  const std::size_t n = scene_.bodies.size();
-  // Forces first (springs act on both ends), then each body's acceleration from its force.
-  for (std::size_t i = 0; i < n; ++i) out[i].setZero();
-  if (!springs_.empty()) add_spring_forces(springs_, x.data(), v.data(), out.data());
-  if (scene_.air)
-    for (std::size_t i = 0; i < n; ++i)
-      out[i] += air_force(scene_, scene_.bodies[i], v[i], omega[i]);
-  for (std::size_t i = 0; i < n; ++i)
-    out[i] =
-        inverse_mass_[i] == 0.0 ? Vec3::Zero() : Vec3(scene_.gravity + out[i] * inverse_mass_[i]);
-}
-
 double total_energy(const Scene& scene, const State& state) {
   double energy = 0.0;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {

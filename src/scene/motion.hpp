@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "scene/air_forces.hpp"
 #include "scene/scene.hpp"
 #include "scene/spring_forces.hpp"
 #include "scene/state.hpp"
@@ -27,6 +28,22 @@ class EquationsOfMotion {
   SpringNetwork springs_;
   std::vector<double> inverse_mass_;  ///< 1/kg, 0 for fixed bodies
 };
+
+// Inline, so the course's step inlines the whole force evaluation.
+inline void EquationsOfMotion::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                             const std::vector<Vec3>& omega,
+                                             std::vector<Vec3>& out) const {
+  const std::size_t n = scene_.bodies.size();
+  // Forces first (springs act on both ends), then each body's acceleration from its force.
+  for (std::size_t i = 0; i < n; ++i) out[i].setZero();
+  if (!springs_.empty()) add_spring_forces(springs_, x.data(), v.data(), out.data());
+  if (scene_.air)
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] += air_force(scene_, scene_.bodies[i], v[i], omega[i]);
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] =
+        inverse_mass_[i] == 0.0 ? Vec3::Zero() : Vec3(scene_.gravity + out[i] * inverse_mass_[i]);
+}
 
 /// Total mechanical energy (J): kinetic, rotational, gravitational (zero at the origin) and
 /// the springs' potential energy.

@@ -73,8 +73,4 @@ Vec3 principal_inertia(const Body& body) {
   return {};
 }
 
-double frontal_area(const Body& body) {
-  return body.shape == Shape::Sphere ? std::numbers::pi * body.radius * body.radius : 0.0;
-}
-
 }  // namespace bb

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -194,6 +195,8 @@ struct Scene {
 Vec3 principal_inertia(const Body& body);
 
 /// Frontal area (m^2) that drag acts on: pi r^2 for a sphere.
-double frontal_area(const Body& body);
+inline double frontal_area(const Body& body) {
+  return body.shape == Shape::Sphere ? std::numbers::pi * body.radius * body.radius : 0.0;
+}
 
 }  // namespace bb
