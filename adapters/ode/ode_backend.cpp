@@ -1,6 +1,7 @@
 // ODE as a backend, double precision.
 #include <ode/ode.h>
 
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "../point_body.hpp"
+#include "ode_contacts.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -80,8 +82,15 @@ class OdeSimulation : public Simulation {
       dBodySetAutoDisableFlag(body, 0);
       bodies_.push_back(body);
     }
+    // Contacts: ODE's own geoms and detection, only when the scene has something to touch.
+    if (scene_has_contacts(scene)) {
+      dWorldSetContactSurfaceLayer(world_, engine_setting(scene, "ode", "contact_surface_layer"));
+      contacts_ = std::make_unique<OdeContacts>(scene, world_, bodies_,
+                                                engine_setting(scene, "ode", "bounce_vel"));
+    }
   }
   ~OdeSimulation() override {
+    contacts_.reset();
     dWorldDestroy(world_);
     dThreadingFreeImplementation(threading_);
   }
@@ -89,6 +98,12 @@ class OdeSimulation : public Simulation {
   OdeSimulation& operator=(const OdeSimulation&) = delete;
 
   void step() override {
+    // Impulses due at the start of this step change velocities (and spins) at once.
+    for (; next_impulse_ < scene_.impulses.size() &&
+           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
+         ++next_impulse_)
+      push(scene_.impulses[next_impulse_]);
+    ++steps_;
     // The harness's forces from the engine's own current state, as a game would add them.
     if (has_external_forces(scene_)) {
       read(state_);
@@ -97,10 +112,12 @@ class OdeSimulation : public Simulation {
         if (!scene_.bodies[i].fixed)
           dBodyAddForce(bodies_[i], forces_[i].x(), forces_[i].y(), forces_[i].z());
     }
+    if (contacts_) contacts_->collide();
     if (quick_step_)
       dWorldQuickStep(world_, dt_);
     else
       dWorldStep(world_, dt_);
+    if (contacts_) contacts_->clear();
   }
 
   void read(State& out) const override {
@@ -117,7 +134,35 @@ class OdeSimulation : public Simulation {
     Settings s = engine_key_settings(scene_, "ode");
     s.push_back({"precision", std::string(sizeof(dReal) == 8 ? "double" : "float")});
     s.push_back({"auto_disable", false});
-    s.push_back({"collision", std::string("none (no space, no geoms)")});
+    if (!contacts_) {
+      s.push_back({"collision", std::string("none (no space, no geoms)")});
+    } else {
+      s.push_back(
+          {"collision", std::string("ODE's own detection (dSpaceCollide on a simple space): a "
+                                    "sphere or box geom per body that can touch, a plane for the "
+                                    "ground; up to ") +
+                            std::to_string(kOdeMaxContactsPerPair) + " contact points per pair"});
+      s.push_back({"detection", std::string("discrete: a contact exists only once the shapes "
+                                            "overlap at the start of a step (no continuous "
+                                            "collision detection), so a bounce is found a "
+                                            "step late and from some penetration")});
+      s.push_back({"restitution_rule",
+                   std::string("ODE combines nothing: each contact takes the surface its near "
+                               "callback sets; the adapter sets the case's pair restitution "
+                               "(dContactBounce) and friction_kinetic as mu on every point")});
+      s.push_back({"restitution_below_threshold",
+                   std::string("a contact approaching slower than bounce_vel does not bounce")});
+      s.push_back({"contact_erp_cfm", std::string("contacts use the world's erp and cfm "
+                                                  "(no dContactSoftERP / dContactSoftCFM)")});
+      s.push_back({"max_correcting_vel",
+                   std::string("infinite (ODE's default; dWorldSetContactMaxCorrectingVel not "
+                               "called)")});
+      s.push_back({"contacts_made", static_cast<double>(contacts_->contacts_made())});
+    }
+    if (!scene_.impulses.empty())
+      s.push_back({"impulse", std::string("velocity set directly at the start of the step: "
+                                          "v += J / m, omega += I_world^-1 (r x J) "
+                                          "(ODE has no impulse call)")});
     add_point_body_setting(scene_, s);
     return s;
   }
@@ -131,14 +176,36 @@ class OdeSimulation : public Simulation {
   std::vector<dBodyID> bodies_;
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
+  std::unique_ptr<OdeContacts> contacts_;
+  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
+  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
+
+  /// An impulse J at a point: v += J / m and omega += I_world^-1 (r x J).
+  void push(const Impulse& imp) {
+    const std::size_t i = static_cast<std::size_t>(imp.body);
+    const Body& body = scene_.bodies[i];
+    if (body.fixed) return;
+    dBodyID b = bodies_[i];
+    const Vec3 v = from_ode(dBodyGetLinearVel(b)) + imp.impulse / body.mass;
+    dBodySetLinearVel(b, v.x(), v.y(), v.z());
+    if (!imp.point) return;
+    const Vec3 arm = *imp.point - from_ode(dBodyGetPosition(b));
+    const dReal* q = dBodyGetQuaternion(b);
+    const Eigen::Matrix3d r = Quat(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+    const Eigen::Matrix3d inertia = r * engine_inertia(body).asDiagonal() * r.transpose();
+    const Vec3 w =
+        from_ode(dBodyGetAngularVel(b)) + Vec3(inertia.ldlt().solve(arm.cross(imp.impulse)));
+    dBodySetAngularVel(b, w.x(), w.y(), w.z());
+  }
 };
 
 class OdeBackend : public Backend {
  public:
   std::string name() const override { return "ode"; }
   FeatureSet supports() const override {
-    return {Feature::ThreeD, Feature::Gravity,  Feature::Drag, Feature::Magnus,
-            Feature::Wind,   Feature::Rotation, Feature::Boxes};
+    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,   Feature::Magnus,
+            Feature::Wind,        Feature::Rotation,    Feature::Boxes,  Feature::GroundContact,
+            Feature::BodyContact, Feature::Restitution, Feature::Impulse};
   }
   std::pair<std::string, std::string> library_version() const override {
     return {"ode", BB_ODE_VERSION};

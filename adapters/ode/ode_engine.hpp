@@ -14,7 +14,13 @@ inline EngineDescription ode_engine() {
            {e, "quick_step", KeyKind::Boolean, 0, "dWorldQuickStep instead of dWorldStep"},
            {e, "quick_step_iterations", KeyKind::Integer, 20, "iterations of dWorldQuickStep"},
            {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping scale"},
-           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping scale"}}};
+           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping scale"},
+           {e, "bounce_vel", KeyKind::Number, 0.1,
+            "normal approach speed below which a contact does not bounce, m/s "
+            "(dSurfaceParameters::bounce_vel; 0.1 as in ODE's own demos)"},
+           {e, "contact_surface_layer", KeyKind::Number, 0.0,
+            "depth contacts may sink before ERP pushes them out, m "
+            "(dWorldSetContactSurfaceLayer; ODE's default)"}}};
 }
 
 }  // namespace bb

@@ -1,0 +1,59 @@
+// Contacts in ODE, set up the way its users do: geoms in a space, dSpaceCollide each step,
+// and a near callback that makes a contact joint for every point dCollide finds between
+// two geoms that may touch, with the surface the case gives that pair (ODE has no rule of
+// its own to combine two bodies' materials: the callback sets each contact's surface).
+#pragma once
+
+#include <ode/ode.h>
+
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace bb {
+
+/// Whether the scene has anything to touch: a ground or a [[contact]].
+bool scene_has_contacts(const Scene& scene);
+
+/// Most contact points dCollide is asked for per pair of geoms.
+inline constexpr int kOdeMaxContactsPerPair = 4;
+
+/// The surface of one pair of things that may touch.
+struct OdeSurface {
+  bool touches = false;
+  dReal restitution = 0;
+  dReal friction = 0;  ///< ODE's one Coulomb coefficient: the case's friction_kinetic
+};
+
+/// Geoms for the scene's bodies (a sphere or a box per body that can touch something) and
+/// the ground plane, in one space; the near callback joins touching pairs each step.
+class OdeContacts {
+ public:
+  /// `bodies` are the scene's bodies in order; `bounce_vel` is ODE's bouncing threshold.
+  OdeContacts(const Scene& scene, dWorldID world, const std::vector<dBodyID>& bodies,
+              dReal bounce_vel);
+  ~OdeContacts();
+  OdeContacts(const OdeContacts&) = delete;
+  OdeContacts& operator=(const OdeContacts&) = delete;
+
+  /// Finds this step's contacts and makes their joints; call before stepping the world.
+  void collide();
+  /// Removes this step's contact joints; call after stepping the world.
+  void clear();
+  /// Contact joints made over the run so far.
+  long contacts_made() const { return contacts_made_; }
+
+ private:
+  static void near_callback(void* self, dGeomID a, dGeomID b);
+  const OdeSurface& surface(int a, int b) const;
+
+  dWorldID world_;
+  dSpaceID space_;
+  dJointGroupID joints_;
+  dReal bounce_vel_;
+  int count_;                         ///< bodies plus the ground, which is the last index
+  std::vector<OdeSurface> surfaces_;  ///< count_ x count_
+  long contacts_made_ = 0;
+};
+
+}  // namespace bb
