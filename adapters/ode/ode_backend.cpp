@@ -1,4 +1,6 @@
-// ODE as a backend, double precision.
+// ODE as a backend, double precision. Built twice: `ode`, whose springs are ODE joints
+// made soft by ERP and CFM, and `ode/force` (BB_ODE_SPRINGS_BY_HAND), whose springs are
+// forces added before each step.
 #include <ode/ode.h>
 
 #include <cmath>
@@ -88,6 +90,11 @@ class OdeSimulation : public Simulation {
       contacts_ = std::make_unique<OdeContacts>(scene, world_, bodies_,
                                                 engine_setting(scene, "ode", "bounce_vel"));
     }
+#ifdef BB_ODE_SPRINGS_BY_HAND
+    springs_ = spring_network(scene);
+#else
+    make_spring_joints();
+#endif
   }
   ~OdeSimulation() override {
     contacts_.reset();
@@ -105,9 +112,9 @@ class OdeSimulation : public Simulation {
       push(scene_.impulses[next_impulse_]);
     ++steps_;
     // The harness's forces from the engine's own current state, as a game would add them.
-    if (has_external_forces(scene_)) {
+    if (has_external_forces(scene_) || !springs_.empty()) {
       read(state_);
-      external_forces(scene_, state_, forces_);
+      external_forces(scene_, state_, forces_, springs_.empty() ? nullptr : &springs_);
       for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (!scene_.bodies[i].fixed)
           dBodyAddForce(bodies_[i], forces_[i].x(), forces_[i].y(), forces_[i].z());
@@ -159,6 +166,19 @@ class OdeSimulation : public Simulation {
                                "called)")});
       s.push_back({"contacts_made", static_cast<double>(contacts_->contacts_made())});
     }
+    if (!scene_.springs.empty()) {
+#ifdef BB_ODE_SPRINGS_BY_HAND
+      s.push_back({"springs", std::string("force k (l - L) + c (v_b - v_a).u along each spring, "
+                                          "added with dBodyAddForce before each step")});
+#else
+      s.push_back(
+          {"springs", std::string("a distance joint (dJointCreateDBall) per spring at the rest "
+                                  "length, made soft as the ODE manual says: ERP = h k / (h k + "
+                                  "c), CFM = 1 / (h k + c) per joint, h the step")});
+      s.push_back({"spring_erp_first", spring_erp_});
+      s.push_back({"spring_cfm_first", spring_cfm_});
+#endif
+    }
     if (!scene_.impulses.empty())
       s.push_back({"impulse", std::string("velocity set directly at the start of the step: "
                                           "v += J / m, omega += I_world^-1 (r x J) "
@@ -177,6 +197,29 @@ class OdeSimulation : public Simulation {
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
   std::unique_ptr<OdeContacts> contacts_;
+  SpringNetwork springs_;  ///< springs added by hand (ode/force); empty otherwise
+  double spring_erp_ = 0.0, spring_cfm_ = 0.0;  ///< of the first spring joint, for settings
+
+  /// Each spring as a distance joint held at its rest length, softened into a spring of
+  /// stiffness k and damping c by ERP and CFM (ODE manual, "Soft constraint and constraint
+  /// force mixing": ERP = h k / (h k + c), CFM = 1 / (h k + c)).
+  void make_spring_joints() {
+    for (const Spring& spring : scene_.springs) {
+      dJointID joint = dJointCreateDBall(world_, nullptr);
+      dJointAttach(joint, bodies_[static_cast<std::size_t>(spring.body_a)],
+                   bodies_[static_cast<std::size_t>(spring.body_b)]);
+      const Vec3 a = scene_.bodies[static_cast<std::size_t>(spring.body_a)].position;
+      const Vec3 b = scene_.bodies[static_cast<std::size_t>(spring.body_b)].position;
+      dJointSetDBallAnchor1(joint, a.x(), a.y(), a.z());
+      dJointSetDBallAnchor2(joint, b.x(), b.y(), b.z());
+      dJointSetDBallDistance(joint, spring.rest_length);
+      const double hk = dt_ * spring.stiffness;
+      const double erp = hk / (hk + spring.damping), cfm = 1.0 / (hk + spring.damping);
+      dJointSetDBallParam(joint, dParamERP, erp);
+      dJointSetDBallParam(joint, dParamCFM, cfm);
+      if (spring_cfm_ == 0.0) spring_erp_ = erp, spring_cfm_ = cfm;
+    }
+  }
   long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
   std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
 
@@ -201,12 +244,19 @@ class OdeSimulation : public Simulation {
 
 class OdeBackend : public Backend {
  public:
-  std::string name() const override { return "ode"; }
+  std::string name() const override { return BB_ODE_NAME; }
   FeatureSet supports() const override {
-    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,   Feature::Magnus,
-            Feature::Wind,        Feature::Rotation,    Feature::Boxes,  Feature::GroundContact,
-            Feature::BodyContact, Feature::Restitution, Feature::Impulse};
+    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
+            Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
+            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs};
   }
+#ifdef BB_ODE_SPRINGS_BY_HAND
+  /// The same engine as `ode` wherever the scene has no springs: it takes part only where
+  /// it has.
+  FeatureSet needs() const override {
+    return {Feature::Springs};
+  }
+#endif
   std::pair<std::string, std::string> library_version() const override {
     return {"ode", BB_ODE_VERSION};
   }

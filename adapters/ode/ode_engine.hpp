@@ -1,4 +1,5 @@
-// ODE as the harness knows it: one backend, its settings keys and their defaults.
+// ODE as the harness knows it: `ode` (springs as soft ODE joints) and `ode/force` (springs
+// added by hand, on spring scenes only), its settings keys and their defaults.
 #pragma once
 
 #include "scene/engine_catalogue.hpp"
@@ -8,7 +9,7 @@ namespace bb {
 inline EngineDescription ode_engine() {
   const std::string e = "ode";
   return {e,
-          {"ode"},
+          {"ode", "ode/force"},
           {{e, "erp", KeyKind::Number, 0.2, "error reduction parameter"},
            {e, "cfm", KeyKind::Number, 1e-5, "constraint force mixing"},
            {e, "quick_step", KeyKind::Boolean, 0, "dWorldQuickStep instead of dWorldStep"},
@@ -20,7 +21,9 @@ inline EngineDescription ode_engine() {
             "(dSurfaceParameters::bounce_vel; 0.1 as in ODE's own demos)"},
            {e, "contact_surface_layer", KeyKind::Number, 0.0,
             "depth contacts may sink before ERP pushes them out, m "
-            "(dWorldSetContactSurfaceLayer; ODE's default)"}}};
+            "(dWorldSetContactSurfaceLayer; ODE's default)"}},
+          true,
+          {{"ode/force", {Feature::Springs}}}};
 }
 
 }  // namespace bb

@@ -1,0 +1,121 @@
+// ODE with springs, both ways its users build them: `ode` softens a distance joint into a
+// spring with ERP and CFM from the ODE manual's formula, `ode/force` adds the spring force
+// before each step. The joint's numerical damping is measured, not hidden.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "course/course_backend.hpp"
+#include "metrics/observables.hpp"
+#include "reference/closed_form.hpp"
+#include "run/accuracy_run.hpp"
+#include "run/registry.hpp"
+#include "scene/motion.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+const Registry& registry() {
+  static const Registry r = Registry::load();
+  return r;
+}
+
+const Backend* engine(const std::string& name) {
+  for (const Backend* b : registry().engines())
+    if (b->name() == name) return b;
+  return nullptr;
+}
+
+double number_setting(const Settings& settings, const std::string& key) {
+  for (const auto& [k, v] : settings)
+    if (k == key && std::holds_alternative<double>(v)) return std::get<double>(v);
+  return std::nan("");
+}
+
+class OdeSprings : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (engine("ode") == nullptr || engine("ode/force") == nullptr)
+      GTEST_SKIP() << "ode or ode/force was not built";
+  }
+};
+
+// (a) and (b): both oscillate near the closed form's period; the force added by hand is
+// the course's semi-implicit Euler (ODE integrates the same way), while the soft joint
+// runs slow and drains the energy of an undamped spring.
+TEST_F(OdeSprings, TheJointRunsSlowAndLosesEnergyWhereTheForceByHandDoesNot) {
+  const Scene scene = load_case(test::source_path("cases/spring_pair.toml"));
+  const double exact = closed_form::spring_pair_period(1.0, 1.0, 100.0);
+  const auto period = [&](const RunRecord& run) {
+    return *measure(scene, scene.observes[0], run.trajectory).value;
+  };
+  const RunRecord joint = run_accuracy(*engine("ode"), scene, scene.report_dt);
+  const RunRecord force = run_accuracy(*engine("ode/force"), scene, scene.report_dt);
+  const RunRecord course = run_accuracy(
+      CourseBackend({"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"}),
+      scene, scene.report_dt);
+  for (const RunRecord* run : {&joint, &force, &course})
+    ASSERT_EQ(run->status, RunStatus::Ok) << run->backend << ": " << run->reason;
+  const auto energy = [&](const RunRecord& run) {
+    return total_energy(scene, run.trajectory.states.back()) /
+           total_energy(scene, run.trajectory.states.front());
+  };
+  std::printf(
+      "period / closed form: ode %.4f, ode/force %.4f; energy at the end / start: "
+      "ode %.3g, ode/force %.3g\n",
+      period(joint) / exact, period(force) / exact, energy(joint), energy(force));
+  // The issue measured 1.018 for the joint: within 3 percent, and slower than the truth.
+  EXPECT_GT(period(joint), exact);
+  EXPECT_LT(period(joint), 1.03 * exact);
+  EXPECT_NEAR(period(force), period(course), 1e-9);
+  EXPECT_LT(energy(joint), 1e-3);
+  EXPECT_GT(energy(force), 0.5);
+}
+
+// (c) The mapping is in the run: ERP = h k / (h k + c), CFM = 1 / (h k + c).
+TEST_F(OdeSprings, TheRunNamesTheJointAndItsErpAndCfm) {
+  const Scene scene = load_case(test::source_path("cases/spring_pair_damped.toml"));
+  const double h = scene.report_dt, k = 100.0, c = 2.0;
+  const RunRecord joint = run_accuracy(*engine("ode"), scene, h);
+  EXPECT_NEAR(number_setting(joint.engine_settings, "spring_erp_first"), h * k / (h * k + c),
+              1e-15);
+  EXPECT_NEAR(number_setting(joint.engine_settings, "spring_cfm_first"), 1.0 / (h * k + c), 1e-15);
+  const RunRecord force = run_accuracy(*engine("ode/force"), scene, h);
+  for (const RunRecord* run : {&joint, &force}) {
+    bool named = false;
+    for (const auto& [key, value] : run->engine_settings)
+      named = named || (key == "springs" && std::holds_alternative<std::string>(value));
+    EXPECT_TRUE(named) << run->backend;
+  }
+}
+
+// (d) ode/force is ode wherever there are no springs: it takes part only where there are.
+TEST_F(OdeSprings, TheForceVariantTakesPartOnlyOnSpringScenes) {
+  const auto has = [&](const Scene& scene) {
+    const BackendSet set = backends_for(scene, registry());
+    return std::any_of(set.all.begin(), set.all.end(),
+                       [](const Backend* b) { return b->name() == "ode/force"; });
+  };
+  EXPECT_FALSE(has(load_case(test::source_path("cases/drag_fall.toml"))));
+  EXPECT_TRUE(has(load_case(test::source_path("cases/spring_pair.toml"))));
+}
+
+// (e) An anchored particle of the cloth stays where it is, both ways.
+TEST_F(OdeSprings, AnchoredParticlesDoNotMove) {
+  const Scene scene = load_case(test::source_path("cases/cloth_stiff.toml"));
+  const int anchor = scene.body_index("p3_0");
+  ASSERT_TRUE(scene.bodies[anchor].fixed);
+  // The joint holds at 1/60 s; the force by hand, like semi-implicit Euler, needs the finest.
+  for (const auto& [name, dt] :
+       {std::pair{"ode", scene.report_dt}, std::pair{"ode/force", scene.dt.back()}}) {
+    const RunRecord run = run_accuracy(*engine(name), scene, dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << name << ": " << run.reason;
+    EXPECT_EQ(run.trajectory.states.back()[anchor].position, scene.bodies[anchor].position) << name;
+  }
+}
+
+}  // namespace
+}  // namespace bb
