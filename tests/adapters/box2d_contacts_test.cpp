@@ -11,29 +11,16 @@
 
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-const Backend* box2d() {
-  static const Registry registry = Registry::load();
-  for (const Backend* b : registry.engines())
-    if (b->name() == "box2d") return b;
-  return nullptr;
-}
+constexpr auto setting = test::setting_text;
 
-/// A setting's value as text ("" when missing), numbers and flags printed.
-std::string setting(const Settings& settings, const std::string& key) {
-  for (const auto& [k, v] : settings) {
-    if (k != key) continue;
-    if (const auto* text = std::get_if<std::string>(&v)) return *text;
-    if (const auto* flag = std::get_if<bool>(&v)) return *flag ? "true" : "false";
-    char number[32];
-    std::snprintf(number, sizeof number, "%g", std::get<double>(v));
-    return number;
-  }
-  return "";
+const Backend* box2d() {
+  return test::engine("box2d");
 }
 
 /// The run of `scene` at `dt`, which must end ok.
@@ -87,22 +74,9 @@ TEST(Box2dContacts, AnImpulseChangesVelocityByJOverM) {
 
 // The issue's drop: a ball of r = 0.5 m from 10 m onto a ground with e = 0.8, long enough
 // for three apexes (drop_height_sensitivity's h1000 stops after one).
-const char* kDrop = R"(name = "drop"
-dims = 2
-duration = 8.0
-sample = 0.0166666666666666667
-dt = [0.0166666666666666667, 0.00416666666666666667]
-report_dt = 0.0166666666666666667
-
-[ground]
-restitution = 0.8
-
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 1.0
-position = [0.0, 10.0, 0.0]
-)";
+const std::string kDrop =
+    test::dropped_ball("8.0", "0.0166666666666666667",
+                       "0.0166666666666666667, 0.00416666666666666667", "0.0166666666666666667");
 
 TEST(Box2dContacts, ADroppedBallBouncesNearTheClosedForm) {
   REQUIRE_BOX2D();

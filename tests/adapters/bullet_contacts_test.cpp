@@ -11,36 +11,20 @@
 #include "metrics/event_observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-const Registry& registry() {
-  static const Registry r = Registry::load();
-  return r;
-}
-
-const Backend* engine(const std::string& name) {
-  for (const Backend* b : registry().engines())
-    if (b->name() == name) return b;
-  return nullptr;
-}
+using test::engine;
+using test::setting;
+using test::text_setting;
+using test::three_in_a_row;
 
 /// Bullet's own rounding: a double build keeps about 1e-12 here, a float one 1e-6.
 double precision_of(const std::string& name) {
   return name == "bullet" ? 1e-12 : 1e-6;
-}
-
-const SettingValue* setting(const Settings& settings, const std::string& key) {
-  for (const auto& [k, v] : settings)
-    if (k == key) return &v;
-  return nullptr;
-}
-
-std::string text_setting(const Settings& settings, const std::string& key) {
-  const SettingValue* v = setting(settings, key);
-  return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "";
 }
 
 class BulletContacts : public ::testing::TestWithParam<std::string> {
@@ -97,20 +81,8 @@ TEST_P(BulletContacts, PushChangesEachVelocityByImpulseOverMass) {
 }
 
 // A ball of radius 0.5 m dropped from 10 m onto a ground with restitution 0.8, at 1/240 s.
-const char* kDrop = R"(name = "drop"
-dims = 2
-duration = 9.0
-sample = 0.0333333333333333333
-dt = [0.00416666666666666667]
-report_dt = 0.00416666666666666667
-[ground]
-restitution = 0.8
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 1.0
-position = [0.0, 10.0, 0.0]
-)";
+const std::string kDrop = test::dropped_ball("9.0", "0.0333333333333333333",
+                                             "0.00416666666666666667", "0.00416666666666666667");
 
 // (c) The first contact comes when the closed form says, and the ball bounces with the
 // case's restitution, give or take what Bullet's penetration recovery adds.
@@ -180,36 +152,6 @@ TEST_P(BulletContacts, RunsWithContactsNameTheirRulesAndThresholds) {
   // 0.02 x the bounding radius, which Bullet takes from the box around the sphere: sqrt(3) r.
   EXPECT_NEAR(std::get<double>(*setting(s, "contact_breaking_threshold_min")),
               0.02 * std::sqrt(3.0) * 0.5, 1e-6);
-}
-
-// Three balls in a row without gravity; "a" flies through "b" towards "c".
-std::string three_in_a_row(const std::string& pair) {
-  return std::string(R"(name = "row"
-dims = 2
-duration = 2.0
-sample = 0.1
-dt = [0.01]
-report_dt = 0.01
-gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "a"
-radius = 0.5
-mass = 1.0
-position = [-2.0, 1.0, 0.0]
-velocity = [2.0, 0.0, 0.0]
-[[body]]
-name = "b"
-radius = 0.5
-mass = 1.0
-position = [0.0, 1.0, 0.0]
-[[body]]
-name = "c"
-radius = 0.5
-mass = 1.0
-position = [0.0, 10.0, 0.0]
-[[contact]]
-bodies = )") +
-         pair + "\nrestitution = 1.0\n";
 }
 
 // (e) Only the pairs the case lists collide; the same scene with the pair listed does.

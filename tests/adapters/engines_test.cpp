@@ -8,21 +8,14 @@
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-const Registry& registry() {
-  static const Registry r = Registry::load();
-  return r;
-}
-
-const Backend* engine(const std::string& name) {
-  for (const Backend* b : registry().engines())
-    if (b->name() == name) return b;
-  return nullptr;
-}
+using test::engine;
+using test::registry;
 
 bool single_precision(const std::string& name) {
   return name == "bullet-float" || name == "box2d";

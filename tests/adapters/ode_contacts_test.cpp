@@ -11,35 +11,19 @@
 #include "metrics/event_observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-const Registry& registry() {
-  static const Registry r = Registry::load();
-  return r;
-}
-
-const Backend* engine(const std::string& name) {
-  for (const Backend* b : registry().engines())
-    if (b->name() == name) return b;
-  return nullptr;
-}
+using test::engine;
+using test::setting;
+using test::text_setting;
+using test::three_in_a_row;
 
 /// ODE's own rounding in double precision.
 constexpr double kPrecision = 1e-12;
-
-const SettingValue* setting(const Settings& settings, const std::string& key) {
-  for (const auto& [k, v] : settings)
-    if (k == key) return &v;
-  return nullptr;
-}
-
-std::string text_setting(const Settings& settings, const std::string& key) {
-  const SettingValue* v = setting(settings, key);
-  return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "";
-}
 
 class OdeContacts : public ::testing::Test {
  protected:
@@ -89,20 +73,7 @@ TEST_F(OdeContacts, PushChangesEachVelocityByImpulseOverMass) {
 
 // A ball of radius 0.5 m dropped from 10 m onto a ground with restitution 0.8.
 std::string drop(const std::string& dt) {
-  return R"(name = "drop"
-dims = 2
-duration = 9.0
-sample = 0.0166666666666666667
-dt = [)" +
-         dt + "]\nreport_dt = " + dt + R"(
-[ground]
-restitution = 0.8
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 1.0
-position = [0.0, 10.0, 0.0]
-)";
+  return test::dropped_ball("9.0", "0.0166666666666666667", dt, dt);
 }
 
 // (c) The first contact comes within two steps of the closed form (ODE finds it only once
@@ -156,36 +127,6 @@ TEST_F(OdeContacts, RunsWithContactsNameTheirRulesAndThresholds) {
   for (const char* key : {"collision", "max_correcting_vel", "restitution_below_threshold"})
     EXPECT_NE(text_setting(s, key), "") << key;
   EXPECT_GT(std::get<double>(*setting(s, "contacts_made")), 0.0);
-}
-
-// Three balls in a row without gravity; "a" flies through "b" towards "c".
-std::string three_in_a_row(const std::string& pair) {
-  return std::string(R"(name = "row"
-dims = 2
-duration = 2.0
-sample = 0.1
-dt = [0.01]
-report_dt = 0.01
-gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "a"
-radius = 0.5
-mass = 1.0
-position = [-2.0, 1.0, 0.0]
-velocity = [2.0, 0.0, 0.0]
-[[body]]
-name = "b"
-radius = 0.5
-mass = 1.0
-position = [0.0, 1.0, 0.0]
-[[body]]
-name = "c"
-radius = 0.5
-mass = 1.0
-position = [0.0, 10.0, 0.0]
-[[contact]]
-bodies = )") +
-         pair + "\nrestitution = 1.0\n";
 }
 
 // (e) Only the pairs the case lists collide; the same scene with the pair listed does.

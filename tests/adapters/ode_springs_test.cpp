@@ -13,27 +13,15 @@
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
 #include "scene/motion.hpp"
+#include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-const Registry& registry() {
-  static const Registry r = Registry::load();
-  return r;
-}
-
-const Backend* engine(const std::string& name) {
-  for (const Backend* b : registry().engines())
-    if (b->name() == name) return b;
-  return nullptr;
-}
-
-double number_setting(const Settings& settings, const std::string& key) {
-  for (const auto& [k, v] : settings)
-    if (k == key && std::holds_alternative<double>(v)) return std::get<double>(v);
-  return std::nan("");
-}
+using test::engine;
+using test::number_setting;
+using test::registry;
 
 class OdeSprings : public ::testing::Test {
  protected:

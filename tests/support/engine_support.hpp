@@ -1,0 +1,98 @@
+// Helpers shared by the engine adapter tests: the loaded plugins, one engine by name, and
+// what a run's engine_settings say.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "run/registry.hpp"
+
+namespace bb::test {
+
+/// Every plugin next to the program, loaded once per test program.
+inline const Registry& registry() {
+  static const Registry r = Registry::load();
+  return r;
+}
+
+/// The engine backend called `name`, or nullptr when its plugin was not built.
+inline const Backend* engine(const std::string& name) {
+  for (const Backend* b : registry().engines())
+    if (b->name() == name) return b;
+  return nullptr;
+}
+
+/// The value of setting `key`, or nullptr.
+inline const SettingValue* setting(const Settings& settings, const std::string& key) {
+  for (const auto& [k, v] : settings)
+    if (k == key) return &v;
+  return nullptr;
+}
+
+/// A text setting ("" when missing or not text).
+inline std::string text_setting(const Settings& settings, const std::string& key) {
+  const SettingValue* v = setting(settings, key);
+  return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "";
+}
+
+/// A number setting (NaN when missing or not a number).
+inline double number_setting(const Settings& settings, const std::string& key) {
+  const SettingValue* v = setting(settings, key);
+  return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : std::nan("");
+}
+
+/// Any setting as text ("" when missing): numbers printed with %g, flags as true/false.
+inline std::string setting_text(const Settings& settings, const std::string& key) {
+  const SettingValue* v = setting(settings, key);
+  if (v == nullptr) return "";
+  if (const auto* text = std::get_if<std::string>(v)) return *text;
+  if (const auto* flag = std::get_if<bool>(v)) return *flag ? "true" : "false";
+  char number[32];
+  std::snprintf(number, sizeof number, "%g", std::get<double>(*v));
+  return number;
+}
+
+/// The issue's drop: a ball of radius 0.5 m and 1 kg from 10 m onto a ground with
+/// restitution 0.8 (closed-form bottom apexes 6.080, 3.891, 2.490 m). Times in seconds,
+/// as TOML numbers; `dts` is the TOML list's inside.
+inline std::string dropped_ball(const std::string& duration, const std::string& sample,
+                                const std::string& dts, const std::string& report_dt) {
+  return "name = \"drop\"\ndims = 2\nduration = " + duration + "\nsample = " + sample + "\ndt = [" +
+         dts + "]\nreport_dt = " + report_dt +
+         "\n[ground]\nrestitution = 0.8\n[[body]]\nname = \"ball\"\nradius = 0.5\nmass = "
+         "1.0\nposition = [0.0, 10.0, 0.0]\n";
+}
+
+/// Three balls in a row without gravity; "a" flies through "b" towards "c"; `pair` is the
+/// one [[contact]] (e.g. ["a", "c"]), with restitution 1.
+inline std::string three_in_a_row(const std::string& pair) {
+  return std::string(R"(name = "row"
+dims = 2
+duration = 2.0
+sample = 0.1
+dt = [0.01]
+report_dt = 0.01
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "a"
+radius = 0.5
+mass = 1.0
+position = [-2.0, 1.0, 0.0]
+velocity = [2.0, 0.0, 0.0]
+[[body]]
+name = "b"
+radius = 0.5
+mass = 1.0
+position = [0.0, 1.0, 0.0]
+[[body]]
+name = "c"
+radius = 0.5
+mass = 1.0
+position = [0.0, 10.0, 0.0]
+[[contact]]
+bodies = )") +
+         pair + "\nrestitution = 1.0\n";
+}
+
+}  // namespace bb::test
