@@ -9,6 +9,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -75,7 +76,19 @@ class SoftBodySimulation : public Simulation {
   }
   ~SoftBodySimulation() override { world_.removeSoftBody(body_.get()); }
 
-  void step() override { world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_)); }
+  void step() override {
+    // Impulses due at the start of this step: J / m added to the node's velocity (a point
+    // takes no angular impulse, wherever J acts).
+    for (; next_impulse_ < scene_.impulses.size() &&
+           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
+         ++next_impulse_) {
+      const Impulse& imp = scene_.impulses[next_impulse_];
+      btSoftBody::Node& node = body_->m_nodes[imp.body];
+      body_->addVelocity(to_bt(imp.impulse) * node.m_im, imp.body);
+    }
+    ++steps_;
+    world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_));
+  }
 
   void read(State& out) const override {
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -99,6 +112,9 @@ class SoftBodySimulation : public Simulation {
                    "stretch each step, as a rigid rod would")});
     s.push_back({"link_stiffness_min", kLST_min_});
     s.push_back({"link_stiffness_max", kLST_max_});
+    if (!scene_.impulses.empty())
+      s.push_back({"impulse", S("btSoftBody::addVelocity(J / m, node) before the step that "
+                                "starts at its time")});
     s.push_back({"nodes", S("a node per body, mass the body's, anchors mass 0; bodies are "
                             "points (no shape, no spin)")});
     return s;
@@ -147,14 +163,16 @@ class SoftBodySimulation : public Simulation {
   btSoftRigidDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &configuration_};
   std::unique_ptr<btSoftBody> body_;
   double kLST_min_ = 0.0, kLST_max_ = 0.0;
+  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
+  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
 };
 
 class SoftBodyBackend : public Backend {
  public:
   std::string name() const override { return "bullet-softbody"; }
-  /// Points on springs under gravity: no contacts, no spin, no air, no impulses.
+  /// Points on springs under gravity, pushed by impulses: no contacts, no spin, no air.
   FeatureSet supports() const override {
-    return {Feature::ThreeD, Feature::Gravity, Feature::Springs};
+    return {Feature::ThreeD, Feature::Gravity, Feature::Springs, Feature::Impulse};
   }
   FeatureSet needs() const override { return {Feature::Springs}; }
   std::pair<std::string, std::string> library_version() const override {
