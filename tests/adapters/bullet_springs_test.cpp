@@ -158,6 +158,40 @@ TEST(BulletSprings, TheStiffSpringIsLimitedInTheJointNotByHand) {
   }
 }
 
+/// spring_pair's text with its spring's stiffness and the engine keys replaced.
+Scene spring_pair_with(const std::string& stiffness, const std::string& engine_keys) {
+  std::ifstream file(test::source_path("cases/spring_pair.toml"));
+  std::stringstream text;
+  text << file.rdbuf();
+  std::string toml = text.str();
+  const std::string k = "stiffness = 100.0";
+  toml.replace(toml.find(k), k.size(), "stiffness = " + stiffness);
+  return test::scene_from(toml + engine_keys);
+}
+
+// (b) The issue's numbers at 1/60 s: k = 1e4 N/m (w dt = 2.36, past semi-implicit Euler's
+// limit of 2) swings sqrt(1e4 / 112.5) = 9.43 times too slowly with the limit, and blows up
+// without it, as the hand force does.
+TEST(BulletSprings, AtTenThousandTheLimitHoldsWhatWouldExplode) {
+  const Backend* b = engine("bullet");
+  if (b == nullptr) GTEST_SKIP() << "bullet was not built";
+  const Scene limited = spring_pair_with("1.0e4", "");
+  const RunRecord run = run_accuracy(*b, limited, limited.report_dt);
+  ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+  const std::optional<double> period = observable(limited, run, "period");
+  ASSERT_TRUE(period);
+  const double ratio = *period / two_mass_period(1e4);
+  std::printf("bullet, k = 1e4 at 1/60 s: period %.4f s, %.3f times 2 pi sqrt(mu/k)\n", *period,
+              ratio);
+  EXPECT_NEAR(ratio, std::sqrt(1e4 / 112.5), 0.05 * std::sqrt(1e4 / 112.5));
+  const Scene unlimited =
+      spring_pair_with("1.0e4", "\n[engines.bullet]\nspring_limit_if_needed = false\n");
+  EXPECT_EQ(run_accuracy(*b, unlimited, unlimited.report_dt).status, RunStatus::Diverged);
+  if (const Backend* force = engine("bullet/force")) {
+    EXPECT_EQ(run_accuracy(*force, limited, limited.report_dt).status, RunStatus::Diverged);
+  }
+}
+
 // (b) The stiffness the joint used, read from the first step's velocity change
 // (k' stretch dt / m), is the one engine_settings names.
 TEST(BulletSprings, TheFirstStepShowsTheStiffnessTheSettingsName) {
@@ -226,6 +260,55 @@ TEST(BulletSprings, TheLimitCanBeTurnedOff) {
   EXPECT_EQ(number_setting(run.engine_settings, "spring_stiffness_used_max"), 1e5);
 }
 
+// A mass on a spring to an anchor, sent across the spring at 1 m/s without gravity.
+const char* kAcross = R"(name = "across"
+dims = 2
+duration = 1.0
+sample = 0.0166666666666666667
+dt = [0.0166666666666666667]
+report_dt = 0.0166666666666666667
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "anchor"
+shape = "point"
+mass = 1.0
+fixed = true
+position = [0.0, 0.0, 0.0]
+[[body]]
+name = "mass"
+shape = "point"
+mass = 1.0
+position = [1.0, 0.0, 0.0]
+velocity = [0.0, 1.0, 0.0]
+[[spring]]
+bodies = ["anchor", "mass"]
+stiffness = 100.0
+rest_length = 1.0
+)";
+
+// What the settings' spring_axis says: the joint's spring keeps its starting direction, so
+// motion across it stretches nothing (the mass drifts to 1.41 m from the anchor at rest
+// length 1), while the hand force pulls along the line between the bodies.
+TEST(BulletSprings, TheJointsSpringKeepsItsStartingDirection) {
+  const Scene scene = test::scene_from(kAcross);
+  if (const Backend* b = engine("bullet")) {
+    const RunRecord run = run_accuracy(*b, scene, scene.report_dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+    const Vec3 end = run.trajectory.states.back()[1].position;
+    std::printf("bullet: the mass ends at (%.4f, %.4f) m, %.4f m from the anchor\n", end.x(),
+                end.y(), end.norm());
+    EXPECT_NEAR(end.x(), 1.0, 1e-9);
+    EXPECT_NEAR(end.y(), 1.0, 1e-9);
+  }
+  if (const Backend* b = engine("bullet/force")) {
+    const RunRecord run = run_accuracy(*b, scene, scene.report_dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+    const Vec3 end = run.trajectory.states.back()[1].position;
+    std::printf("bullet/force: the mass ends %.4f m from the anchor\n", end.norm());
+    EXPECT_LT(end.norm(), 1.2);
+  }
+}
+
 bool has_backend(const BackendSet& set, const std::string& name) {
   for (const Backend* b : set.all)
     if (b->name() == name) return true;
@@ -291,6 +374,45 @@ TEST(BulletSprings, TheSoftBodyRunsTheSheets) {
     std::printf("bullet-softbody on %s: max_stretch %.4g\n", name, *stretch);
     EXPECT_TRUE(std::isfinite(*stretch)) << name;
   }
+}
+
+// The link stiffness mapping: one projection of a lone link is a backward-Euler step of
+// the case's spring, so the pair swings with backward Euler's period, 2 pi dt / atan(w dt)
+// (1.8% long at 1/60 s), and loses amplitude by 1 / sqrt(1 + (w dt)^2) every step.
+TEST(BulletSprings, TheSoftBodyLinkIsBackwardEulerOfTheCasesSpring) {
+  const Backend* b = engine("bullet-softbody");
+  if (b == nullptr) GTEST_SKIP() << "bullet-softbody was not built";
+  const Scene scene = spring_case("spring_pair");
+  const double dt = scene.report_dt, w = std::sqrt(100.0 / 0.5);
+  const RunRecord run = run_accuracy(*b, scene, dt);
+  ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+  const std::optional<double> period = observable(scene, run, "period");
+  ASSERT_TRUE(period);
+  const double expected = 2.0 * M_PI * dt / std::atan(w * dt);
+  std::printf("bullet-softbody at 1/60 s: period %.5f s, backward Euler %.5f s, exact %.5f s\n",
+              *period, expected, two_mass_period(100.0));
+  // The crossing times' scatter, as in (a); PBD's length-squared error adds (0.1 / 1)^2.
+  EXPECT_NEAR(*period, expected, 0.01 * expected);
+  // After 1 s (60 steps) the amplitude is down to (1 + (w dt)^2)^-30 = 0.2 of 0.1 m; the
+  // first swing of the second second peaks within half a period (13.6 steps) of that.
+  State end(2);
+  auto sim = b->start(scene, dt);
+  for (int k = 0; k < 60; ++k) sim->step();
+  double largest = 0.0;
+  for (int k = 0; k < 60; ++k) {
+    sim->step();
+    sim->read(end);
+    largest = std::max(largest, std::abs((end[1].position - end[0].position).norm() - 1.0));
+  }
+  const double per_step = 1.0 / std::sqrt(1.0 + w * w * dt * dt);
+  const double at_one_second = 0.1 * std::pow(per_step, 60.0);
+  const double half_period_later = at_one_second * std::pow(per_step, expected / (2.0 * dt));
+  std::printf(
+      "bullet-softbody: largest stretch in the second second %.4f m (backward Euler "
+      "%.4f m to %.4f m)\n",
+      largest, half_period_later, at_one_second);
+  EXPECT_LT(largest, 1.01 * at_one_second);
+  EXPECT_GT(largest, 0.99 * half_period_later);
 }
 
 // The soft body refuses what it cannot hold: contacts.
