@@ -24,7 +24,7 @@ struct SpringRow {
 };
 
 /// Bullet 3.24's rule (btGeneric6DofSpring2Constraint.cpp, get_limit_motor_info2, lines
-/// 839-860): with limitIfNeeded, a spring whose sqrt(k / m) dt exceeds 0.25 gets
+/// 836-860): with limitIfNeeded, a spring whose sqrt(k / m) dt exceeds 0.25 gets
 /// k = m / (16 dt^2), and one whose c dt exceeds m gets c = m / dt, where m is the pair's
 /// reduced mass, or the moving body's mass when the other is static (mass 0 here).
 SpringRow bullet_spring_row(double stiffness, double damping, double mass_a, double mass_b,
