@@ -1,5 +1,7 @@
-// Bullet as a backend. Built twice from this file: against Bullet's double-precision
-// libraries (backend "bullet") and its single-precision ones ("bullet-float").
+// Bullet as a backend. Built three times from this file: against Bullet's double-precision
+// libraries (backend "bullet") and its single-precision ones ("bullet-float"), both with
+// springs as Bullet's own constraints, and with BB_BULLET_SPRINGS_BY_HAND ("bullet/force"),
+// springs applied as forces before each step instead.
 #include <btBulletDynamicsCommon.h>
 
 #include <cmath>
@@ -9,13 +11,27 @@
 #include "../point_body.hpp"
 #include "bullet_contacts.hpp"
 #include "bullet_settings.hpp"
+#include "bullet_springs.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
 
+#ifndef BB_BULLET_SPRINGS_BY_HAND
+#define BB_BULLET_SPRINGS_BY_HAND 0
+#endif
+
 namespace bb {
 
 namespace {
+
+/// Whether this build applies the springs by hand (bullet/force) instead of as joints.
+constexpr bool kSpringsByHand = BB_BULLET_SPRINGS_BY_HAND != 0;
+
+/// How bullet/force applies the springs, for engine_settings.
+constexpr const char* kSpringsByHandMethod =
+    "applied by hand: before each step k (l - L) + c (v_b - v_a).u from the engine's own "
+    "state (external_forces), btRigidBody::applyCentralForce; no constraint, so no stiffness "
+    "limit; anchored particles static (mass 0)";
 
 btVector3 to_bt(const Vec3& v) {
   return {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())};
@@ -46,8 +62,11 @@ class BulletSimulation : public Simulation {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
       add_body(scene.bodies[i], static_cast<int>(i));
     if (scene.ground) add_ground(*scene.ground);
+    if (!kSpringsByHand && !scene.springs.empty())
+      joints_ = std::make_unique<BulletSpringJoints>(scene, dt, bodies_, world_);
   }
   ~BulletSimulation() override {
+    joints_.reset();
     for (auto& body : bodies_) world_.removeRigidBody(body.get());
     if (ground_) world_.removeRigidBody(ground_.get());
   }
@@ -59,10 +78,11 @@ class BulletSimulation : public Simulation {
          ++next_impulse_)
       push(scene_.impulses[next_impulse_]);
     ++steps_;
-    // The harness's forces from the engine's own current state, as a game would add them.
-    if (has_external_forces(scene_)) {
+    // The harness's forces from the engine's own current state, as a game would add them;
+    // in bullet/force the springs too.
+    if (has_external_forces(scene_) || (kSpringsByHand && !network_.empty())) {
       read(state_);
-      external_forces(scene_, state_, forces_);
+      external_forces(scene_, state_, forces_, kSpringsByHand ? &network_ : nullptr);
       for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (!scene_.bodies[i].fixed) bodies_[i]->applyCentralForce(to_bt(forces_[i]));
     }
@@ -88,6 +108,13 @@ class BulletSimulation : public Simulation {
         {"precision", sizeof(btScalar) == 8 ? std::string("double") : std::string("float")});
     s.push_back({"step", std::string("stepSimulation(dt, 1, dt): one fixed substep")});
     s.push_back({"sleeping", false});
+    s.push_back({"deactivation",
+                 std::string("setActivationState(DISABLE_DEACTIVATION) on every body; with "
+                             "Bullet's default a body slower than 0.8 m/s and 1 rad/s for 2 s "
+                             "(gDeactivationTime) would freeze, a slow oscillator with it")});
+    if (joints_) joints_->add_settings(s);
+    if (kSpringsByHand && !network_.empty())
+      s.push_back({"springs", std::string(kSpringsByHandMethod)});
     if (contacts_)
       add_contact_settings(scene_, world_.getSolverInfo(), shape_figures_, s);
     else
@@ -188,6 +215,8 @@ class BulletSimulation : public Simulation {
   std::unique_ptr<btCollisionShape> ground_shape_;
   std::unique_ptr<btRigidBody> ground_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;
+  std::unique_ptr<BulletSpringJoints> joints_;  ///< the springs as constraints, or none
+  SpringNetwork network_ = kSpringsByHand ? spring_network(scene_) : SpringNetwork{};
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
   long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
@@ -198,9 +227,12 @@ class BulletBackend : public Backend {
  public:
   std::string name() const override { return BB_BULLET_NAME; }
   FeatureSet supports() const override {
-    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,   Feature::Magnus,
-            Feature::Wind,        Feature::Rotation,    Feature::Boxes,  Feature::GroundContact,
-            Feature::BodyContact, Feature::Restitution, Feature::Impulse};
+    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
+            Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
+            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs};
+  }
+  FeatureSet needs() const override {
+    return kSpringsByHand ? FeatureSet{Feature::Springs} : FeatureSet{};
   }
   std::pair<std::string, std::string> library_version() const override {
     const int v = btGetVersion();

@@ -1,5 +1,7 @@
-// Bullet as the harness knows it: one settings table, two backends (double and single
-// precision builds of the same adapter), and its keys with their defaults.
+// Bullet as the harness knows it: one settings table, four backends (double and single
+// precision builds of the same adapter with springs as Bullet's constraints, the double
+// build with springs applied by hand, and a soft body of the spring scenes), and its keys
+// with their defaults.
 #pragma once
 
 #include "scene/engine_catalogue.hpp"
@@ -9,7 +11,7 @@ namespace bb {
 inline EngineDescription bullet_engine() {
   const std::string e = "bullet";
   return {e,
-          {"bullet", "bullet-float"},
+          {"bullet", "bullet-float", "bullet/force", "bullet-softbody"},
           {{e, "solver_iterations", KeyKind::Integer, 10, "sequential-impulse iterations"},
            {e, "erp", KeyKind::Number, 0.2, "error reduction per step, joints (m_erp)"},
            {e, "contact_erp", KeyKind::Number, 0.2,
@@ -25,7 +27,13 @@ inline EngineDescription bullet_engine() {
            {e, "ccd", KeyKind::Boolean, 0,
             "continuous collision detection: swept sphere, motion threshold the inner radius"},
            {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
-           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"}}};
+           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"},
+           {e, "spring_limit_if_needed", KeyKind::Boolean, 1,
+            "btGeneric6DofSpring2Constraint's limitIfNeeded: stiffness and damping cut to "
+            "what the step can hold (Bullet's default)"}},
+          true,
+          {{"bullet/force", FeatureSet{Feature::Springs}},
+           {"bullet-softbody", FeatureSet{Feature::Springs}}}};
 }
 
 }  // namespace bb
