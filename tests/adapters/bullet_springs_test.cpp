@@ -12,37 +12,17 @@
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
 #include "scene/engine_catalogue.hpp"
+#include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-const Registry& registry() {
-  static const Registry r = Registry::load();
-  return r;
-}
-
-const Backend* engine(const std::string& name) {
-  for (const Backend* b : registry().engines())
-    if (b->name() == name) return b;
-  return nullptr;
-}
-
-const SettingValue* setting(const Settings& settings, const std::string& key) {
-  for (const auto& [k, v] : settings)
-    if (k == key) return &v;
-  return nullptr;
-}
-
-std::string text_setting(const Settings& settings, const std::string& key) {
-  const SettingValue* v = setting(settings, key);
-  return v && std::holds_alternative<std::string>(*v) ? std::get<std::string>(*v) : "";
-}
-
-double number_setting(const Settings& settings, const std::string& key) {
-  const SettingValue* v = setting(settings, key);
-  return v && std::holds_alternative<double>(*v) ? std::get<double>(*v) : std::nan("");
-}
+using test::engine;
+using test::number_setting;
+using test::registry;
+using test::setting;
+using test::text_setting;
 
 Scene spring_case(const std::string& name) {
   return load_case(test::source_path("cases/" + name + ".toml"));
