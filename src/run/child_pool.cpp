@@ -58,6 +58,7 @@ std::string with_console(std::string reason, const std::string& console) {
   return printed.empty() ? reason : reason + "; it printed: " + printed;
 }
 
+#ifndef BB_UNDER_ASAN
 /// This process's address space now (bytes), from /proc/self/statm; 0 if unreadable.
 long address_space_bytes() {
   long pages = 0;
@@ -67,6 +68,7 @@ long address_space_bytes() {
   }
   return pages * sysconf(_SC_PAGESIZE);
 }
+#endif
 
 /// Runs in the child: the work, its bytes to `result_fd`, then out without cleanup.
 [[noreturn]] void child_main(const ChildPool::Work& work, int result_fd, int console_fd) {
