@@ -1,6 +1,9 @@
-// Box2D 2.4 as a backend: 2D scenes only, single precision.
+// Box2D 2.4 as a backend: 2D scenes only, single precision. Built twice: `box2d`, whose
+// springs are distance joints with stiffness and damping, and `box2d/force`
+// (BB_BOX2D_SPRINGS_BY_HAND), whose springs are forces added before each step.
 #include <box2d/box2d.h>
 
+#include <cfloat>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -10,6 +13,7 @@
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
+#include "scene/spring_forces.hpp"
 
 namespace bb {
 
@@ -53,6 +57,11 @@ class Box2dSimulation : public Simulation {
         b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z())};
         bodies_[i]->SetMassData(&mass);
       }
+#ifdef BB_BOX2D_SPRINGS_BY_HAND
+    springs_ = spring_network(scene);
+#else
+    make_spring_joints();
+#endif
   }
 
   void step() override {
@@ -63,9 +72,9 @@ class Box2dSimulation : public Simulation {
       push(scene_.impulses[next_impulse_]);
     ++steps_;
     // The harness's forces from the engine's own current state, as a game would add them.
-    if (has_external_forces(scene_)) {
+    if (has_external_forces(scene_) || !springs_.empty()) {
       read(state_);
-      external_forces(scene_, state_, forces_);
+      external_forces(scene_, state_, forces_, springs_.empty() ? nullptr : &springs_);
       for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (!scene_.bodies[i].fixed) bodies_[i]->ApplyForceToCenter(to_b2(forces_[i]), true);
     }
@@ -91,6 +100,22 @@ class Box2dSimulation : public Simulation {
       add_contact_settings(scene_, *contacts_, s);
     else
       s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
+    if (!scene_.springs.empty()) {
+#ifdef BB_BOX2D_SPRINGS_BY_HAND
+      s.push_back({"springs", std::string("force k (l - L) + c (v_b - v_a).u along each spring, "
+                                          "added with b2Body::ApplyForceToCenter before each "
+                                          "step")});
+#else
+      s.push_back(
+          {"springs", std::string("a distance joint (b2DistanceJointDef) per spring between the "
+                                  "bodies' centres: length = the rest length, stiffness = k N/m, "
+                                  "damping = c N s/m, minLength 0 and maxLength FLT_MAX so no "
+                                  "limit acts; Box2D solves it as a soft constraint (implicit in "
+                                  "the spring), in float")});
+      s.push_back({"spring_stiffness_first", double(first_stiffness_)});
+#endif
+      s.push_back({"spring_bodies_collide", false});
+    }
     if (!scene_.impulses.empty())
       s.push_back({"impulse", std::string("b2Body::ApplyLinearImpulse(J, point, true) before "
                                           "the step that starts at the impulse's time: J's x "
@@ -104,6 +129,26 @@ class Box2dSimulation : public Simulation {
  private:
   static bool has_contacts(const Scene& scene) {
     return scene.ground.has_value() || !scene.contacts.empty();
+  }
+
+  /// Each spring as Box2D's distance joint with its own stiffness and damping (Box2D 2.4
+  /// takes them in N/m and N s/m), free of its length limits.
+  void make_spring_joints() {
+    for (const Spring& spring : scene_.springs) {
+      b2DistanceJointDef def;
+      def.bodyA = bodies_[static_cast<std::size_t>(spring.body_a)];
+      def.bodyB = bodies_[static_cast<std::size_t>(spring.body_b)];
+      def.localAnchorA.SetZero();
+      def.localAnchorB.SetZero();
+      def.length = float(spring.rest_length);
+      def.minLength = 0.0f;
+      def.maxLength = FLT_MAX;
+      def.stiffness = float(spring.stiffness);
+      def.damping = float(spring.damping);
+      def.collideConnected = false;
+      world_.CreateJoint(&def);
+      if (first_stiffness_ == 0.0f) first_stiffness_ = def.stiffness;
+    }
   }
 
   void push(const Impulse& imp) {
@@ -126,16 +171,25 @@ class Box2dSimulation : public Simulation {
   std::size_t next_impulse_ = 0;       ///< the first impulse not applied yet
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
+  SpringNetwork springs_;         ///< springs added by hand (box2d/force); empty otherwise
+  float first_stiffness_ = 0.0f;  ///< the first joint's stiffness as Box2D holds it
 };
 
 class Box2dBackend : public Backend {
  public:
-  std::string name() const override { return "box2d"; }
+  std::string name() const override { return BB_BOX2D_NAME; }
   FeatureSet supports() const override {
-    return {Feature::Gravity,     Feature::Drag,   Feature::Magnus,        Feature::Wind,
-            Feature::Rotation,    Feature::Boxes,  Feature::GroundContact, Feature::BodyContact,
-            Feature::Restitution, Feature::Impulse};
+    return {Feature::Gravity,     Feature::Drag,    Feature::Magnus,        Feature::Wind,
+            Feature::Rotation,    Feature::Boxes,   Feature::GroundContact, Feature::BodyContact,
+            Feature::Restitution, Feature::Impulse, Feature::Springs};
   }
+#ifdef BB_BOX2D_SPRINGS_BY_HAND
+  /// The same engine as `box2d` wherever the scene has no springs: it takes part only
+  /// where it has.
+  FeatureSet needs() const override {
+    return {Feature::Springs};
+  }
+#endif
   std::pair<std::string, std::string> library_version() const override {
     const std::string header = std::to_string(b2_version.major) + "." +
                                std::to_string(b2_version.minor) + "." +

@@ -1,4 +1,5 @@
-// Box2D as the harness knows it: one backend, its settings keys and their defaults.
+// Box2D as the harness knows it: `box2d` (springs as distance joints) and `box2d/force`
+// (springs added by hand, on spring scenes only), its settings keys and their defaults.
 #pragma once
 
 #include "scene/engine_catalogue.hpp"
@@ -8,7 +9,7 @@ namespace bb {
 inline EngineDescription box2d_engine() {
   const std::string e = "box2d";
   return {e,
-          {"box2d"},
+          {"box2d", "box2d/force"},
           {{e, "velocity_iterations", KeyKind::Integer, 8, "velocity solver iterations"},
            {e, "position_iterations", KeyKind::Integer, 3, "position solver iterations"},
            {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
@@ -18,7 +19,9 @@ inline EngineDescription box2d_engine() {
             "(b2FixtureDef::restitutionThreshold; Box2D's default)"},
            {e, "bullet", KeyKind::Boolean, 0.0,
             "continuous collision between moving bodies (b2BodyDef::bullet; Box2D's default "
-            "is off)"}}};
+            "is off)"}},
+          true,
+          {{"box2d/force", {Feature::Springs}}}};
 }
 
 }  // namespace bb
