@@ -16,7 +16,7 @@
 #include <fstream>
 
 #include "report/work_precision.hpp"
-#include "scene/motion.hpp"
+#include "run/run_summary.hpp"
 
 namespace bb {
 
@@ -206,7 +206,7 @@ std::string series_rows(const std::vector<double>& times, const std::vector<doub
 std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
   const Scene& scene = *results.scene;
   const auto runs = report_runs(results);
-  const std::size_t shown = std::min<std::size_t>(scene.bodies.size(), 6);
+  const std::size_t shown = std::min(scene.bodies.size(), kPlottedBodies);
   // One legend, beside the first panel; every panel keeps the same right margin to line up.
   std::string data,
       script = fmt::format(
@@ -247,13 +247,11 @@ std::string energy_plot(const CaseResults& results, FileBatch& batch, const std:
   std::string data, plot;
   int block = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const Trajectory& t = runs[i]->trajectory;
-    if (t.states.empty()) continue;
-    data += "# " + runs[i]->backend + "\n";
-    std::vector<double> energy;
-    for (const State& s : t.states) energy.push_back(total_energy(scene, s));
-    data += series_rows(t.times, energy) + "\n\n";
-    plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
+    // Each run's energy at every sample, measured where the run was (run_summary.hpp).
+    const RunRecord& run = *runs[i];
+    if (run.energy.empty()) continue;
+    data += "# " + run.backend + "\n" + series_rows(run.trajectory.times, run.energy) + "\n\n";
+    plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, run.backend);
   }
   const std::string script = fmt::format(
       "set grid\nset key outside right top\nset xlabel \"t (s)\"\n"
@@ -272,20 +270,18 @@ std::string error_plot(const CaseResults& results, FileBatch& batch, const std::
   std::string data, plot;
   int block = 0;
   for (std::size_t i = 1; i < runs.size(); ++i) {
-    const Trajectory& t = runs[i]->trajectory;
+    // Measured in the run's child against the reference (run_summary.hpp).
+    const RunRecord& run = *runs[i];
     std::vector<double> times, distance;
-    for (std::size_t j = 0; j < t.states.size() && j < reference.states.size(); ++j) {
-      double worst = 0.0;
-      for (std::size_t b = 0; b < t.states[j].size(); ++b)
-        worst = std::max(worst, (t.states[j][b].position - reference.states[j][b].position).norm());
+    for (std::size_t j = 0; j < run.distance.size() && j < run.trajectory.times.size(); ++j) {
       // A log axis cannot show 0: such points are left out.
-      if (worst <= 0.0) continue;
-      times.push_back(t.times[j]);
-      distance.push_back(worst);
+      if (run.distance[j] <= 0.0) continue;
+      times.push_back(run.trajectory.times[j]);
+      distance.push_back(run.distance[j]);
     }
     if (distance.empty()) continue;
-    data += "# " + runs[i]->backend + "\n" + series_rows(times, distance) + "\n\n";
-    plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
+    data += "# " + run.backend + "\n" + series_rows(times, distance) + "\n\n";
+    plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, run.backend);
   }
   if (plot.empty()) return "no backend has a trajectory to compare with the reference";
   const std::string script = fmt::format(

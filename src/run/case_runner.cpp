@@ -7,6 +7,7 @@
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
 #include "run/gates.hpp"
+#include "run/run_summary.hpp"
 #include "run/wire.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
@@ -44,22 +45,6 @@ void check_backend_names(const Scene& scene, const RunOptions& options) {
       throw CaseError(scene.file, 0,
                       "--backends names '" + name +
                           "', which this case does not run; it runs: " + joined(known));
-}
-
-void add_observables(const Scene& scene, RunRecord& run, const RunRecord& reference) {
-  for (const Observe& o : scene.observes) {
-    ObservableResult r{o.name, {}, std::nullopt};
-    if (run.status == RunStatus::Ok)
-      r.measured = measure(scene, o, run.trajectory);
-    else
-      r.measured.note = "run " + status_name(run.status);
-    // A kind with a formula (terminal_velocity) is compared with the formula's value.
-    if (const auto formula = formula_value(scene, o))
-      r.reference = formula;
-    else if (reference.status == RunStatus::Ok)
-      r.reference = measure(scene, o, reference.trajectory).value;
-    run.observables.push_back(r);
-  }
 }
 
 /// Per backend, its ok run at the smallest dt: the fallback reference of DESIGN.md.
@@ -176,26 +161,39 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
 
   // Accuracy runs, each in its own child process: the reference, its self-check (100 times
   // tighter with smaller steps forced) to measure the reference's own error, then every job.
+  // The jobs start once the reference is back: each child inherits it at fork and measures
+  // its own run against it, so only summaries and what the page plots come back.
   const ReferenceBackend& reference = registry.reference();
   const ReferenceBackend tighter = reference.self_check();
   RunRecord tight;
   out.runs.resize(jobs.size());
   ChildPool pool(options.jobs, options.isolation);
   const auto submit = [&](const Backend& b, double dt, RunRecord& slot,
-                          std::optional<double> shown_dt) {
+                          std::optional<double> shown_dt, const RunRecord* against,
+                          std::function<void()> then) {
     const std::string what = label(b.name(), shown_dt);
     pool.submit(
-        what, [&b, &scene, dt] { return wire::encode(run_accuracy(b, scene, dt)); },
+        what,
+        [&b, &scene, dt, against] {
+          RunRecord run = run_accuracy(b, scene, dt);
+          if (against) summarise_in_child(scene, run, *against);
+          return wire::encode(run);
+        },
         time_limit(scene, dt, options.timeout),
-        [&slot, &b, shown_dt, what, &progress](const ChildOutcome& o) {
+        [&slot, &b, shown_dt, what, &progress, then](const ChildOutcome& o) {
           slot = record_from(o, b.name(), shown_dt);
           progress(what);
+          if (then) then();
         });
   };
-  submit(reference, scene.sample, out.reference_run, std::nullopt);
-  submit(tighter, scene.sample, tight, std::nullopt);
-  for (std::size_t i = 0; i < jobs.size(); ++i)
-    submit(*jobs[i].first, jobs[i].second, out.runs[i], jobs[i].second);
+  submit(reference, scene.sample, out.reference_run, std::nullopt, nullptr, [&] {
+    // Without an ok reference each run comes back whole, for DESIGN.md's fallback below.
+    const RunRecord* against =
+        out.reference_run.status == RunStatus::Ok ? &out.reference_run : nullptr;
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+      submit(*jobs[i].first, jobs[i].second, out.runs[i], jobs[i].second, against, nullptr);
+  });
+  submit(tighter, scene.sample, tight, std::nullopt, nullptr, nullptr);
   pool.run();
   out.reference_run.dt.reset();
   tight.dt.reset();
@@ -212,6 +210,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   }
   out.versions[reference.library_version().first] = reference.library_version().second;
   add_observables(scene, out.reference_run, out.reference_run);
+  add_series(scene, out.reference_run, nullptr);
   // Engines that were not built still get a row, so a reader sees why they are absent.
   for (const Registry::Missing& missing : registry.missing_engines()) {
     const std::string& name = missing.name;
@@ -239,6 +238,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
                            "); each backend's errors are against its own run at the finest dt "
                            "of the sweep (self-consistency: convergence, not accuracy)";
   for (RunRecord& run : out.runs) {
+    if (run.summarised) continue;
     const auto own = finest.find(run.backend);
     const RunRecord* against = !fallback             ? &out.reference_run
                                : own != finest.end() ? own->second
@@ -247,6 +247,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
         against->status == RunStatus::Ok)
       run.errors = compare(scene, run.trajectory, against->trajectory);
     add_observables(scene, run, against ? *against : out.reference_run);
+    if (fallback) add_series(scene, run, nullptr);
   }
 
   // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
@@ -274,6 +275,10 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     if (fit.slope) out.order[name] = *fit.slope;
     out.order_points[name] = {fit.used, fit.below_floor};
   }
+
+  // The fallback's whole trajectories are done with: keep what the page draws.
+  if (fallback)
+    for (RunRecord& run : out.runs) keep_plotted_states(scene, run);
 
   out.gates = evaluate_gates(scene, out);
   return out;

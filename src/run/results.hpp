@@ -41,8 +41,14 @@ struct RunRecord {
   std::optional<ErrorMetrics> errors;
   std::vector<ObservableResult> observables;
   Settings engine_settings;
-  std::string messages;   ///< what the engine printed during an ok run, if anything
-  Trajectory trajectory;  ///< kept in memory for metrics and plots; not written to JSON
+  std::string messages;  ///< what the engine printed during an ok run, if anything
+  /// What the page plots, not written to JSON: at report_dt the first few bodies' states
+  /// (run_summary.hpp), elsewhere times and events only, unless the errors are measured in
+  /// the parent (the reference's own run, and DESIGN.md's fallback).
+  Trajectory trajectory;
+  std::vector<double> energy;    ///< total energy at each sample time (J)
+  std::vector<double> distance;  ///< largest position distance from the reference (m)
+  bool summarised = false;       ///< errors, observables and series measured in the child
 };
 
 struct ReferenceInfo {

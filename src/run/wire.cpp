@@ -133,17 +133,33 @@ std::string encode(const RunRecord& run) {
     if (const auto* s = std::get_if<std::string>(&value)) w.text(*s);
   }
   const Trajectory& t = run.trajectory;
-  w.raw<std::uint64_t>(t.times.size());
+  // Times, then the states kept (none, or a few bodies', or all of them).
+  put(w, t.times);
+  w.raw<std::uint64_t>(t.states.size());
   w.raw<std::uint64_t>(t.states.empty() ? 0 : t.states.front().size());
-  for (std::size_t j = 0; j < t.times.size(); ++j) {
-    w.raw(t.times[j]);
-    for (const BodyState& b : t.states[j]) {
+  for (const State& state : t.states)
+    for (const BodyState& b : state) {
       put(w, b.position), put(w, b.velocity), put(w, b.angular_velocity);
       w.raw(b.orientation.w()), w.raw(b.orientation.x()), w.raw(b.orientation.y()),
           w.raw(b.orientation.z());
     }
-  }
   put(w, t.events);
+  // What the child measured against the reference, if it did.
+  w.raw<char>(run.errors.has_value());
+  if (const auto& e = run.errors) {
+    w.raw(e->position_max), w.raw(e->position_rms), w.raw(e->position_final);
+    w.raw(e->velocity_max), w.raw(e->energy_max);
+  }
+  w.raw<std::uint64_t>(run.observables.size());
+  for (const ObservableResult& o : run.observables) {
+    w.text(o.name);
+    w.maybe(o.measured.value);
+    w.text(o.measured.note);
+    w.maybe(o.reference);
+  }
+  put(w, run.energy);
+  put(w, run.distance);
+  w.raw<char>(run.summarised);
   return w.take();
 }
 
@@ -164,10 +180,10 @@ RunRecord decode_run(const std::string& bytes) {
     if (kind == 1) run.engine_settings.push_back({key, r.raw<char>() != 0});
     if (kind == 2) run.engine_settings.push_back({key, r.text()});
   }
+  run.trajectory.times = get_values(r);
   const auto samples = r.raw<std::uint64_t>();
   const auto bodies = r.raw<std::uint64_t>();
   for (std::uint64_t j = 0; j < samples; ++j) {
-    run.trajectory.times.push_back(r.raw<double>());
     State state(bodies);
     for (BodyState& b : state) {
       b.position = get_vec(r), b.velocity = get_vec(r), b.angular_velocity = get_vec(r);
@@ -178,6 +194,23 @@ RunRecord decode_run(const std::string& bytes) {
     run.trajectory.states.push_back(std::move(state));
   }
   run.trajectory.events = get_events(r);
+  if (r.raw<char>()) {
+    ErrorMetrics e;
+    e.position_max = r.raw<double>(), e.position_rms = r.raw<double>();
+    e.position_final = r.raw<double>(), e.velocity_max = r.raw<double>();
+    e.energy_max = r.raw<double>();
+    run.errors = e;
+  }
+  run.observables.resize(r.raw<std::uint64_t>());
+  for (ObservableResult& o : run.observables) {
+    o.name = r.text();
+    o.measured.value = r.maybe();
+    o.measured.note = r.text();
+    o.reference = r.maybe();
+  }
+  run.energy = get_values(r);
+  run.distance = get_values(r);
+  run.summarised = r.raw<char>() != 0;
   return run;
 }
 

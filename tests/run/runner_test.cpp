@@ -8,7 +8,9 @@
 #include "report/summary_tables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
+#include "run/run_summary.hpp"
 #include "scene/case_error.hpp"
+#include "scene/motion.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -180,8 +182,15 @@ max = 10.0
   for (int i = 0; i < 2; ++i) {
     const RunRecord& run = results.runs[i];
     ASSERT_TRUE(run.errors.has_value()) << *run.dt;
+    // Measured again here from the whole runs (the results keep only what the page plots).
+    const RunRecord whole = run_accuracy(
+        CourseBackend({"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"}),
+        scene, *run.dt);
+    const RunRecord whole_finest = run_accuracy(
+        CourseBackend({"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"}),
+        scene, *finest.dt);
     EXPECT_DOUBLE_EQ(run.errors->position_max,
-                     compare(scene, run.trajectory, finest.trajectory).position_max);
+                     compare(scene, whole.trajectory, whole_finest.trajectory).position_max);
     EXPECT_GT(run.errors->position_max, 0.0);
   }
   EXPECT_NE(run_notes(results, scene.report_dt).front().find("finest dt"), std::string::npos);
@@ -212,12 +221,6 @@ TEST(Runner, ACaseWrittenFromTheDesignAloneRuns) {
   EXPECT_TRUE(results.runs.front().errors.has_value());
 }
 
-}  // namespace
-}  // namespace bb
-
-namespace bb {
-namespace {
-
 /// A second way of building the same physics that only differs where a scene has springs.
 class SpringsByHandBackend : public FaultyBackend {
  public:
@@ -242,6 +245,52 @@ TEST(Runner, AVariantThatNeedsSpringsTakesPartOnlyInSpringScenes) {
   EXPECT_EQ(std::count(without.begin(), without.end(), "faulty/force"), 0);
   EXPECT_EQ(std::count(with.begin(), with.end(), "faulty/force"), 1);
   EXPECT_EQ(plugin_file_name("box2d/force"), "beachball-box2d-force.so");
+}
+
+// Every child measures its own run against the reference it inherits at fork and brings
+// back the summaries: the errors and observables are those of the whole run, while only the
+// report_dt run keeps states, and only of the bodies the page plots.
+TEST(Runner, EachChildMeasuresItsRunAndBringsBackOnlyWhatThePagePlots) {
+  const Scene scene = load_case(test::source_path("cases/sproing_2d.toml"));
+  ASSERT_GT(scene.bodies.size(), kPlottedBodies);
+  RunOptions options;
+  options.cost = false;
+  options.backends = {"course/semi-implicit-euler"};
+  options.dts = {scene.report_dt, scene.dt.back()};
+  const CaseResults results = run_case(scene, Registry::load(), options);
+  ASSERT_EQ(results.reference_run.status, RunStatus::Ok);
+  ASSERT_EQ(results.reference_run.trajectory.states.front().size(), scene.bodies.size());
+  ASSERT_EQ(results.runs.size(), 2u);
+  const CourseBackend backend(
+      {"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"});
+  const std::size_t samples = static_cast<std::size_t>(scene.sample_count()) + 1;
+  for (const RunRecord& run : results.runs) {
+    ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+    EXPECT_TRUE(run.summarised);
+    // The same run whole, in this process, measured here.
+    const RunRecord whole = run_accuracy(backend, scene, *run.dt);
+    const ErrorMetrics here = compare(scene, whole.trajectory, results.reference_run.trajectory);
+    ASSERT_TRUE(run.errors.has_value());
+    EXPECT_EQ(run.errors->position_max, here.position_max);
+    EXPECT_EQ(run.errors->energy_max, here.energy_max);
+    ASSERT_EQ(run.observables.size(), scene.observes.size());
+    for (std::size_t k = 0; k < scene.observes.size(); ++k)
+      EXPECT_EQ(run.observables[k].measured.value,
+                measure(scene, scene.observes[k], whole.trajectory).value)
+          << run.observables[k].name;
+    ASSERT_EQ(run.energy.size(), samples);
+    ASSERT_EQ(run.distance.size(), samples);
+    EXPECT_EQ(run.energy.back(), total_energy(scene, whole.trajectory.states.back()));
+    EXPECT_EQ(run.trajectory.times.size(), samples);
+    if (*run.dt == scene.report_dt) {
+      ASSERT_EQ(run.trajectory.states.size(), samples);
+      EXPECT_EQ(run.trajectory.states.back().size(), kPlottedBodies);
+      EXPECT_EQ(run.trajectory.states.back()[0].position,
+                whole.trajectory.states.back()[0].position);
+    } else {
+      EXPECT_TRUE(run.trajectory.states.empty());
+    }
+  }
 }
 
 }  // namespace

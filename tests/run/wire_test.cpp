@@ -1,0 +1,76 @@
+// What crosses the pipe from a child: a run record encoded and decoded is the same record,
+// including what the child measured (errors, observables, series) and trimmed states.
+#include "run/wire.hpp"
+
+#include <gtest/gtest.h>
+
+namespace bb {
+namespace {
+
+TEST(Wire, ARunRecordComesBackWhole) {
+  RunRecord run;
+  run.backend = "course/rk4";
+  run.dt = 0.01;
+  run.status = RunStatus::Diverged;
+  run.reason = "energy grew";
+  run.diverged_at = 2.5;
+  run.steps = 250;
+  run.engine_settings = {{"a", 1.5}, {"b", true}, {"c", std::string("text")}};
+  run.trajectory.times = {0.0, 0.1, 0.2};
+  // Times without states: a run at a dt the page does not plot.
+  run.errors = ErrorMetrics{1.0, 2.0, 3.0, 4.0, 5.0};
+  run.observables = {{"period/left", {0.44, ""}, 0.45}, {"sag", {std::nullopt, "why"}, {}}};
+  run.energy = {1.0, 0.9, 0.8};
+  run.distance = {0.0, 1e-3, 2e-3};
+  run.summarised = true;
+  run.trajectory.events.bodies.resize(1);
+  run.trajectory.events.bodies[0].contact_times = {0.05};
+  run.trajectory.events.max_stretch = 0.1;
+
+  const RunRecord back = wire::decode_run(wire::encode(run));
+  EXPECT_EQ(back.backend, run.backend);
+  EXPECT_EQ(back.dt, run.dt);
+  EXPECT_EQ(back.status, run.status);
+  EXPECT_EQ(back.reason, run.reason);
+  EXPECT_EQ(back.diverged_at, run.diverged_at);
+  EXPECT_EQ(back.steps, run.steps);
+  EXPECT_EQ(back.engine_settings, run.engine_settings);
+  EXPECT_EQ(back.trajectory.times, run.trajectory.times);
+  EXPECT_TRUE(back.trajectory.states.empty());
+  ASSERT_TRUE(back.errors.has_value());
+  EXPECT_EQ(back.errors->position_max, 1.0);
+  EXPECT_EQ(back.errors->position_rms, 2.0);
+  EXPECT_EQ(back.errors->position_final, 3.0);
+  EXPECT_EQ(back.errors->velocity_max, 4.0);
+  EXPECT_EQ(back.errors->energy_max, 5.0);
+  ASSERT_EQ(back.observables.size(), 2u);
+  EXPECT_EQ(back.observables[0].name, "period/left");
+  EXPECT_EQ(back.observables[0].measured.value, 0.44);
+  EXPECT_EQ(back.observables[0].reference, 0.45);
+  EXPECT_FALSE(back.observables[1].measured.value.has_value());
+  EXPECT_EQ(back.observables[1].measured.note, "why");
+  EXPECT_FALSE(back.observables[1].reference.has_value());
+  EXPECT_EQ(back.energy, run.energy);
+  EXPECT_EQ(back.distance, run.distance);
+  EXPECT_TRUE(back.summarised);
+  EXPECT_EQ(back.trajectory.events.bodies.at(0).contact_times, std::vector<double>{0.05});
+  EXPECT_EQ(back.trajectory.events.max_stretch, 0.1);
+}
+
+TEST(Wire, StatesOfAFewBodiesComeBack) {
+  RunRecord run;
+  run.trajectory.times = {0.0, 0.5};
+  run.trajectory.states = {State(2), State(2)};
+  run.trajectory.states[1][1].position = {1.0, 2.0, 3.0};
+  run.trajectory.states[1][1].orientation = Quat(0.5, 0.5, 0.5, 0.5);
+  const RunRecord back = wire::decode_run(wire::encode(run));
+  ASSERT_EQ(back.trajectory.states.size(), 2u);
+  ASSERT_EQ(back.trajectory.states[1].size(), 2u);
+  EXPECT_EQ(back.trajectory.states[1][1].position, Vec3(1.0, 2.0, 3.0));
+  EXPECT_EQ(back.trajectory.states[1][1].orientation.coeffs(), Quat(0.5, 0.5, 0.5, 0.5).coeffs());
+  EXPECT_FALSE(back.errors.has_value());
+  EXPECT_FALSE(back.summarised);
+}
+
+}  // namespace
+}  // namespace bb
