@@ -6,10 +6,14 @@
 
 namespace bb {
 
-double error_floor(const Trajectory& reference, double self_check, long steps) {
+double largest_position(const Trajectory& trajectory) {
   double largest = 0.0;
-  for (const State& state : reference.states)
+  for (const State& state : trajectory.states)
     for (const BodyState& b : state) largest = std::max(largest, b.position.norm());
+  return largest;
+}
+
+double error_floor(double largest, double self_check, long steps) {
   const double rounding = std::numeric_limits<double>::epsilon() * largest *
                           std::max(100.0, static_cast<double>(steps));
   return std::max(10.0 * self_check, rounding);

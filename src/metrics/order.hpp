@@ -16,9 +16,13 @@ struct ErrorPoint {
 
 /// The error below which a run's differences from the reference are noise, in metres: ten
 /// times the reference's self-check, or the rounding a run of `steps` steps can pile up on
-/// the largest position of the reference (half an ulp per step on the position and as much
-/// again through the velocity: eps * largest * steps, at least 100 eps * largest).
-double error_floor(const Trajectory& reference, double self_check, long steps);
+/// `largest`, the largest position of the reference (half an ulp per step on the position
+/// and as much again through the velocity: eps * largest * steps, at least 100 eps *
+/// largest).
+double error_floor(double largest, double self_check, long steps);
+
+/// The largest distance of any body from the origin over the trajectory's states (m).
+double largest_position(const Trajectory& trajectory);
 
 struct OrderFit {
   std::optional<double> slope;  ///< nullopt with fewer than two points above their floor

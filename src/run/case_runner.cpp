@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "metrics/order.hpp"
+#include "run/accuracy_jobs.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
 #include "run/gates.hpp"
@@ -58,26 +59,6 @@ std::map<std::string, const RunRecord*> finest_runs(const std::vector<RunRecord>
   return out;
 }
 
-/// A run record from what its child process reported.
-RunRecord record_from(const ChildOutcome& outcome, const std::string& backend,
-                      std::optional<double> dt) {
-  RunRecord run;
-  if (outcome.kind == ChildOutcome::Kind::Done) {
-    run = wire::decode_run(outcome.payload);
-    if (run.status == RunStatus::Ok)
-      run.messages = outcome.console;
-    else if (!outcome.console.empty())
-      run.reason += "; it printed: " + outcome.console;
-    return run;
-  }
-  run.backend = backend;
-  run.dt = dt;
-  run.status =
-      outcome.kind == ChildOutcome::Kind::Timeout ? RunStatus::Timeout : RunStatus::Crashed;
-  run.reason = outcome.reason;
-  return run;
-}
-
 /// Queues the cost measurement of `run` (serial pool), filling run.cost when it is done.
 void queue_cost(ChildPool& pool, const Backend& backend, const Scene& scene, RunRecord& run,
                 const RunOptions& options,
@@ -115,10 +96,6 @@ std::string reference_method(const RunRecord& reference) {
   return "gsl_odeiv2 (" + status_name(reference.status) + " before it started)";
 }
 
-std::string label(const std::string& backend, std::optional<double> dt) {
-  return dt ? backend + " at dt " + format_dt(*dt) : backend;
-}
-
 }  // namespace
 
 double time_limit(const Scene& scene, double dt, double timeout) {
@@ -152,7 +129,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
 
   // Every selected backend at every selected dt.
   const BackendSet set = backends_for(scene, registry);
-  std::vector<std::pair<const Backend*, double>> jobs;
+  std::vector<AccuracyJob> jobs;
   for (const Backend* b : set.all) {
     if (!wanted(options, b->name())) continue;
     if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
@@ -160,43 +137,13 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   }
 
   // Accuracy runs, each in its own child process: the reference, its self-check (100 times
-  // tighter with smaller steps forced) to measure the reference's own error, then every job.
-  // The jobs start once the reference is back: each child inherits it at fork and measures
-  // its own run against it, so only summaries and what the page plots come back.
+  // tighter with smaller steps forced) to measure the reference's own error, then every job,
+  // measured in its child (accuracy_jobs.hpp).
   const ReferenceBackend& reference = registry.reference();
-  const ReferenceBackend tighter = reference.self_check();
-  RunRecord tight;
-  out.runs.resize(jobs.size());
-  ChildPool pool(options.jobs, options.isolation);
-  const auto submit = [&](const Backend& b, double dt, RunRecord& slot,
-                          std::optional<double> shown_dt, const RunRecord* against,
-                          std::function<void()> then) {
-    const std::string what = label(b.name(), shown_dt);
-    pool.submit(
-        what,
-        [&b, &scene, dt, against] {
-          RunRecord run = run_accuracy(b, scene, dt);
-          if (against) summarise_in_child(scene, run, *against);
-          return wire::encode(run);
-        },
-        time_limit(scene, dt, options.timeout),
-        [&slot, &b, shown_dt, what, &progress, then](const ChildOutcome& o) {
-          slot = record_from(o, b.name(), shown_dt);
-          progress(what);
-          if (then) then();
-        });
-  };
-  submit(reference, scene.sample, out.reference_run, std::nullopt, nullptr, [&] {
-    // Without an ok reference each run comes back whole, for DESIGN.md's fallback below.
-    const RunRecord* against =
-        out.reference_run.status == RunStatus::Ok ? &out.reference_run : nullptr;
-    for (std::size_t i = 0; i < jobs.size(); ++i)
-      submit(*jobs[i].first, jobs[i].second, out.runs[i], jobs[i].second, against, nullptr);
-  });
-  submit(tighter, scene.sample, tight, std::nullopt, nullptr, nullptr);
-  pool.run();
-  out.reference_run.dt.reset();
-  tight.dt.reset();
+  AccuracyRuns accuracy = run_accuracy_jobs(scene, reference, jobs, options, progress);
+  out.reference_run = std::move(accuracy.reference);
+  out.runs = std::move(accuracy.runs);
+  const RunRecord& tight = accuracy.tight;
 
   out.reference = {reference_method(out.reference_run), reference.tolerance(),
                    max_position_difference(out.reference_run.trajectory, tight.trajectory)};
@@ -211,6 +158,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   out.versions[reference.library_version().first] = reference.library_version().second;
   add_observables(scene, out.reference_run, out.reference_run);
   add_series(scene, out.reference_run, nullptr);
+  record_position_scale(out.reference_run);
   // Engines that were not built still get a row, so a reader sees why they are absent.
   for (const Registry::Missing& missing : registry.missing_engines()) {
     const std::string& name = missing.name;
@@ -248,6 +196,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
       run.errors = compare(scene, run.trajectory, against->trajectory);
     add_observables(scene, run, against ? *against : out.reference_run);
     if (fallback) add_series(scene, run, nullptr);
+    record_position_scale(run);
   }
 
   // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
@@ -255,7 +204,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     ChildPool serial(1, options.isolation);
     queue_cost(serial, reference, scene, out.reference_run, options, progress);
     for (std::size_t i = 0; i < jobs.size(); ++i)
-      queue_cost(serial, *jobs[i].first, scene, out.runs[i], options, progress);
+      queue_cost(serial, *jobs[i].backend, scene, out.runs[i], options, progress);
     serial.run();
   }
 
@@ -265,10 +214,10 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     if (!run.errors) continue;
     // The floor's position scale comes from whatever the errors were measured against.
     const auto own = finest.find(run.backend);
-    const Trajectory& against =
-        fallback && own != finest.end() ? own->second->trajectory : out.reference_run.trajectory;
+    const double scale = fallback && own != finest.end() ? own->second->position_scale
+                                                         : out.reference_run.position_scale;
     points[run.backend].push_back({*run.dt, run.errors->position_max,
-                                   error_floor(against, out.reference.self_check, run.steps)});
+                                   error_floor(scale, out.reference.self_check, run.steps)});
   }
   for (const auto& [name, series] : points) {
     const OrderFit fit = fit_order(series);

@@ -46,9 +46,12 @@ struct RunRecord {
   /// (run_summary.hpp), elsewhere times and events only, unless the errors are measured in
   /// the parent (the reference's own run, and DESIGN.md's fallback).
   Trajectory trajectory;
-  std::vector<double> energy;    ///< total energy at each sample time (J)
-  std::vector<double> distance;  ///< largest position distance from the reference (m)
-  bool summarised = false;       ///< errors, observables and series measured in the child
+  std::vector<double> energy;  ///< total energy at each sample time (J)
+  /// Largest position distance from the reference (m; in DESIGN.md's fallback, from the
+  /// backend's finest run)
+  std::vector<double> distance;
+  double position_scale = 0.0;  ///< largest |position| over the samples (m)
+  bool summarised = false;      ///< errors, observables and series measured in the child
 };
 
 struct ReferenceInfo {

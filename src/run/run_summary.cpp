@@ -2,9 +2,20 @@
 
 #include <algorithm>
 
+#include "metrics/order.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
+
+namespace {
+
+std::optional<double> measured_value(const RunRecord& run, const std::string& name) {
+  for (const ObservableResult& o : run.observables)
+    if (o.name == name) return o.measured.value;
+  return std::nullopt;
+}
+
+}  // namespace
 
 void add_observables(const Scene& scene, RunRecord& run, const RunRecord& against) {
   for (const Observe& o : scene.observes) {
@@ -13,9 +24,12 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& agains
       r.measured = measure(scene, o, run.trajectory);
     else
       r.measured.note = "run " + status_name(run.status);
-    // A kind with a formula (terminal_velocity) is compared with the formula's value.
+    // A kind with a formula (terminal_velocity) is compared with the formula's value; a
+    // run already measured in its child has its own value, not its states, to give.
     if (const auto formula = formula_value(scene, o))
       r.reference = formula;
+    else if (against.status == RunStatus::Ok && against.summarised)
+      r.reference = measured_value(against, o.name);
     else if (against.status == RunStatus::Ok)
       r.reference = measure(scene, o, against.trajectory).value;
     run.observables.push_back(r);
@@ -50,11 +64,17 @@ void keep_plotted_states(const Scene& scene, RunRecord& run) {
     }
 }
 
-void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& reference) {
-  if (run.status == RunStatus::Ok)
-    run.errors = compare(scene, run.trajectory, reference.trajectory);
-  add_observables(scene, run, reference);
-  add_series(scene, run, &reference.trajectory);
+void record_position_scale(RunRecord& run) {
+  run.position_scale = largest_position(run.trajectory);
+}
+
+void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& against) {
+  // A run measured against itself (the fallback's finest) has no errors.
+  if (run.status == RunStatus::Ok && &against != &run)
+    run.errors = compare(scene, run.trajectory, against.trajectory);
+  add_observables(scene, run, against);
+  add_series(scene, run, &against.trajectory);
+  record_position_scale(run);
   keep_plotted_states(scene, run);
   run.summarised = true;
 }

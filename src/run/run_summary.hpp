@@ -25,8 +25,12 @@ void add_series(const Scene& scene, RunRecord& run, const Trajectory* reference)
 /// kPlottedBodies bodies, elsewhere none. Times and events stay.
 void keep_plotted_states(const Scene& scene, RunRecord& run);
 
-/// In the child: errors, observables and series against `reference` (ok), then the
-/// trajectory cut to what the page draws.
-void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& reference);
+/// run.position_scale from the run's states: the order fit's rounding floor needs it.
+void record_position_scale(RunRecord& run);
+
+/// In the child: errors, observables and series against `against` (an ok run: the
+/// reference, or in DESIGN.md's fallback the backend's finest run, possibly `run` itself),
+/// the position scale, then the trajectory cut to what the page draws.
+void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& against);
 
 }  // namespace bb

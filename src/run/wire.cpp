@@ -159,6 +159,7 @@ std::string encode(const RunRecord& run) {
   }
   put(w, run.energy);
   put(w, run.distance);
+  w.raw(run.position_scale);
   w.raw<char>(run.summarised);
   return w.take();
 }
@@ -210,6 +211,7 @@ RunRecord decode_run(const std::string& bytes) {
   }
   run.energy = get_values(r);
   run.distance = get_values(r);
+  run.position_scale = r.raw<double>();
   run.summarised = r.raw<char>() != 0;
   return run;
 }

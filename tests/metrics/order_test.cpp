@@ -49,9 +49,9 @@ TEST(ErrorFloor, GrowsWithTheNumberOfSteps) {
   Trajectory reference;
   reference.states = {{BodyState{{0.0, 1000.0, 0.0}, {}, {}, {}}}};
   const double eps = std::numeric_limits<double>::epsilon();
-  EXPECT_DOUBLE_EQ(error_floor(reference, 0.0, 10), 100 * eps * 1000.0);
-  EXPECT_DOUBLE_EQ(error_floor(reference, 0.0, 1000000), 1e6 * eps * 1000.0);
-  EXPECT_DOUBLE_EQ(error_floor(reference, 1e-9, 10), 1e-8);
+  EXPECT_DOUBLE_EQ(error_floor(largest_position(reference), 0.0, 10), 100 * eps * 1000.0);
+  EXPECT_DOUBLE_EQ(error_floor(largest_position(reference), 0.0, 1000000), 1e6 * eps * 1000.0);
+  EXPECT_DOUBLE_EQ(error_floor(largest_position(reference), 1e-9, 10), 1e-8);
 }
 
 }  // namespace

@@ -179,9 +179,15 @@ max = 10.0
   // The two coarser runs are compared with the finest, which is its own reference.
   const RunRecord& finest = results.runs[2];
   EXPECT_FALSE(finest.errors.has_value());
+  // It measured itself in its child too, after writing itself whole once for the others.
+  EXPECT_TRUE(finest.summarised);
+  EXPECT_TRUE(finest.trajectory.states.empty());
   for (int i = 0; i < 2; ++i) {
     const RunRecord& run = results.runs[i];
     ASSERT_TRUE(run.errors.has_value()) << *run.dt;
+    // Measured in its child against the finest run, read from the file that run wrote.
+    EXPECT_TRUE(run.summarised);
+    EXPECT_EQ(run.trajectory.states.empty(), *run.dt != scene.report_dt);
     // Measured again here from the whole runs (the results keep only what the page plots).
     const RunRecord whole = run_accuracy(
         CourseBackend({"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"}),
@@ -199,6 +205,64 @@ max = 10.0
   ASSERT_EQ(gated.gates.size(), 1u);
   EXPECT_TRUE(gated.gates[0].value.has_value());
   EXPECT_TRUE(gated.gates[0].passed);
+}
+
+/// The course's semi-implicit Euler, except that it refuses the case's finest dt.
+class FinestFailsBackend : public Backend {
+ public:
+  std::string name() const override { return "fails-finest"; }
+  FeatureSet supports() const override { return inner_.supports(); }
+  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
+    if (dt <= scene.dt.back()) throw std::runtime_error("no step this small");
+    return inner_.start(scene, dt);
+  }
+
+ private:
+  CourseBackend inner_{{"fails-finest", "semi-implicit-euler", "mirror", "clamp"}};
+};
+
+// In the fallback, in child processes: each backend's finest run writes itself to a file
+// that its other runs read in their children; where the finest run fails, the others come
+// back whole and the next finest stands in, measured in the parent.
+TEST(Runner, WithoutAReferenceTheNextFinestStandsInWhenTheFinestFails) {
+  const Scene scene = test::scene_from(test::kStackedBalls);
+  Registry registry = Registry::load();
+  registry.add_engine(std::make_unique<FinestFailsBackend>());
+  RunOptions options;
+  options.cost = false;
+  const CaseResults results = run_case(scene, registry, options);
+  ASSERT_NE(results.reference_run.status, RunStatus::Ok);
+  const auto run_of = [&](const std::string& backend, double dt) {
+    for (const RunRecord& run : results.runs)
+      if (run.backend == backend && run.dt == dt) return &run;
+    return static_cast<const RunRecord*>(nullptr);
+  };
+  const double coarse = scene.dt[0], middle = scene.dt[1], finest = scene.dt[2];
+  ASSERT_EQ(run_of("fails-finest", finest)->status, RunStatus::Error);
+  const RunRecord& stand_in = *run_of("fails-finest", middle);
+  const RunRecord& measured = *run_of("fails-finest", coarse);
+  ASSERT_EQ(stand_in.status, RunStatus::Ok);
+  ASSERT_EQ(measured.status, RunStatus::Ok);
+  EXPECT_FALSE(stand_in.summarised);
+  EXPECT_FALSE(stand_in.errors.has_value());
+  ASSERT_TRUE(measured.errors.has_value());
+  // The same as course/semi-implicit-euler at these steps, measured against its middle run.
+  const CourseBackend same({"x", "semi-implicit-euler", "mirror", "clamp"});
+  EXPECT_DOUBLE_EQ(measured.errors->position_max,
+                   compare(scene, run_accuracy(same, scene, coarse).trajectory,
+                           run_accuracy(same, scene, middle).trajectory)
+                       .position_max);
+  // The course's own runs went through the file, and agree with the same measure here.
+  const RunRecord& course = *run_of("course/semi-implicit-euler", coarse);
+  EXPECT_TRUE(course.summarised);
+  ASSERT_TRUE(course.errors.has_value());
+  EXPECT_DOUBLE_EQ(course.errors->position_max,
+                   compare(scene, run_accuracy(same, scene, coarse).trajectory,
+                           run_accuracy(same, scene, finest).trajectory)
+                       .position_max);
+  // Kept: the report_dt run's states only.
+  EXPECT_TRUE(stand_in.trajectory.states.empty());
+  EXPECT_FALSE(measured.trajectory.states.empty());
 }
 
 // A case written from DESIGN.md's format alone (a ball thrown into the corner of two

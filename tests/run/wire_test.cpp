@@ -23,6 +23,7 @@ TEST(Wire, ARunRecordComesBackWhole) {
   run.energy = {1.0, 0.9, 0.8};
   run.distance = {0.0, 1e-3, 2e-3};
   run.summarised = true;
+  run.position_scale = 12.5;
   run.trajectory.events.bodies.resize(1);
   run.trajectory.events.bodies[0].contact_times = {0.05};
   run.trajectory.events.max_stretch = 0.1;
@@ -53,6 +54,7 @@ TEST(Wire, ARunRecordComesBackWhole) {
   EXPECT_EQ(back.energy, run.energy);
   EXPECT_EQ(back.distance, run.distance);
   EXPECT_TRUE(back.summarised);
+  EXPECT_EQ(back.position_scale, 12.5);
   EXPECT_EQ(back.trajectory.events.bodies.at(0).contact_times, std::vector<double>{0.05});
   EXPECT_EQ(back.trajectory.events.max_stretch, 0.1);
 }
