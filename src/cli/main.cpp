@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   bool no_cost = false;
   bool no_isolation = false;
   double timeout = 0.0;
-  double cost_seconds = 0.05;
+  double cost_seconds = 0.005;
 
   auto* list = app.add_subcommand("list", "cases, backends, and who supports what");
   list->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     command
         ->add_option("--cost-time", cost_seconds,
                      "minimum timed seconds per run in the cost pass (0.001 to 600)")
-        ->default_val(0.05);
+        ->default_val(0.005);
   };
   add_sweep_options(run);
   // Options of every command that runs backends.

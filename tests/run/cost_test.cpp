@@ -1,0 +1,64 @@
+// The cost pass's repeats: until the timed total reaches min_seconds and at least
+// min_repeats times, fewer once the total passes enough_seconds.
+#include "run/cost.hpp"
+
+#include <gtest/gtest.h>
+
+#include "course/course_backend.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+Timing timing(const CostOptions& options, long steps = 10) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const CourseBackend backend({"course/rk4", "rk4", "mirror", "clamp"});
+  return time_steps(backend, scene, scene.report_dt, steps, options);
+}
+
+int repeats(const CostOptions& options) {
+  return timing(options).repeats;
+}
+
+TEST(CostRepeats, AtLeastTheMinimumWhileTheTotalIsShort) {
+  CostOptions options;
+  options.min_seconds = 0.0;
+  options.min_repeats = 3;
+  options.enough_seconds = 1e9;
+  EXPECT_EQ(repeats(options), 3);
+}
+
+TEST(CostRepeats, OnceWhenOneRepeatIsAlreadyEnough) {
+  CostOptions options;
+  options.min_seconds = 0.0;
+  options.min_repeats = 3;
+  options.enough_seconds = 0.0;
+  EXPECT_EQ(repeats(options), 1);
+}
+
+TEST(CostRepeats, TheMaximumCapsARunThatNeverReachesTheTotal) {
+  CostOptions options;
+  options.min_seconds = 1e9;
+  options.max_repeats = 7;
+  EXPECT_EQ(repeats(options), 7);
+}
+
+// A repeat that reaches max_seconds_per_repeat stops timing at the end of its block of
+// calls; the whole run's time is extrapolated from the calls timed.
+TEST(CostRepeats, ALongRunIsTimedOverItsFirstCalls) {
+  CostOptions options;
+  options.min_seconds = 0.0;
+  options.min_repeats = 1;
+  options.max_seconds_per_repeat = 0.0;
+  const long steps = 100000;
+  const Timing t = timing(options, steps);
+  EXPECT_EQ(t.repeats, 1);
+  EXPECT_LT(t.calls_timed, steps);
+  EXPECT_GT(t.calls_timed, 0);
+  EXPECT_GT(t.median_seconds, 0.0);
+  options.max_seconds_per_repeat = 1e9;
+  EXPECT_EQ(timing(options, 1000).calls_timed, 1000);
+}
+
+}  // namespace
+}  // namespace bb
