@@ -1,6 +1,6 @@
 // Box2D 2.4 as a backend: 2D scenes only, single precision. Built twice: `box2d`, whose
 // springs are distance joints with stiffness and damping, and `box2d/force`
-// (BB_BOX2D_SPRINGS_BY_HAND), whose springs are forces added before each step.
+// (BB_SPRINGS_BY_HAND), whose springs are forces added before each step.
 #include <box2d/box2d.h>
 
 #include <cfloat>
@@ -57,7 +57,7 @@ class Box2dSimulation : public Simulation {
         b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z())};
         bodies_[i]->SetMassData(&mass);
       }
-#ifdef BB_BOX2D_SPRINGS_BY_HAND
+#ifdef BB_SPRINGS_BY_HAND
     springs_ = spring_network(scene);
 #else
     make_spring_joints();
@@ -101,7 +101,7 @@ class Box2dSimulation : public Simulation {
     else
       s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
     if (!scene_.springs.empty()) {
-#ifdef BB_BOX2D_SPRINGS_BY_HAND
+#ifdef BB_SPRINGS_BY_HAND
       s.push_back({"springs", std::string("force k (l - L) + c (v_b - v_a).u along each spring, "
                                           "added with b2Body::ApplyForceToCenter before each "
                                           "step")});
@@ -177,13 +177,13 @@ class Box2dSimulation : public Simulation {
 
 class Box2dBackend : public Backend {
  public:
-  std::string name() const override { return BB_BOX2D_NAME; }
+  std::string name() const override { return BB_BACKEND_NAME; }
   FeatureSet supports() const override {
     return {Feature::Gravity,     Feature::Drag,    Feature::Magnus,        Feature::Wind,
             Feature::Rotation,    Feature::Boxes,   Feature::GroundContact, Feature::BodyContact,
             Feature::Restitution, Feature::Impulse, Feature::Springs};
   }
-#ifdef BB_BOX2D_SPRINGS_BY_HAND
+#ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `box2d` wherever the scene has no springs: it takes part only
   /// where it has.
   FeatureSet needs() const override {

@@ -1,5 +1,5 @@
 // ODE as a backend, double precision. Built twice: `ode`, whose springs are ODE joints
-// made soft by ERP and CFM, and `ode/force` (BB_ODE_SPRINGS_BY_HAND), whose springs are
+// made soft by ERP and CFM, and `ode/force` (BB_SPRINGS_BY_HAND), whose springs are
 // forces added before each step.
 #include <ode/ode.h>
 
@@ -90,7 +90,7 @@ class OdeSimulation : public Simulation {
       contacts_ = std::make_unique<OdeContacts>(scene, world_, bodies_,
                                                 engine_setting(scene, "ode", "bounce_vel"));
     }
-#ifdef BB_ODE_SPRINGS_BY_HAND
+#ifdef BB_SPRINGS_BY_HAND
     springs_ = spring_network(scene);
 #else
     make_spring_joints();
@@ -167,7 +167,7 @@ class OdeSimulation : public Simulation {
       s.push_back({"contacts_made", static_cast<double>(contacts_->contacts_made())});
     }
     if (!scene_.springs.empty()) {
-#ifdef BB_ODE_SPRINGS_BY_HAND
+#ifdef BB_SPRINGS_BY_HAND
       s.push_back({"springs", std::string("force k (l - L) + c (v_b - v_a).u along each spring, "
                                           "added with dBodyAddForce before each step")});
 #else
@@ -244,13 +244,13 @@ class OdeSimulation : public Simulation {
 
 class OdeBackend : public Backend {
  public:
-  std::string name() const override { return BB_ODE_NAME; }
+  std::string name() const override { return BB_BACKEND_NAME; }
   FeatureSet supports() const override {
     return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
             Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
             Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs};
   }
-#ifdef BB_ODE_SPRINGS_BY_HAND
+#ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `ode` wherever the scene has no springs: it takes part only where
   /// it has.
   FeatureSet needs() const override {

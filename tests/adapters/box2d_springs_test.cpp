@@ -22,7 +22,6 @@ namespace {
 
 using test::engine;
 using test::number_setting;
-using test::registry;
 
 class Box2dSprings : public ::testing::Test {
  protected:
@@ -87,39 +86,6 @@ TEST_F(Box2dSprings, TheRunNamesTheJointAndItsStiffness) {
   const RunRecord joint = run_accuracy(*engine("box2d"), scene, scene.report_dt);
   EXPECT_EQ(number_setting(joint.engine_settings, "spring_stiffness_first"),
             double(float(scene.springs[0].stiffness)));
-  const RunRecord force = run_accuracy(*engine("box2d/force"), scene, scene.report_dt);
-  for (const RunRecord* run : {&joint, &force}) {
-    bool named = false;
-    for (const auto& [key, value] : run->engine_settings)
-      named = named || (key == "springs" && std::holds_alternative<std::string>(value));
-    EXPECT_TRUE(named) << run->backend;
-  }
-}
-
-// box2d/force is box2d wherever there are no springs: it takes part only where there are.
-TEST_F(Box2dSprings, TheForceVariantTakesPartOnlyOnSpringScenes) {
-  const auto has = [&](const Scene& scene) {
-    const BackendSet set = backends_for(scene, registry());
-    return std::any_of(set.all.begin(), set.all.end(),
-                       [](const Backend* b) { return b->name() == "box2d/force"; });
-  };
-  EXPECT_FALSE(has(load_case(test::source_path("cases/drag_fall.toml"))));
-  EXPECT_TRUE(has(load_case(test::source_path("cases/spring_pair.toml"))));
-}
-
-// An anchored particle of the cloth stays where it is, both ways.
-TEST_F(Box2dSprings, AnchoredParticlesDoNotMove) {
-  const Scene scene = load_case(test::source_path("cases/cloth_stiff.toml"));
-  const int anchor = scene.body_index("p3_0");
-  ASSERT_TRUE(scene.bodies[anchor].fixed);
-  for (const char* name : {"box2d", "box2d/force"}) {
-    const RunRecord run = run_accuracy(*engine(name), scene, scene.dt.back());
-    ASSERT_EQ(run.status, RunStatus::Ok) << name << ": " << run.reason;
-    const Vec3 start = scene.bodies[anchor].position;
-    EXPECT_NEAR((run.trajectory.states.back()[anchor].position - start).norm(), 0.0,
-                1e-6 * (1.0 + start.norm()))
-        << name;
-  }
 }
 
 }  // namespace

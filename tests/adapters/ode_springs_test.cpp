@@ -21,7 +21,6 @@ namespace {
 
 using test::engine;
 using test::number_setting;
-using test::registry;
 
 class OdeSprings : public ::testing::Test {
  protected:
@@ -71,38 +70,6 @@ TEST_F(OdeSprings, TheRunNamesTheJointAndItsErpAndCfm) {
   EXPECT_NEAR(number_setting(joint.engine_settings, "spring_erp_first"), h * k / (h * k + c),
               1e-15);
   EXPECT_NEAR(number_setting(joint.engine_settings, "spring_cfm_first"), 1.0 / (h * k + c), 1e-15);
-  const RunRecord force = run_accuracy(*engine("ode/force"), scene, h);
-  for (const RunRecord* run : {&joint, &force}) {
-    bool named = false;
-    for (const auto& [key, value] : run->engine_settings)
-      named = named || (key == "springs" && std::holds_alternative<std::string>(value));
-    EXPECT_TRUE(named) << run->backend;
-  }
-}
-
-// (d) ode/force is ode wherever there are no springs: it takes part only where there are.
-TEST_F(OdeSprings, TheForceVariantTakesPartOnlyOnSpringScenes) {
-  const auto has = [&](const Scene& scene) {
-    const BackendSet set = backends_for(scene, registry());
-    return std::any_of(set.all.begin(), set.all.end(),
-                       [](const Backend* b) { return b->name() == "ode/force"; });
-  };
-  EXPECT_FALSE(has(load_case(test::source_path("cases/drag_fall.toml"))));
-  EXPECT_TRUE(has(load_case(test::source_path("cases/spring_pair.toml"))));
-}
-
-// (e) An anchored particle of the cloth stays where it is, both ways.
-TEST_F(OdeSprings, AnchoredParticlesDoNotMove) {
-  const Scene scene = load_case(test::source_path("cases/cloth_stiff.toml"));
-  const int anchor = scene.body_index("p3_0");
-  ASSERT_TRUE(scene.bodies[anchor].fixed);
-  // The joint holds at 1/60 s; the force by hand, like semi-implicit Euler, needs the finest.
-  for (const auto& [name, dt] :
-       {std::pair{"ode", scene.report_dt}, std::pair{"ode/force", scene.dt.back()}}) {
-    const RunRecord run = run_accuracy(*engine(name), scene, dt);
-    ASSERT_EQ(run.status, RunStatus::Ok) << name << ": " << run.reason;
-    EXPECT_EQ(run.trajectory.states.back()[anchor].position, scene.bodies[anchor].position) << name;
-  }
 }
 
 }  // namespace

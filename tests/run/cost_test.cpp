@@ -16,39 +16,34 @@ Timing timing(const CostOptions& options, long steps = 10) {
   return time_steps(backend, scene, scene.report_dt, steps, options);
 }
 
-int repeats(const CostOptions& options) {
-  return timing(options).repeats;
+/// Options that repeat for min_repeats, or until the timed total passes enough_seconds.
+CostOptions repeat_rule(int min_repeats, double enough_seconds) {
+  CostOptions options;
+  options.min_seconds = 0.0;
+  options.min_repeats = min_repeats;
+  options.enough_seconds = enough_seconds;
+  return options;
 }
 
 TEST(CostRepeats, AtLeastTheMinimumWhileTheTotalIsShort) {
-  CostOptions options;
-  options.min_seconds = 0.0;
-  options.min_repeats = 3;
-  options.enough_seconds = 1e9;
-  EXPECT_EQ(repeats(options), 3);
+  EXPECT_EQ(timing(repeat_rule(3, 1e9)).repeats, 3);
 }
 
 TEST(CostRepeats, OnceWhenOneRepeatIsAlreadyEnough) {
-  CostOptions options;
-  options.min_seconds = 0.0;
-  options.min_repeats = 3;
-  options.enough_seconds = 0.0;
-  EXPECT_EQ(repeats(options), 1);
+  EXPECT_EQ(timing(repeat_rule(3, 0.0)).repeats, 1);
 }
 
 TEST(CostRepeats, TheMaximumCapsARunThatNeverReachesTheTotal) {
   CostOptions options;
   options.min_seconds = 1e9;
   options.max_repeats = 7;
-  EXPECT_EQ(repeats(options), 7);
+  EXPECT_EQ(timing(options).repeats, 7);
 }
 
 // A repeat that reaches max_seconds_per_repeat stops timing at the end of its block of
 // calls; the whole run's time is extrapolated from the calls timed.
 TEST(CostRepeats, ALongRunIsTimedOverItsFirstCalls) {
-  CostOptions options;
-  options.min_seconds = 0.0;
-  options.min_repeats = 1;
+  CostOptions options = repeat_rule(1, 0.0);
   options.max_seconds_per_repeat = 0.0;
   const long steps = 100000;
   const Timing t = timing(options, steps);

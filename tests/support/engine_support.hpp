@@ -23,6 +23,13 @@ inline const Backend* engine(const std::string& name) {
   return nullptr;
 }
 
+/// Whether the backend called `name` takes part in `scene` (its needs are met there).
+inline bool takes_part(const std::string& name, const Scene& scene) {
+  for (const Backend* b : backends_for(scene, registry()).all)
+    if (b->name() == name) return true;
+  return false;
+}
+
 /// The value of setting `key`, or nullptr.
 inline const SettingValue* setting(const Settings& settings, const std::string& key) {
   for (const auto& [k, v] : settings)

@@ -1,0 +1,72 @@
+// What every engine's spring backends share, whichever way they build springs: the
+// by-hand variant `<engine>/force` takes part only in spring scenes, every run names how
+// its springs were built, and an anchored cloth particle stays where it started.
+// Backends whose plugins were not built are skipped.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "run/accuracy_run.hpp"
+#include "support/engine_support.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+using test::engine;
+using test::takes_part;
+using test::text_setting;
+
+Scene spring_case(const std::string& name) {
+  return load_case(test::source_path("cases/" + name + ".toml"));
+}
+
+class SpringVariants : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SpringVariants, TheForceVariantTakesPartOnlyOnSpringScenes) {
+  const std::string force = std::string(GetParam()) + "/force";
+  if (engine(force) == nullptr) GTEST_SKIP() << force << " was not built";
+  EXPECT_FALSE(takes_part(force, spring_case("drag_fall")));
+  EXPECT_TRUE(takes_part(force, spring_case("spring_pair")));
+  EXPECT_TRUE(takes_part(GetParam(), spring_case("drag_fall")));
+}
+
+TEST_P(SpringVariants, BothWaysNameHowTheirSpringsAreBuilt) {
+  const Scene scene = spring_case("spring_pair_damped");
+  for (const std::string& name : {std::string(GetParam()), std::string(GetParam()) + "/force"}) {
+    if (engine(name) == nullptr) continue;
+    const RunRecord run = run_accuracy(*engine(name), scene, scene.report_dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << name << ": " << run.reason;
+    EXPECT_FALSE(text_setting(run.engine_settings, "springs").empty()) << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Engines, SpringVariants, ::testing::Values("bullet", "box2d", "ode"));
+
+// Every spring backend at the stiff cloth's finest step: the anchors do not move (a float
+// engine stores the start rounded to float).
+TEST(SpringBackends, AnchoredClothParticlesDoNotMove) {
+  const Scene scene = spring_case("cloth_stiff");
+  const std::size_t anchor = static_cast<std::size_t>(scene.body_index("p3_0"));
+  ASSERT_TRUE(scene.bodies[anchor].fixed);
+  const Vec3 start = scene.bodies[anchor].position;
+  int ran = 0;
+  for (const char* name : {"bullet", "bullet-float", "bullet/force", "bullet-softbody", "box2d",
+                           "box2d/force", "ode", "ode/force"}) {
+    if (engine(name) == nullptr) continue;
+    const RunRecord run = run_accuracy(*engine(name), scene, scene.dt.back());
+    ASSERT_EQ(run.status, RunStatus::Ok) << name << ": " << run.reason;
+    double moved = 0.0;
+    for (const State& s : run.trajectory.states)
+      moved = std::max(moved, (s[anchor].position - start).norm());
+    const bool single =
+        std::string(name) == "bullet-float" || std::string(name).rfind("box2d", 0) == 0;
+    EXPECT_LE(moved, single ? 1e-6 * (1.0 + start.norm()) : 0.0) << name;
+    ++ran;
+  }
+  if (ran == 0) GTEST_SKIP() << "no engine plugin was built";
+}
+
+}  // namespace
+}  // namespace bb
