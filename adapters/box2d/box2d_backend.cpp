@@ -10,6 +10,7 @@
 
 #include "../point_body.hpp"
 #include "box2d_contacts.hpp"
+#include "box2d_vectors.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -18,10 +19,6 @@
 namespace bb {
 
 namespace {
-
-b2Vec2 to_b2(const Vec3& v) {
-  return {float(v.x()), float(v.y())};
-}
 
 class Box2dSimulation : public Simulation {
  public:

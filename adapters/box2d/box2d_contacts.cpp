@@ -3,13 +3,11 @@
 #include <cmath>
 #include <string>
 
+#include "box2d_vectors.hpp"
+
 namespace bb {
 
 namespace {
-
-b2Vec2 to_b2(const Vec3& v) {
-  return {float(v.x()), float(v.y())};
-}
 
 /// A fixture's slot (GetUserData is not const in 2.4.1): its body's index, or the
 /// ground's, kept in its user data plus one

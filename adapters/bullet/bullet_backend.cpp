@@ -12,6 +12,7 @@
 #include "bullet_contacts.hpp"
 #include "bullet_settings.hpp"
 #include "bullet_springs.hpp"
+#include "bullet_vectors.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -32,13 +33,6 @@ constexpr const char* kSpringsByHandMethod =
     "applied by hand: before each step k (l - L) + c (v_b - v_a).u from the engine's own "
     "state (external_forces), btRigidBody::applyCentralForce; no constraint, so no stiffness "
     "limit; anchored particles static (mass 0)";
-
-btVector3 to_bt(const Vec3& v) {
-  return {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())};
-}
-Vec3 from_bt(const btVector3& v) {
-  return {v.x(), v.y(), v.z()};
-}
 
 /// The radius of the largest sphere inside a body: what CCD sweeps and its motion threshold.
 double inner_radius(const Body& b) {

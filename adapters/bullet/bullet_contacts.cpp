@@ -1,14 +1,11 @@
 #include "bullet_contacts.hpp"
 
+#include "bullet_vectors.hpp"
 #include "scene/contact_pairs.hpp"
 
 namespace bb {
 
 namespace {
-
-btVector3 to_bt(const Vec3& v) {
-  return {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())};
-}
 
 /// Bullet calls this for every contact point it adds or refreshes between objects of
 /// which one has CF_CUSTOM_MATERIAL_CALLBACK (btManifoldResult::addContactPoint).

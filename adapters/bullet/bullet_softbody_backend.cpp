@@ -15,19 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "bullet_vectors.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
 
 namespace bb {
 
 namespace {
-
-btVector3 to_bt(const Vec3& v) {
-  return {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())};
-}
-Vec3 from_bt(const btVector3& v) {
-  return {v.x(), v.y(), v.z()};
-}
 
 /// The link stiffness m_kLST that makes one position iteration act as a spring of
 /// stiffness k between nodes of inverse masses summing to `inverse_masses`: the iteration

@@ -4,15 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "bullet_vectors.hpp"
 #include "scene/engine_keys.hpp"
 
 namespace bb {
 
 namespace {
-
-btVector3 to_bt(const Vec3& v) {
-  return {btScalar(v.x()), btScalar(v.y()), btScalar(v.z())};
-}
 
 /// A rotation whose first column is `x` (a unit vector): x, then two perpendiculars.
 btMatrix3x3 basis_along(const btVector3& x) {

@@ -1,17 +1,8 @@
 #include "reference/air_force_jacobian.hpp"
 
+#include "reference/cross_matrix.hpp"
+
 namespace bb {
-
-namespace {
-
-/// The matrix of a cross product: skew(a) b = a x b.
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d m;
-  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return m;
-}
-
-}  // namespace
 
 AirForceJacobian air_force_jacobian(const Scene& scene, const Body& body, const Eigen::Vector3d& v,
                                     const Eigen::Vector3d& omega) {

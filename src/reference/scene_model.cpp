@@ -6,6 +6,7 @@
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
 #include "reference/air_force_jacobian.hpp"
+#include "reference/cross_matrix.hpp"
 #include "reference/gsl_reference.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/motion.hpp"
@@ -48,12 +49,6 @@ Vector3d angular_acceleration(const Body& body, const Quaterniond& q, const Vect
   const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
   const Eigen::Matrix3d inertia = r * principal.asDiagonal() * r.transpose();
   return inertia.ldlt().solve(-omega.cross(inertia * omega));
-}
-
-Eigen::Matrix3d skew(const Vector3d& a) {
-  Eigen::Matrix3d m;
-  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return m;
 }
 
 /// Contact distance below which a second contact counts as simultaneous, metres.
