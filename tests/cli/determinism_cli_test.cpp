@@ -21,18 +21,13 @@ std::string run_suite(const std::string& name, int jobs) {
   for (const char* c : {"drag_fall", "three_beachballs_1", "double_bounce", "tiny_mass_fall"})
     cases += test::source_path("cases/") + c + ".toml ";
   const std::string command = std::string(BEACHBALL_PROGRAM) + " run " + cases +
-                              "--no-cost --jobs " +
-                              std::to_string(jobs) + " --out " + out + " > /dev/null 2>&1";
+                              "--no-cost --jobs " + std::to_string(jobs) + " --out " + out +
+                              " > /dev/null 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
   return out;
 }
 
-std::string bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::bytes;
 
 TEST(Determinism, SuiteJsonIsByteIdenticalAcrossRunsAndJobs) {
   const std::string first = run_suite("first", 1);

@@ -17,12 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::bytes;
 
 /// Starts `beachball report --out out` with output to `log`; returns the child's pid.
 pid_t start_report(const std::string& out, const std::string& log) {

@@ -8,14 +8,13 @@
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "scene/motion.hpp"
+#include "support/course_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-CourseBackend course(const std::string& integrator) {
-  return CourseBackend({"course/" + integrator, integrator, "mirror", "clamp"});
-}
+using test::course;
 
 struct OrderCase {
   std::string integrator;

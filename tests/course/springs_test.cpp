@@ -11,14 +11,13 @@
 #include "reference/closed_form.hpp"
 #include "run/accuracy_run.hpp"
 #include "scene/motion.hpp"
+#include "support/course_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-CourseBackend course(const std::string& integrator) {
-  return CourseBackend({"course/" + integrator, integrator, "mirror", "clamp"});
-}
+using test::course;
 
 /// Two 1 kg masses on k = 100 N/m, stretched 0.5 m, no gravity; `damping` in N s/m.
 Scene pair(double damping) {

@@ -7,6 +7,7 @@
 #include "metrics/spring_modes.hpp"
 #include "metrics/stability_theory.hpp"
 #include "scene/load_case.hpp"
+#include "support/course_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -71,9 +72,7 @@ TEST(Stability, UnstableEverywhereAndStableEverywhereAreSaid) {
   EXPECT_EQ(*always.critical_dt, scene.stability.dt_max);
 }
 
-CourseBackend course(const std::string& integrator) {
-  return CourseBackend({"course/" + integrator, integrator, "mirror", "clamp"});
-}
+using test::course;
 
 // Stable means bounded (DESIGN.md): semi-implicit Euler 1 percent below 2 / omega swings
 // its energy far from its start and is stable; 1 percent above it, and explicit Euler on

@@ -1,6 +1,9 @@
 // Helpers shared by the tests: scenes from inline TOML, paths into the source tree.
 #pragma once
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -11,6 +14,14 @@ namespace bb::test {
 /// The source tree, for cases/ and tests/cases/.
 inline std::string source_path(const std::string& relative) {
   return std::string(BEACHBALL_SOURCE_DIR) + "/" + relative;
+}
+
+/// A file's whole content.
+inline std::string bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 /// A scene parsed from inline case text, named "inline.toml" in messages.
