@@ -8,6 +8,7 @@
 #include "reference/air_force_jacobian.hpp"
 #include "reference/cross_matrix.hpp"
 #include "reference/gsl_reference.hpp"
+#include "reference/scene_model_state.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/motion.hpp"
 
@@ -15,32 +16,7 @@ namespace bb {
 
 namespace {
 
-using Eigen::Quaterniond;
-using Eigen::Vector3d;
-using ConstVec = Eigen::Map<const Vector3d>;
-using Vec = Eigen::Map<Vector3d>;
-
-// Where each part of body i sits in the integrated state.
-std::size_t at(int i) {
-  return SceneModel::kPerBody * static_cast<std::size_t>(i);
-}
-ConstVec position(const double* y, int i) {
-  return ConstVec(y + at(i));
-}
-ConstVec velocity(const double* y, int i) {
-  return ConstVec(y + at(i) + 3);
-}
-Quaterniond orientation(const double* y, int i) {
-  const double* q = y + at(i) + 6;
-  return {q[0], q[1], q[2], q[3]};
-}
-ConstVec spin(const double* y, int i) {
-  return ConstVec(y + at(i) + 10);
-}
-
-double inverse_mass(const Body& b) {
-  return b.fixed ? 0.0 : 1.0 / b.mass;
-}
+using namespace state_view;
 
 /// Euler's equations in the world frame, torque-free: I dw/dt = -w x (I w).
 Vector3d angular_acceleration(const Body& body, const Quaterniond& q, const Vector3d& omega) {
@@ -50,9 +26,6 @@ Vector3d angular_acceleration(const Body& body, const Quaterniond& q, const Vect
   const Eigen::Matrix3d inertia = r * principal.asDiagonal() * r.transpose();
   return inertia.ldlt().solve(-omega.cross(inertia * omega));
 }
-
-/// Contact distance below which a second contact counts as simultaneous, metres.
-constexpr double kSimultaneousGap = 1e-9;
 
 }  // namespace
 
@@ -265,154 +238,6 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
     }
   }
   add_spring_jacobian(y, dfdy);
-}
-
-contact::Proximity SceneModel::proximity(const ContactPair& pair, const double* y) const {
-  const int b = pair.ground() ? pair.a : pair.b;
-  return contact::measure(scene_, pair, position(y, pair.a), position(y, b), orientation(y, b));
-}
-
-void SceneModel::events(double, const double* y, double* g) {
-  for (std::size_t k = 0; k < sources_.size(); ++k) {
-    const Source& s = sources_[k];
-    if (s.swing_axis >= 0) {
-      // Falls through zero when the velocity component rises through zero.
-      g[k] = -velocity(y, s.body)[s.swing_axis];
-    } else if (s.apex) {
-      // The normal velocity falling through zero after a bounce is the apex.
-      const bool watching = after_bounce_[s.body] && !resting_[s.body];
-      g[k] = watching ? velocity(y, s.body).dot(scene_.ground->normal) : 1.0;
-    } else if (s.pair.ground() && resting_[s.pair.a]) {
-      g[k] = 1.0;
-    } else {
-      g[k] = proximity(s.pair, y).gap;
-    }
-  }
-}
-
-double SceneModel::max_step(double, const double* y) {
-  // The thickness a body presents to a contact: a sphere's diameter, a box's thinnest side.
-  const auto thickness = [&](int i) {
-    const Body& b = scene_.bodies[i];
-    if (b.shape == Shape::Sphere) return 2.0 * b.radius;
-    if (b.shape == Shape::Box) return 2.0 * b.half_extents.minCoeff();
-    return 0.0;
-  };
-  double limit = std::numeric_limits<double>::infinity();
-  for (const Source& s : sources_) {
-    if (!s.contact() || s.pair.ground()) continue;
-    const double speed = (Vector3d(velocity(y, s.pair.a)) - Vector3d(velocity(y, s.pair.b))).norm();
-    const double region = thickness(s.pair.a) + thickness(s.pair.b);
-    if (speed > 0.0 && region > 0.0) limit = std::min(limit, 0.25 * region / speed);
-  }
-  return limit;
-}
-
-double SceneModel::kinetic_energy(const double* y) const {
-  double e = 0.0;
-  for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i)
-    if (!scene_.bodies[i].fixed) e += 0.5 * scene_.bodies[i].mass * velocity(y, i).squaredNorm();
-  return e;
-}
-
-Vector3d SceneModel::momentum(const double* y) const {
-  Vector3d p = Vector3d::Zero();
-  for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i)
-    if (!scene_.bodies[i].fixed) p += scene_.bodies[i].mass * velocity(y, i);
-  return p;
-}
-
-void SceneModel::check_simultaneous(const ContactPair& pair, const double* y, double t) const {
-  for (const Source& other : sources_) {
-    const ContactPair& o = other.pair;
-    if (!other.contact() || (o.a == pair.a && o.b == pair.b)) continue;
-    const bool shares =
-        o.a == pair.a || o.a == pair.b || o.b == pair.a || (o.b >= 0 && o.b == pair.b);
-    if (!shares || (o.ground() && resting_[o.a])) continue;
-    if (proximity(o, y).gap <= kSimultaneousGap)
-      throw BeyondExactAnswer(
-          "at t = " + std::to_string(t) + " s body '" + scene_.bodies[pair.a].name +
-          "' touches two things at once: simultaneous contacts have no exact answer here");
-  }
-}
-
-void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
-  const bool ground = pair.ground();
-  const contact::Proximity p = proximity(pair, y);
-  const Vector3d relative =
-      Vector3d(velocity(y, pair.a)) - (ground ? Vector3d::Zero() : Vector3d(velocity(y, pair.b)));
-  const double closing = relative.dot(p.normal);
-  // Touching while separating (a grazing root) needs no impulse.
-  if (closing >= 0.0) return;
-  check_simultaneous(pair, y, t);
-  const double wa = inverse_mass(scene_.bodies[pair.a]);
-  const double wb = ground ? 0.0 : inverse_mass(scene_.bodies[pair.b]);
-  const double j = -(1.0 + pair.restitution) * closing / (wa + wb);
-  const double energy_before = kinetic_energy(y);
-  const Vector3d momentum_before = momentum(y);
-  Vec(y + at(pair.a) + 3) += j * wa * p.normal;
-  if (!ground) Vec(y + at(pair.b) + 3) -= j * wb * p.normal;
-  const bool b_moves = !ground && !scene_.bodies[pair.b].fixed;
-  for (int body : {pair.a, b_moves ? pair.b : -1}) {
-    if (body < 0) continue;
-    BodyEvents& e = trace_.bodies[body];
-    e.contact_times.push_back(t);
-    if (!e.post_velocity) e.post_velocity = (velocity(y, body));
-    after_bounce_[body] = true;
-  }
-  if (b_moves && !trace_.first_collision)
-    trace_.first_collision = {pair.a,        pair.b,           t, (momentum(y) - momentum_before),
-                              energy_before, kinetic_energy(y)};
-  for (int body : {pair.a, pair.b}) {
-    if (body < 0 || !resting_[body]) continue;
-    // An impulse may lift a resting body off the ground, but not press it in.
-    const double up = velocity(y, body).dot(scene_.ground->normal);
-    if (up < 0.0)
-      throw BeyondExactAnswer("at t = " + std::to_string(t) + " s body '" +
-                              scene_.bodies[body].name +
-                              "' is pushed into the ground while resting on it");
-    resting_[body] = up <= 0.0;
-  }
-  if (!ground) return;
-  // Ever smaller bounces end: a rebound this short leaves the body resting on the ground.
-  const Vector3d n = scene_.ground->normal;
-  const double pull = -scene_.gravity.dot(n);
-  const double rebound = velocity(y, pair.a).dot(n);
-  if (pull > 0.0 && 2.0 * rebound / pull < rest_flight_time()) {
-    resting_[pair.a] = true;
-    after_bounce_[pair.a] = false;
-    Vec(y + at(pair.a) + 3) -= rebound * n;
-    Vec(y + at(pair.a)) -= p.gap * n;
-  }
-}
-
-void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
-  const int i = impulse.body;
-  Vector3d v = velocity(y, i), w = spin(y, i);
-  contact::apply_impulse(scene_.bodies[i], impulse, position(y, i), orientation(y, i), v, w);
-  Vec(y + at(i) + 3) = v;
-  Vec(y + at(i) + 10) = w;
-  if (!resting_[i]) return;
-  resting_[i] = false;
-  // Pressed into the ground it rests on: the ground answers at once, as at a contact.
-  if (v.dot(scene_.ground->normal) < 0.0)
-    for (const Source& s : sources_)
-      if (s.contact() && s.pair.ground() && s.pair.a == i) resolve(s.pair, y, t);
-}
-
-void SceneModel::apply(std::size_t k, double t, double* y) {
-  const Source& s = sources_[k];
-  if (s.swing_axis >= 0) {
-    // A crossing applied with another event at the same instant may show up again just
-    // after it, when its velocity was still a hair below zero: it is one crossing.
-    std::vector<double>& crossings = trace_.bodies[s.body].upward_crossings[s.swing_axis];
-    if (crossings.empty() || t - crossings.back() > 1e-9) crossings.push_back(t);
-    return;
-  }
-  if (!s.apex) return resolve(s.pair, y, t);
-  const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
-  trace_.bodies[s.body].apex_heights.push_back(above.dot(scene_.ground->normal));
-  after_bounce_[s.body] = false;
 }
 
 }  // namespace bb
