@@ -9,6 +9,7 @@
 
 #include "contact/contact_pairs.hpp"
 #include "reference/hybrid_integrator.hpp"
+#include "scene/backend.hpp"
 #include "scene/event_trace.hpp"
 #include "scene/scene.hpp"
 #include "scene/spring_forces.hpp"
@@ -18,8 +19,8 @@ namespace bb {
 
 /// Thrown when a scene reaches a configuration the reference cannot resolve exactly
 /// (several simultaneous contacts on one body, a body resting under another).
-struct BeyondExactAnswer : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct BeyondExactAnswer : UnsupportedScene {
+  using UnsupportedScene::UnsupportedScene;
 };
 
 class SceneModel : public HybridModel {

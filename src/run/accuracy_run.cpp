@@ -3,7 +3,6 @@
 #include <new>
 
 #include "metrics/step_observer.hpp"
-#include "reference/scene_model.hpp"
 #include "run/divergence.hpp"
 #include "scene/motion.hpp"
 
@@ -72,8 +71,9 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
       for (std::size_t i = 0; i < events.bodies.size(); ++i)
         events.bodies[i].velocity_range = seen.bodies[i].velocity_range;
     }
-  } catch (const BeyondExactAnswer& e) {
-    // A scene past what the reference answers exactly is unsupported, with the reason.
+  } catch (const UnsupportedScene& e) {
+    // A scene past what the backend answers (the reference's exact answer) is unsupported,
+    // with the reason.
     record.status = RunStatus::Unsupported;
     record.reason = e.what();
   } catch (const std::bad_alloc&) {

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <variant>
@@ -20,6 +21,14 @@ namespace bb {
 using SettingValue = std::variant<double, bool, std::string>;
 /// Every engine parameter that changes results, as actually used, in a stable order.
 using Settings = std::vector<std::pair<std::string, SettingValue>>;
+
+/// Thrown by Backend::start (or a step) when a scene uses something this backend cannot
+/// simulate in a way its feature set does not capture (the reference past an exact answer,
+/// a course rule that acts against the ground only): the run is `unsupported`, with the
+/// message as its reason.
+struct UnsupportedScene : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 /// One scene advancing at one fixed step.
 class Simulation {
