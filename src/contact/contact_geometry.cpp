@@ -40,4 +40,17 @@ Proximity sphere_box(const Eigen::Vector3d& centre, double radius,
   return {-depth[axis] - radius, to_world * normal_local, box_centre + to_world * surface};
 }
 
+Proximity box_plane(const Eigen::Vector3d& centre, const Eigen::Quaterniond& orientation,
+                    const Eigen::Vector3d& half_extents, const Eigen::Vector3d& plane_point,
+                    const Eigen::Vector3d& plane_normal) {
+  const Eigen::Matrix3d to_world = orientation.normalized().toRotationMatrix();
+  // The normal in the box's frame: the lowest corner takes each axis's sign against it.
+  const Eigen::Vector3d down = -(to_world.transpose() * plane_normal);
+  Eigen::Vector3d corner;
+  for (int k = 0; k < 3; ++k) corner[k] = down[k] >= 0.0 ? half_extents[k] : -half_extents[k];
+  const Eigen::Vector3d lowest = centre + to_world * corner;
+  const double height = (lowest - plane_point).dot(plane_normal);
+  return {height, plane_normal, lowest - height * plane_normal};
+}
+
 }  // namespace bb::contact

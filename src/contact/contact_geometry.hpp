@@ -34,4 +34,12 @@ Proximity sphere_box(const Eigen::Vector3d& centre, double radius,
                      const Eigen::Vector3d& box_centre, const Eigen::Quaterniond& box_orientation,
                      const Eigen::Vector3d& half_extents);
 
+/// A box (centre, orientation, half extents) against the infinite plane through
+/// `plane_point` with unit `plane_normal`: the gap is the height of its lowest corner above
+/// the plane, the point that corner's foot on the plane. A box lying on a face has four
+/// lowest corners; the first in a fixed order stands for them.
+Proximity box_plane(const Eigen::Vector3d& centre, const Eigen::Quaterniond& orientation,
+                    const Eigen::Vector3d& half_extents, const Eigen::Vector3d& plane_point,
+                    const Eigen::Vector3d& plane_normal);
+
 }  // namespace bb::contact

@@ -7,9 +7,10 @@
 
 namespace bb::contact {
 
-/// Where the pair stands: `xa` is a's centre, `xb` and `qb` b's centre and orientation
-/// (ignored for the ground). Spheres and points (radius 0) against the plane, spheres and
-/// boxes; a is never a box.
+/// Where the pair stands: `xa` is a's centre, `xb` and `qb` b's centre and orientation;
+/// against the ground, where there is no b, `qb` is a's orientation. Spheres, points
+/// (radius 0) and boxes against the plane; spheres against spheres and boxes (a is a box
+/// only against the ground).
 Proximity measure(const Scene& scene, const ContactPair& pair, const Eigen::Vector3d& xa,
                   const Eigen::Vector3d& xb, const Eigen::Quaterniond& qb);
 

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <random>
 
 namespace bb::contact {
@@ -86,6 +88,29 @@ TEST(ContactGeometry, SphereBoxDoesNotDependOnHowTheWorldIsPlacedOrTurned) {
     EXPECT_TRUE(world.normal.isApprox(turn * local.normal, 1e-12));
     EXPECT_TRUE(world.point.isApprox(turn * local.point + shift, 1e-12));
   }
+}
+
+// A box flat on a face sits at its half height; turned 45 degrees about z it stands on an
+// edge, lower by the half diagonal; on a slope the gap is measured along the slope's normal.
+TEST(ContactGeometry, BoxPlaneLowestCornerOnLevelTurnedAndSloped) {
+  const Vector3d half(1.0, 0.5, 0.25);
+  const Vector3d up = Vector3d::UnitY();
+  const Proximity flat =
+      box_plane({3.0, 0.75, 1.0}, Quaterniond::Identity(), half, Vector3d::Zero(), up);
+  EXPECT_NEAR(flat.gap, 0.25, 1e-15);
+  EXPECT_NEAR(flat.point.y(), 0.0, 1e-15);
+  const Quaterniond edge(Eigen::AngleAxisd(std::numbers::pi / 4.0, Vector3d::UnitZ()));
+  const Proximity on_edge = box_plane({0.0, 2.0, 0.0}, edge, half, Vector3d::Zero(), up);
+  // The lowest corner in the x-y plane is at 1.5 / sqrt(2) below the centre.
+  EXPECT_NEAR(on_edge.gap, 2.0 - 1.5 / std::sqrt(2.0), 1e-14);
+  // The same box on a 30 degree slope, turned with it: its face is flat on the slope.
+  const double a = std::numbers::pi / 6.0;
+  const Vector3d normal(-std::sin(a), std::cos(a), 0.0);
+  const Quaterniond tilt(Eigen::AngleAxisd(a, Vector3d::UnitZ()));
+  const Proximity on_slope = box_plane(Vector3d(5.0, 0.0, 0.0) + 0.5 * normal, tilt, half,
+                                       Vector3d(5.0, 0.0, 0.0), normal);
+  EXPECT_NEAR(on_slope.gap, 0.0, 1e-15);
+  EXPECT_NEAR((on_slope.normal - normal).norm(), 0.0, 0.0);
 }
 
 }  // namespace
