@@ -4,6 +4,7 @@
 // detect the contacts themselves).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "scene/scene.hpp"
@@ -23,5 +24,12 @@ struct ContactPair {
 /// Every pair that can touch, the ground's first, in a fixed order. A pair named by several
 /// [[contact]] entries takes the first; two fixed bodies never touch.
 std::vector<ContactPair> contact_pairs(const Scene& scene);
+
+/// Body `body`'s pair with the ground, as contact_pairs() gives it; nullopt when the scene
+/// has no ground or the body is fixed.
+std::optional<ContactPair> ground_pair(const Scene& scene, int body);
+
+/// Whether some body's contact with the ground has friction.
+bool ground_rubs(const Scene& scene);
 
 }  // namespace bb

@@ -1,4 +1,6 @@
 // [air], [ground], [[contact]], [[spring]] and [[hinge]] of a case file.
+#include <algorithm>
+
 #include "scene/load_parts.hpp"
 
 namespace bb::load {
@@ -57,9 +59,24 @@ void read_contacts(TomlReader& root, Scene& scene) {
     TomlReader r = sub_reader(root, *t, "[[contact]]");
     Contact c;
     c.line = r.line();
-    const auto [a, b] = read_pair(r, scene, true, c.all_pairs);
-    c.body_a = a;
-    c.body_b = b;
+    // ["<body>", "ground"]: that body's contact with the ground, when the case has one.
+    const std::vector<std::string> names = r.strings("bodies");
+    const auto ground_at = std::find(names.begin(), names.end(), "ground");
+    if (scene.ground && names.size() == 2 && ground_at != names.end()) {
+      if (scene.body_index("ground") >= 0)
+        r.fail(r.line_of("bodies"), "'ground' in " + r.where() +
+                                        " could be the [ground] or the body called 'ground': "
+                                        "rename the body");
+      const std::string& body = names[ground_at == names.begin() ? 1 : 0];
+      c.ground = true;
+      c.body_a = require_body(r, scene, body, r.line_of("bodies"));
+      if (scene.bodies[c.body_a].fixed)
+        r.fail(r.line_of("bodies"), "body '" + body + "' is fixed and never touches the ground");
+    } else {
+      const auto [a, b] = read_pair(r, scene, true, c.all_pairs);
+      c.body_a = a;
+      c.body_b = b;
+    }
     c.restitution = r.number_or("restitution", 0.0);
     require_range(r, "restitution", c.restitution, 0.0, 1.0);
     // `friction` sets both coefficients; or friction_static and friction_kinetic, as

@@ -42,7 +42,7 @@ FeatureSet Scene::features() const {
     if (ground->friction_static > 0.0 || ground->friction_kinetic > 0.0) f.add(Feature::Friction);
   }
   for (const Contact& c : contacts) {
-    f.add(Feature::BodyContact);
+    if (!c.ground) f.add(Feature::BodyContact);
     if (c.restitution > 0.0) f.add(Feature::Restitution);
     if (c.friction_static > 0.0 || c.friction_kinetic > 0.0) f.add(Feature::Friction);
   }

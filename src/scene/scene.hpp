@@ -48,9 +48,12 @@ struct Ground {
   double friction_kinetic = 0.0;
 };
 
-/// Which bodies touch each other, and how. `all_pairs` stands for ["*"].
+/// Which bodies touch each other, and how. `all_pairs` stands for ["*"]; `ground` for
+/// ["<body>", "ground"], which gives one body's contact with the ground its own restitution
+/// and friction (a block of each material on one floor).
 struct Contact {
   bool all_pairs = false;
+  bool ground = false;  ///< body_a against the ground; body_b unused
   int body_a = -1;
   int body_b = -1;
   double restitution = 0.0;

@@ -6,6 +6,7 @@
 
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
+#include "scene/contact_pairs.hpp"
 #include "scene/engine_keys.hpp"
 #include "support/test_support.hpp"
 
@@ -105,6 +106,44 @@ TEST(LoadCase, NamesOfSixtyFourCharactersTabsAndLineEndsLoad) {
   // file, outside strings, is whitespace.
   EXPECT_THROW(test::scene_from("title = \"a\\tb\"\n" + std::string(test::kMinimalCase)),
                CaseError);
+}
+
+// ["<body>", "ground"] gives that body's contact with the ground its own values; the
+// others keep the [ground]'s, and no body-to-body contact appears.
+TEST(LoadCase, AContactWithTheGroundSetsThatBodysPairOnly) {
+  const Scene scene = test::scene_from(R"(name = "floor"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.1]
+report_dt = 0.1
+[ground]
+friction_static = 0.2
+[[body]]
+name = "ice"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+[[body]]
+name = "rubber"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 1.0
+position = [5.0, 0.5, 0.0]
+[[contact]]
+bodies = ["ground", "rubber"]
+friction_static = 1.0
+friction_kinetic = 0.8
+)");
+  const std::vector<ContactPair> pairs = contact_pairs(scene);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(ground_pair(scene, 0)->friction_static, 0.2);
+  EXPECT_EQ(ground_pair(scene, 0)->friction_kinetic, 0.2);
+  EXPECT_EQ(ground_pair(scene, 1)->friction_static, 1.0);
+  EXPECT_EQ(ground_pair(scene, 1)->friction_kinetic, 0.8);
+  EXPECT_TRUE(scene.features().has(Feature::Friction));
+  EXPECT_FALSE(scene.features().has(Feature::BodyContact));
 }
 
 }  // namespace
