@@ -4,6 +4,7 @@
 
 #include "contact/impulse_response.hpp"
 #include "course/course_step.hpp"
+#include "course/friction_phase.hpp"
 #include "course/integrators.hpp"
 #include "scene/motion.hpp"
 
@@ -16,8 +17,10 @@ class CourseSimulation : public Simulation {
   CourseSimulation(const Scene& scene, double dt, const CourseVariant& variant)
       : scene_(scene),
         dt_(dt),
-        phases_{course::integrator(variant.integrator), course::ground_rule(variant.ground)},
+        phases_{course::integrator(variant.integrator), course::ground_rule(variant.ground),
+                course::friction_rule(variant.friction)},
         contacts_(scene, phases_.ground),
+        friction_(scene, phases_.friction, dt),
         equations_(scene) {
     const State start = initial_state(scene);
     for (const BodyState& b : start) {
@@ -30,8 +33,19 @@ class CourseSimulation : public Simulation {
     work_.resize(start.size());
     settings_ = {{"integrator", variant.integrator}};
     if (!contacts_.empty()) settings_.push_back({"ground_rule", variant.ground});
+    if (!friction_.empty()) {
+      settings_.push_back({"friction_rule", variant.friction});
+      settings_.push_back(
+          {"friction_contact", std::string("a body within 1e-9 m of the ground at the step's start "
+                                           "feels friction throughout the step; N from the other "
+                                           "forces pressing it on the ground; a tangential speed "
+                                           "under 1e-12 m/s counts as rest")});
+    }
     acceleration_ = [this](const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                           std::vector<Vec3>& a) { equations_.accelerations(x, v, omega_, a); };
+                           std::vector<Vec3>& a) {
+      equations_.accelerations(x, v, omega_, a);
+      if (!friction_.empty()) friction_.apply(v, a);
+    };
   }
 
   void step() override {
@@ -41,13 +55,17 @@ class CourseSimulation : public Simulation {
          ++next_impulse_)
       push(scene_.impulses[next_impulse_]);
     ++steps_;
+    // Friction acts on the bodies that touch the ground as the step starts.
+    if (!friction_.empty()) friction_.begin(points_.x, orientation_, points_.v);
     // Forces and integrate: the integrator evaluates the forces at each of its stages.
     phases_.integrate(points_, dt_, acceleration_, work_);
     // Detect, then resolve: the ground rule against fixed surfaces, the blend between bodies.
     if (!contacts_.empty()) {
-      contacts_.detect(points_.x);
+      contacts_.detect(points_.x, orientation_);
       contacts_.resolve(points_.x, points_.v);
     }
+    // Friction's last word: the clamp rule stops a velocity that crossed zero.
+    if (!friction_.empty()) friction_.end(points_.v);
     // Seed section 5, kinematic rotation: each frame the orientation is multiplied on the
     // left by the rotation the spin makes in one step (exact for a torque-free sphere).
     if (spins_)
@@ -75,6 +93,7 @@ class CourseSimulation : public Simulation {
   double dt_;
   course::Phases phases_;
   course::ContactPhases contacts_;
+  course::FrictionPhase friction_;
   EquationsOfMotion equations_;
   course::PointState points_;
   course::Workspace work_;
@@ -92,7 +111,8 @@ class CourseSimulation : public Simulation {
 FeatureSet CourseBackend::supports() const {
   return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
           Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
-          Feature::Restitution, Feature::Impulse,  Feature::Springs};
+          Feature::Restitution, Feature::Impulse,  Feature::Springs,       Feature::Friction,
+          Feature::Boxes};
 }
 
 std::unique_ptr<Simulation> CourseBackend::start(const Scene& scene, double dt) const {

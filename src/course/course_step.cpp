@@ -1,21 +1,27 @@
 #include "course/course_step.hpp"
 
-namespace bb::course {
+#include "scene/backend.hpp"
 
-namespace {}  // namespace
+namespace bb::course {
 
 ContactPhases::ContactPhases(const Scene& scene, GroundRule rule)
     : scene_(scene), rule_(rule), pairs_(contact_pairs(scene)) {
-  for (const Body& b : scene.bodies) orientation_.push_back(b.orientation);
+  // The course moves a box as a point with an orientation: against the ground it has an
+  // exact gap, against another body none here.
+  for (const ContactPair& p : pairs_)
+    if (!p.ground() && scene.bodies[p.a].shape == Shape::Box)
+      throw UnsupportedScene("body '" + scene.bodies[p.a].name +
+                             "' is a moving box that touches another body: the course's contact "
+                             "rules take a moving box against the ground only");
   found_.reserve(pairs_.size());
 }
 
-void ContactPhases::detect(const std::vector<Vec3>& x) {
+void ContactPhases::detect(const std::vector<Vec3>& x, const std::vector<Quat>& q) {
   found_.clear();
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const ContactPair& p = pairs_[k];
     const int b = p.ground() ? p.a : p.b;
-    const contact::Proximity near = contact::measure(scene_, p, x[p.a], x[b], orientation_[b]);
+    const contact::Proximity near = contact::measure(scene_, p, x[p.a], x[b], q[b]);
     if (near.gap < 0.0) found_.push_back({k, near});
   }
 }

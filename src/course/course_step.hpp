@@ -1,7 +1,8 @@
 // The course step as named phases, the way Box2D and MuJoCo lay theirs out: forces,
 // integrate, detect, resolve, friction. A course variant is a choice per phase: the
-// integrator (seed section 1), the ground rule (section 3) and, later, the friction rule
-// (section 6). Between bodies the seed's restitution blend (section 4) always applies.
+// integrator (seed section 1), the ground rule (section 3) and the friction rule (section 6,
+// friction_phase.hpp). Between bodies the seed's restitution blend (section 4) always
+// applies.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -9,6 +10,7 @@
 
 #include "contact/contact_pairs.hpp"
 #include "course/collision_rules.hpp"
+#include "course/friction_rules.hpp"
 #include "course/integrators.hpp"
 #include "scene/scene.hpp"
 
@@ -16,8 +18,9 @@ namespace bb::course {
 
 /// The choice a variant makes in each phase.
 struct Phases {
-  StepFn integrate = nullptr;              ///< forces are evaluated inside, at its stages
-  GroundRule ground = GroundRule::Mirror;  ///< against the ground and fixed bodies
+  StepFn integrate = nullptr;                   ///< forces are evaluated inside, at its stages
+  GroundRule ground = GroundRule::Mirror;       ///< against the ground and fixed bodies
+  FrictionRule friction = FrictionRule::Clamp;  ///< against a ground with friction
 };
 
 /// A contact found in the detect phase: the pair and where it stands.
@@ -31,8 +34,8 @@ struct FoundContact {
 class ContactPhases {
  public:
   ContactPhases(const Scene& scene, GroundRule rule);
-  /// Detect: every pair whose gap is below zero at positions `x`.
-  void detect(const std::vector<Vec3>& x);
+  /// Detect: every pair whose gap is below zero at positions `x` and orientations `q`.
+  void detect(const std::vector<Vec3>& x, const std::vector<Quat>& q);
   /// Resolve: each found contact by the ground rule (ground, fixed bodies) or the
   /// restitution blend (two moving bodies, only while they approach).
   void resolve(std::vector<Vec3>& x, std::vector<Vec3>& v);
@@ -43,7 +46,6 @@ class ContactPhases {
   const Scene& scene_;
   GroundRule rule_;
   std::vector<ContactPair> pairs_;
-  std::vector<Eigen::Quaterniond> orientation_;  ///< of fixed bodies, which never turn
   std::vector<FoundContact> found_;
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "metrics/event_observables.hpp"
+#include "metrics/stop_observables.hpp"
 
 namespace bb {
 
@@ -45,10 +46,12 @@ std::optional<double> formula_value(const Scene& scene, const Observe& observe) 
   return terminal_speed(scene, scene.bodies[observe.body]).value;
 }
 
-ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory) {
+ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory,
+                        const EventTrace* reference) {
   if (trajectory.states.empty()) return {std::nullopt, "no samples"};
   // Bounces, contacts and collisions come from the run's events, seen at every step.
   if (auto from_events = measure_event(observe, trajectory.events)) return *from_events;
+  if (auto stop = measure_stop(scene, observe, trajectory, reference)) return *stop;
   if (observe.kind == "sag") return sag(scene, trajectory.states.back());
   const Vec3& v = trajectory.states.back()[observe.body].velocity;
   if (observe.kind == "final_speed") return {v.norm(), ""};

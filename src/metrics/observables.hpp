@@ -20,8 +20,12 @@ struct ObservableValue {
 /// - terminal_velocity: |v - wind| at the end of the run (m/s), the speed relative to the
 ///   air that tends to the terminal speed; a note where the terminal speed does not apply;
 /// - sag: how far the grid's last row hangs below its first at the end (m, along gravity);
-/// - the event kinds (bounces, contacts, period, max_stretch): see event_observables.hpp.
-ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory);
+/// - the event kinds (bounces, contacts, period, max_stretch): see event_observables.hpp;
+/// - the kinds of a sliding body (stop_time, stop_distance, rest_creep, final_velocity):
+///   see stop_observables.hpp; rest_creep counts from the reference's stop, in the events
+///   `reference` (nullptr: none).
+ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory,
+                        const EventTrace* reference);
 
 /// The sag of the scene's grid at `state`: the mean height of its first row (j = 0, the
 /// anchored row of a cloth) less that of its last row, heights along -gravity (m).

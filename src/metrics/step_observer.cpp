@@ -25,6 +25,11 @@ Vec3 momentum(const Scene& scene, const State& s, int a, int b) {
 
 }  // namespace
 
+Vec3 along_ground(const Scene& scene, const Vec3& v) {
+  if (!scene.ground) return v;
+  return v - v.dot(scene.ground->normal) * scene.ground->normal;
+}
+
 StepObserver::StepObserver(const Scene& scene)
     : scene_(scene),
       pairs_(contact_pairs(scene)),
@@ -36,7 +41,11 @@ StepObserver::StepObserver(const Scene& scene)
   for (const Observe& o : scene.observes) {
     if (o.kind == "period") swinging_.push_back(o.body);
     if (o.kind == "max_stretch") watch_stretch_ = true;
+    const bool stop = o.kind == "stop_time" || o.kind == "stop_distance" || o.kind == "rest_creep";
+    if (stop && std::find(stopping_.begin(), stopping_.end(), o.body) == stopping_.end())
+      stopping_.push_back(o.body);
   }
+  fastest_.assign(stopping_.size(), 0.0);
   if (watch_stretch_) trace_.max_stretch = 0.0;
 }
 
@@ -55,10 +64,39 @@ void StepObserver::observe_swings(double t, const State& s) {
   }
 }
 
+void StepObserver::observe_stops(double t, const State& s) {
+  const double h = t - previous_t_;
+  for (std::size_t k = 0; k < stopping_.size(); ++k) {
+    const int i = stopping_[k];
+    const Vec3 now = along_ground(scene_, s[i].velocity);
+    BodyEvents& e = trace_.bodies[i];
+    if (first_ || e.stop_time) {
+      fastest_[k] = std::max(fastest_[k], now.norm());
+      continue;
+    }
+    const Vec3 before = along_ground(scene_, previous_[i].velocity);
+    const double rest = 1e-6 * std::max(fastest_[k], scene_.gravity.norm() * h);
+    const bool was_at_rest = before.norm() <= rest;
+    if (was_at_rest && previous_t_ == 0.0 && now.norm() <= rest) {
+      e.stop_time = 0.0, e.stop_position = previous_[i].position;
+    } else if (!was_at_rest && now.norm() <= rest) {
+      e.stop_time = t, e.stop_position = s[i].position;
+    } else if (!was_at_rest && now.dot(before) < 0.0) {
+      // Turned back: the speed along the old direction crossed zero within the step.
+      const double back = now.dot(before) / before.norm();
+      const double f = before.norm() / (before.norm() - back);
+      e.stop_time = previous_t_ + f * h;
+      e.stop_position = previous_[i].position + f * (s[i].position - previous_[i].position);
+    }
+    fastest_[k] = std::max(fastest_[k], now.norm());
+  }
+}
+
 void StepObserver::observe(double t, const State& s) {
   if (!active()) return;
   const double dt = t - previous_t_;
   if (!first_ && !swinging_.empty()) observe_swings(t, s);
+  if (!stopping_.empty()) observe_stops(t, s);
   for (std::size_t k = 0; k < swinging_.size(); ++k) {
     // The swing of each component, to choose the axis the body oscillates along.
     const Vec3& v = s[swinging_[k]].velocity;

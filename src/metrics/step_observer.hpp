@@ -14,14 +14,20 @@
 
 namespace bb {
 
+/// The part of `v` along the scene's ground (all of it when there is no ground).
+Vec3 along_ground(const Scene& scene, const Vec3& v);
+
 class StepObserver {
  public:
   explicit StepObserver(const Scene& scene);
   /// The state at time t (seconds), after every step, starting with t = 0.
   void observe(double t, const State& state);
   const EventTrace& trace() const { return trace_; }
-  /// False when the scene has nothing to touch, time or stretch: observing costs nothing then.
-  bool active() const { return !pairs_.empty() || !swinging_.empty() || watch_stretch_; }
+  /// False when the scene has nothing to touch, time, stop or stretch: observing costs
+  /// nothing then.
+  bool active() const {
+    return !pairs_.empty() || !swinging_.empty() || !stopping_.empty() || watch_stretch_;
+  }
 
  private:
   const Scene& scene_;
@@ -34,7 +40,14 @@ class StepObserver {
   void observe_swings(double t, const State& s);
   std::vector<int> swinging_;     ///< bodies with a period observable
   std::vector<Vec3> low_, high_;  ///< per swinging body: smallest and largest velocity seen
-  bool watch_stretch_ = false;    ///< a max_stretch observable is asked for
+  /// The first stop of each body whose stop is observed: its velocity along the ground
+  /// reaching zero (within a millionth of the fastest it slid, or of |g| dt) or turning
+  /// back between two steps, the crossing placed by linear interpolation; at rest at the
+  /// start and still after the first step, it stopped at t = 0.
+  void observe_stops(double t, const State& s);
+  std::vector<int> stopping_;    ///< bodies with stop_time, stop_distance or rest_creep
+  std::vector<double> fastest_;  ///< per stopping body: m/s, fastest along the ground yet
+  bool watch_stretch_ = false;   ///< a max_stretch observable is asked for
   State previous_;
   double previous_t_ = 0.0;
   bool first_ = true;

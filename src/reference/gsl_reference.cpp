@@ -9,6 +9,7 @@
 #include "reference/air_force_jacobian.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/scene_model.hpp"
+#include "reference/sliding_modes.hpp"
 
 namespace bb {
 
@@ -97,6 +98,12 @@ class ReferenceSimulation : public Simulation {
                                     number(model_->rest_flight_time()) +
                                     " s (1e-6 of a sample) leaves the body resting on the ground"}};
     if (max_step_ > 0.0) s.push_back({"max_step", max_step_});
+    if (ground_rubs(scene_))
+      s.push_back({"friction_rule",
+                   std::string("Coulomb: a body resting on the ground sticks while the force "
+                               "along it is at most mu_s N, else slides straight against "
+                               "mu_k N; each stop located as an event, where mu_s decides "
+                               "again")});
     return s;
   }
   std::optional<EventTrace> exact_events() const override { return model_->trace(); }
@@ -191,7 +198,8 @@ class ReferenceSimulation : public Simulation {
 FeatureSet ReferenceBackend::supports() const {
   return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
           Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
-          Feature::Restitution, Feature::Impulse,  Feature::Boxes,         Feature::Springs};
+          Feature::Restitution, Feature::Impulse,  Feature::Boxes,         Feature::Springs,
+          Feature::Friction};
 }
 
 std::pair<std::string, std::string> ReferenceBackend::library_version() const {

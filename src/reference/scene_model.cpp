@@ -9,6 +9,7 @@
 #include "reference/cross_matrix.hpp"
 #include "reference/gsl_reference.hpp"
 #include "reference/scene_model_state.hpp"
+#include "reference/sliding_modes.hpp"
 #include "scene/air_forces.hpp"
 #include "scene/motion.hpp"
 
@@ -35,12 +36,25 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
            " bodies on springs: a reference to 1e-10 would take longer than a report allows "
            "(it is solved up to " +
            std::to_string(kMaxReferenceBodies) + " bodies)";
+  for (const Contact& c : scene.contacts)
+    if (!c.ground && (c.friction_static > 0.0 || c.friction_kinetic > 0.0))
+      return "the [[contact]] at line " + std::to_string(c.line) +
+             " has friction: friction between bodies has no event model in the reference";
   const bool touching = scene.ground || !scene.contacts.empty();
-  for (const Body& b : scene.bodies)
-    if (touching && !b.fixed && b.shape == Shape::Box)
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& b = scene.bodies[i];
+    if (!touching || b.fixed) continue;
+    const std::optional<ContactPair> on_ground = ground_pair(scene, static_cast<int>(i));
+    const bool rubs =
+        on_ground && (on_ground->friction_static > 0.0 || on_ground->friction_kinetic > 0.0);
+    if (b.shape == Shape::Sphere && rubs)
       return "body '" + b.name +
-             "' is a moving box that touches something: its contacts (edges, faces, tipping) "
-             "have no event model in the reference";
+             "' is a ball on a ground with friction: it would roll, and rolling has no model in "
+             "the reference";
+    if (b.shape != Shape::Box) continue;
+    if (const std::string why = box_slide_reason(scene, static_cast<int>(i)); !why.empty())
+      return why;
+  }
   // Bodies that start touching each other (a stack, a ball resting on another) press on
   // each other at once: no single event resolves that.
   const std::vector<double> y = SceneModel(scene).initial_state();
@@ -66,9 +80,20 @@ SceneModel::SceneModel(const Scene& scene)
       v_(scene.bodies.size()),
       force_(scene.bodies.size()),
       accelerations_(scene.bodies.size()),
+      applied_(scene.bodies.size()),
+      slides_(scene.bodies.size()),
+      mu_static_(scene.bodies.size(), 0.0),
+      mu_kinetic_(scene.bodies.size(), 0.0),
       held_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
   for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, -1, pair});
+  // A body that may slide on a ground with friction: its coefficients and its stops.
+  if (ground_rubs(scene))
+    for (const ContactPair& pair : contact_pairs(scene))
+      if (pair.ground()) {
+        mu_static_[pair.a] = pair.friction_static, mu_kinetic_[pair.a] = pair.friction_kinetic;
+        sources_.push_back({false, -1, pair.a, {}, true});
+      }
   // Apexes are heights above the ground, watched while gravity pulls towards it.
   if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
@@ -88,6 +113,9 @@ SceneModel::SceneModel(const Scene& scene)
         std::abs(velocity(y.data(), pair.a).dot(n)) <= 1e-12)
       resting_[pair.a] = true;
   }
+  // Resting on a ground with friction: stuck or sliding from the start.
+  for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
+    if (resting_[i]) settle(i, y.data(), 0.0);
 }
 
 std::vector<double> SceneModel::initial_state() const {
@@ -130,16 +158,30 @@ void SceneModel::linear_accelerations(const double* y) {
     }
     Vector3d a = scene_.gravity +
                  (force_[i] + air_force(scene_, body, velocity(y, i), spin(y, i))) / body.mass;
-    // A body resting on the ground is held there: the ground takes any push into it.
-    held_[i] = resting_[i] && a.dot(scene_.ground->normal) < 0.0;
-    if (held_[i]) a -= a.dot(scene_.ground->normal) * scene_.ground->normal;
+    applied_[i] = a;
+    // A body resting on the ground is held there: the ground takes any push into it, and
+    // its friction holds the body (stuck) or acts against its sliding, mu_k N.
+    const Vector3d n = resting_[i] ? scene_.ground->normal : Vector3d::UnitY();
+    const double press = -a.dot(n);
+    held_[i] = resting_[i] && press > 0.0;
+    if (held_[i]) {
+      a += press * n;
+      const SlideDecision& slide = slides_[i];
+      if (slide.mode == SlideMode::Stuck) a.setZero();
+      if (slide.mode == SlideMode::Sliding) a -= mu_kinetic_[i] * press * slide.direction;
+    }
     accelerations_[i] = a;
   }
 }
 
 Eigen::Matrix3d SceneModel::resting_projection(int i) const {
   Eigen::Matrix3d project = Eigen::Matrix3d::Identity();
-  if (held_[i]) project -= scene_.ground->normal * scene_.ground->normal.transpose();
+  if (!held_[i]) return project;
+  // Stuck, the body's acceleration is zero whatever the forces; sliding, the friction
+  // mu_k N along a fixed direction depends on the state only through N, which nothing
+  // the reference lets a sliding box feel (air, springs) changes.
+  if (slides_[i].mode == SlideMode::Stuck) return Eigen::Matrix3d::Zero();
+  project -= scene_.ground->normal * scene_.ground->normal.transpose();
   return project;
 }
 

@@ -1,5 +1,7 @@
 // The scene as a hybrid system for the reference: rigid bodies in free flight between
-// contacts, each contact an event resolved by Newton's restitution along the normal.
+// contacts, each contact an event resolved by Newton's restitution along the normal; a body
+// resting on a ground with friction sticks or slides by Coulomb's law (sliding_modes.hpp),
+// each stop an event.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -9,6 +11,7 @@
 
 #include "contact/contact_pairs.hpp"
 #include "reference/hybrid_integrator.hpp"
+#include "reference/sliding_modes.hpp"
 #include "scene/backend.hpp"
 #include "scene/event_trace.hpp"
 #include "scene/scene.hpp"
@@ -62,14 +65,16 @@ class SceneModel : public HybridModel {
   static std::string beyond_exact_answer(const Scene& scene);
 
  private:
-  /// What one event function watches: a contact pair's gap, a body's apex, or the
-  /// upward zero crossing of one velocity component of a body whose period is observed.
+  /// What one event function watches: a contact pair's gap, a body's apex, the upward
+  /// zero crossing of one velocity component of a body whose period is observed, or a
+  /// sliding body's speed along its direction of sliding reaching zero (a stop).
   struct Source {
     bool apex = false;
     int swing_axis = -1;  ///< 0, 1, 2 for a swing
-    int body = -1;        ///< the apex's or swing's body
+    int body = -1;        ///< the apex's, swing's or stop's body
     ContactPair pair;     ///< a contact's pair
-    bool contact() const { return !apex && swing_axis < 0; }
+    bool stop = false;
+    bool contact() const { return !apex && swing_axis < 0 && !stop; }
   };
   /// Each body's linear acceleration at `y` into accelerations_: gravity, air, springs, and
   /// a resting body held on the ground.
@@ -85,6 +90,13 @@ class SceneModel : public HybridModel {
   void resolve(const ContactPair& pair, double* y, double t);
   /// Throws BeyondExactAnswer when another contact on the bodies of `pair` is closed.
   void check_simultaneous(const ContactPair& pair, const double* y, double t) const;
+  /// A body resting on a ground with friction at time t: its tangential velocity below
+  /// rounding is set to zero, then Coulomb's law decides whether it sticks or slides
+  /// (the first time it sticks or turns is its stop). Free elsewhere.
+  void settle(int body, const double* y, double t);
+  /// A sliding body's stop event: its velocity along the ground is zeroed, the stop
+  /// recorded, and the body settled anew.
+  void stop(int body, double* y, double t);
 
   const Scene& scene_;
   std::vector<Source> sources_;
@@ -94,6 +106,9 @@ class SceneModel : public HybridModel {
   SpringNetwork springs_;
   std::vector<Eigen::Vector3d> x_, v_, force_;  ///< buffers for the spring forces
   std::vector<Eigen::Vector3d> accelerations_;  ///< m/s^2, from linear_accelerations()
+  std::vector<Eigen::Vector3d> applied_;        ///< m/s^2, the same before the ground acts
+  std::vector<SlideDecision> slides_;           ///< per body: stuck, sliding or free
+  std::vector<double> mu_static_, mu_kinetic_;  ///< per body: its contact with the ground
   std::vector<bool> held_;  ///< per body: resting, its acceleration projected onto the ground
 };
 

@@ -9,6 +9,7 @@
 #include "reference/gsl_reference.hpp"
 #include "reference/scene_model.hpp"
 #include "reference/scene_model_state.hpp"
+#include "reference/sliding_modes.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -30,6 +31,11 @@ void SceneModel::events(double, const double* y, double* g) {
     if (s.swing_axis >= 0) {
       // Falls through zero when the velocity component rises through zero.
       g[k] = -velocity(y, s.body)[s.swing_axis];
+    } else if (s.stop) {
+      // The speed along the direction of sliding falls through zero at the stop.
+      const SlideDecision& slide = slides_[s.body];
+      const bool sliding = resting_[s.body] && slide.mode == SlideMode::Sliding;
+      g[k] = sliding ? velocity(y, s.body).dot(slide.direction) : 1.0;
     } else if (s.apex) {
       // The normal velocity falling through zero after a bounce is the apex.
       const bool watching = after_bounce_[s.body] && !resting_[s.body];
@@ -124,6 +130,7 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
                               scene_.bodies[body].name +
                               "' is pushed into the ground while resting on it");
     resting_[body] = up <= 0.0;
+    if (!resting_[body]) slides_[body] = {};
   }
   if (!ground) return;
   // Ever smaller bounces end: a rebound this short leaves the body resting on the ground.
@@ -135,7 +142,32 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
     after_bounce_[pair.a] = false;
     Vec(y + at(pair.a) + 3) -= rebound * n;
     Vec(y + at(pair.a)) -= p.gap * n;
+    settle(pair.a, y, t);
   }
+}
+
+void SceneModel::settle(int i, const double* y, double t) {
+  slides_[i] = {};
+  if (!resting_[i] || (mu_static_[i] <= 0.0 && mu_kinetic_[i] <= 0.0)) return;
+  const Vector3d n = scene_.ground->normal;
+  linear_accelerations(y);
+  slides_[i] =
+      decide_slide(mu_static_[i], n, velocity(y, i), applied_[i], scene_.bodies[i].name, t);
+  // A body held from rest has stopped there (at t = 0: at rest from the start).
+  BodyEvents& e = trace_.bodies[i];
+  if (slides_[i].mode == SlideMode::Stuck && !e.stop_time)
+    e.stop_time = t, e.stop_position = position(y, i);
+}
+
+void SceneModel::stop(int i, double* y, double t) {
+  // Located to the event tolerance, the speed along the ground is what that tolerance
+  // leaves (about a for 1e-12 s): rest, exactly.
+  const Vector3d n = scene_.ground->normal;
+  Vec v(y + at(i) + 3);
+  v = v.dot(n) * n;
+  BodyEvents& e = trace_.bodies[i];
+  if (!e.stop_time) e.stop_time = t, e.stop_position = position(y, i);
+  settle(i, y, t);
 }
 
 void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
@@ -145,7 +177,15 @@ void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
   Vec(y + at(i) + 3) = v;
   Vec(y + at(i) + 10) = w;
   if (!resting_[i]) return;
+  // Along the ground it rests on, the body stays on it and slides (or stays, if the push
+  // was nothing along the ground).
+  // A push at the instant the body came to rest (a push at t = 0 on a body at rest) means
+  // it did not stop there.
+  BodyEvents& e = trace_.bodies[i];
+  if (e.stop_time && *e.stop_time == t) e.stop_time.reset();
+  if (v.dot(scene_.ground->normal) == 0.0) return settle(i, y, t);
   resting_[i] = false;
+  slides_[i] = {};
   // Pressed into the ground it rests on: the ground answers at once, as at a contact.
   if (v.dot(scene_.ground->normal) < 0.0)
     for (const Source& s : sources_)
@@ -161,6 +201,7 @@ void SceneModel::apply(std::size_t k, double t, double* y) {
     if (crossings.empty() || t - crossings.back() > 1e-9) crossings.push_back(t);
     return;
   }
+  if (s.stop) return stop(s.body, y, t);
   if (!s.apex) return resolve(s.pair, y, t);
   const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
   trace_.bodies[s.body].apex_heights.push_back(above.dot(scene_.ground->normal));

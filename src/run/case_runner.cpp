@@ -150,8 +150,10 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
     out.reference_floor = compare(scene, out.reference_run.trajectory, tight.trajectory);
     for (const Observe& o : scene.observes) {
-      const auto a = measure(scene, o, out.reference_run.trajectory).value;
-      const auto b = measure(scene, o, tight.trajectory).value;
+      const auto a =
+          measure(scene, o, out.reference_run.trajectory, &out.reference_run.trajectory.events)
+              .value;
+      const auto b = measure(scene, o, tight.trajectory, &tight.trajectory.events).value;
       if (a && b) out.observable_floor[o.name] = std::abs(*a - *b);
     }
   }

@@ -6,8 +6,8 @@
 namespace bb {
 
 struct CostOptions {
-  double min_seconds = 0.005; ///< keep repeating until the timed total reaches this
-  int min_repeats = 3;        ///< and until this many repeats, unless...
+  double min_seconds = 0.005;  ///< keep repeating until the timed total reaches this
+  int min_repeats = 3;         ///< and until this many repeats, unless...
   /// ...the timed total already reaches this: a tenth of a second of steps averages out
   /// the scheduler's noise.
   double enough_seconds = 0.1;

@@ -21,7 +21,7 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& agains
   for (const Observe& o : scene.observes) {
     ObservableResult r{o.name, {}, std::nullopt};
     if (run.status == RunStatus::Ok)
-      r.measured = measure(scene, o, run.trajectory);
+      r.measured = measure(scene, o, run.trajectory, &against.trajectory.events);
     else
       r.measured.note = "run " + status_name(run.status);
     // A kind with a formula (terminal_velocity) is compared with the formula's value; a
@@ -31,7 +31,7 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& agains
     else if (against.status == RunStatus::Ok && against.summarised)
       r.reference = measured_value(against, o.name);
     else if (against.status == RunStatus::Ok)
-      r.reference = measure(scene, o, against.trajectory).value;
+      r.reference = measure(scene, o, against.trajectory, &against.trajectory.events).value;
     run.observables.push_back(r);
   }
 }

@@ -22,6 +22,11 @@ struct BodyEvents {
   /// body whose period is observed.
   std::array<std::vector<double>, 3> upward_crossings;
   Vec3 velocity_range;  ///< m/s per axis: largest minus smallest component seen
+  /// Seconds: the first time the body's velocity along the ground reached zero or turned
+  /// back after it slid, or 0 for a body at rest from the start that stays at rest; for
+  /// bodies whose stop is observed.
+  std::optional<double> stop_time;
+  Vec3 stop_position;  ///< metres: where it was at stop_time
 };
 
 /// Momentum and kinetic energy of the whole scene just before and just after the first

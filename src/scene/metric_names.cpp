@@ -16,6 +16,7 @@ const std::vector<std::string>& observable_kinds() {
                                              "stop_time",
                                              "stop_distance",
                                              "rest_creep",
+                                             "final_velocity",
                                              "bounce_apex",
                                              "contact_time",
                                              "post_velocity",

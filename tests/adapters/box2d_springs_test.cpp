@@ -42,7 +42,7 @@ TEST_F(Box2dSprings, TheJointRunsSlowAndLosesEnergyWhereTheForceByHandDoesNot) {
   const Scene scene = load_case(test::source_path("cases/spring_pair.toml"));
   const double exact = closed_form::spring_pair_period(1.0, 1.0, 100.0);
   const auto period = [&](const RunRecord& run) {
-    return *measure(scene, scene.observes[0], run.trajectory).value;
+    return *measure(scene, scene.observes[0], run.trajectory, nullptr).value;
   };
   const RunRecord joint = run_accuracy(*engine("box2d"), scene, scene.report_dt);
   const RunRecord force = run_accuracy(*engine("box2d/force"), scene, scene.report_dt);

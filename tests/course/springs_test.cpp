@@ -59,7 +59,7 @@ TEST(CourseSprings, PeriodConvergesToTheClosedFormAsDtHalves) {
     for (double dt : scene.dt) {
       const RunRecord run = run_accuracy(course(integrator), scene, dt);
       ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
-      const auto period = measure(scene, scene.observes[0], run.trajectory).value;
+      const auto period = measure(scene, scene.observes[0], run.trajectory, nullptr).value;
       ASSERT_TRUE(period.has_value()) << integrator;
       const double error = std::abs(*period - exact);
       // Both are second order in the period (semi-implicit Euler's frequency is

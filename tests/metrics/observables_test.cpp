@@ -123,8 +123,8 @@ TEST(Observables, TerminalVelocityUsesTheSpeedRelativeToTheAir) {
   Trajectory trajectory;
   trajectory.times = {0.0};
   trajectory.states = {{BodyState{{0, 0, 0}, {-5.0, -3.0, 0.0}, {}, {}}}};
-  EXPECT_EQ(measure(scene, scene.observes[0], trajectory).value, 3.0);
-  EXPECT_EQ(measure(scene, scene.observes[1], trajectory).value, std::sqrt(34.0));
+  EXPECT_EQ(measure(scene, scene.observes[0], trajectory, nullptr).value, 3.0);
+  EXPECT_EQ(measure(scene, scene.observes[1], trajectory, nullptr).value, std::sqrt(34.0));
 }
 
 TEST(Observables, TerminalVelocityDoesNotApplyWithoutDragOrGravity) {
@@ -140,7 +140,7 @@ TEST(Observables, TerminalVelocityDoesNotApplyWithoutDragOrGravity) {
     Trajectory trajectory;
     trajectory.times = {0.0};
     trajectory.states = {{BodyState{{0, 0, 0}, {0.0, -3.0, 0.0}, {}, {}}}};
-    const ObservableValue v = measure(scene, scene.observes[0], trajectory);
+    const ObservableValue v = measure(scene, scene.observes[0], trajectory, nullptr);
     EXPECT_FALSE(v.value.has_value());
     EXPECT_EQ(v.note, why);
     EXPECT_FALSE(formula_value(scene, scene.observes[0]).has_value());

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "reference/closed_form.hpp"
 #include "metrics/observables.hpp"
+#include "reference/closed_form.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "support/test_support.hpp"
@@ -96,11 +96,10 @@ namespace bb {
 namespace {
 
 TEST(SpringReference, TimesTheSwingsExactly) {
-  Scene scene = test::scene_from(pair_case(0.0) +
-                                 "[[observe]]\nkind = \"period\"\nbody = \"a\"\n");
+  Scene scene = test::scene_from(pair_case(0.0) + "[[observe]]\nkind = \"period\"\nbody = \"a\"\n");
   const RunRecord run = run_accuracy(ReferenceBackend(), scene, scene.sample);
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
-  const ObservableValue measured = measure(scene, scene.observes[0], run.trajectory);
+  const ObservableValue measured = measure(scene, scene.observes[0], run.trajectory, nullptr);
   const auto period = measured.value;
   ASSERT_TRUE(period.has_value()) << measured.note;
   EXPECT_NEAR(*period, closed_form::spring_pair_period(1.0, 3.0, 80.0), 1e-9);

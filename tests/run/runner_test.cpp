@@ -340,7 +340,7 @@ TEST(Runner, EachChildMeasuresItsRunAndBringsBackOnlyWhatThePagePlots) {
     ASSERT_EQ(run.observables.size(), scene.observes.size());
     for (std::size_t k = 0; k < scene.observes.size(); ++k)
       EXPECT_EQ(run.observables[k].measured.value,
-                measure(scene, scene.observes[k], whole.trajectory).value)
+                measure(scene, scene.observes[k], whole.trajectory, nullptr).value)
           << run.observables[k].name;
     ASSERT_EQ(run.energy.size(), samples);
     ASSERT_EQ(run.distance.size(), samples);
