@@ -104,6 +104,17 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         plots.error + ")\n";
   }
 
+  if (!plots.stop.empty()) {
+    out += fmt::format("\n## Around the stop at report_dt = {} s\n\n", format_dt(scene.report_dt));
+    out +=
+        "For each sliding body: how far it has slid and its velocity along its direction of "
+        "sliding (its first push, else downhill), from half a second before the reference "
+        "stops it to the end of the run. A method that carries the velocity past zero turns "
+        "back and crawls here; one that holds the body draws a flat line.\n\n![around the "
+        "stop](" +
+        plots.stop + ")\n";
+  }
+
   out += "\n## Work precision\n\n";
   out +=
       "Error against the cost of computing one simulated second, one marker per dt of the "

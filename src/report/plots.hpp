@@ -1,6 +1,7 @@
 // The plots of a case, drawn with gnuplot as SVG: work-precision per chosen metric; at
 // report_dt the main coordinate and the energy of each body against time, and each
-// backend's distance from the reference against time (log scale). Long runs are thinned
+// backend's distance from the reference against time (log scale); where a body's stop is
+// observed, its slide and velocity around the stop (stop_plot.hpp). Long runs are thinned
 // for drawing (each bucket keeps its lowest and highest point) so a page's SVG stays small.
 #pragma once
 
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "report/atomic_file.hpp"
+#include "report/gnuplot.hpp"
 #include "run/results.hpp"
 
 namespace bb {
@@ -18,11 +20,9 @@ struct PlotFiles {
   std::string trajectory;  ///< file name, empty when not drawn
   std::string energy;
   std::string error;  ///< distance from the reference against time
+  std::string stop;   ///< sliding bodies around their stop; empty when none is observed
   std::string note;   ///< why plots are missing, when they are
 };
-
-/// Most points a series keeps when drawn.
-inline constexpr std::size_t kMaxPlotPoints = 2000;
 
 /// Draws every plot of the case into `batch` (file names start with the case name). A plot
 /// gnuplot could not write completely is a WriteError; gnuplot missing is a note.
@@ -30,9 +30,5 @@ PlotFiles write_plots(const CaseResults& results, FileBatch& batch);
 
 /// The file names write_plots may use for `scene`.
 std::vector<std::string> plot_file_names(const Scene& scene);
-
-/// Indices of the points of `values` to draw: all of them up to `max_points`, else per
-/// bucket the lowest and the highest, in order, and always the first and the last.
-std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t max_points);
 
 }  // namespace bb

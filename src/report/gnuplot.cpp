@@ -1,0 +1,177 @@
+#include "report/gnuplot.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace bb {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                          "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
+
+}  // namespace
+
+std::string colour(std::size_t i) {
+  return kColours[i % (sizeof(kColours) / sizeof(kColours[0]))];
+}
+
+std::string quote(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return out + "\"";
+}
+
+namespace {
+
+std::string terminal(int height) {
+  return fmt::format(
+      "set terminal svg size 960,{} noenhanced font \"sans,12\" background \"white\"\n", height);
+}
+
+}  // namespace
+
+bool gnuplot_available() {
+  static const bool available = std::system("gnuplot --version > /dev/null 2>&1") == 0;
+  return available;
+}
+
+namespace {
+
+/// Whether `path` holds a whole SVG document (gnuplot may exit 0 on a full disk).
+bool complete_svg(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  if (!in || size < 7) return false;
+  in.seekg(std::max<std::streamoff>(0, size - 64));
+  const std::string tail((std::istreambuf_iterator<char>(in)), {});
+  return tail.find("</svg>") != std::string::npos;
+}
+
+/// Runs gnuplot on `script` with its stderr into `log` and waits: "" when it succeeded,
+/// else how it ended. No shell stands between (a path may hold any character), and gnuplot
+/// dies with this process, like the children of the pool.
+std::string run_gnuplot(const std::string& script, const std::string& log) {
+  std::fflush(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) return std::string("cannot start gnuplot: ") + std::strerror(errno);
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd >= 0) dup2(fd, STDERR_FILENO);
+    execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return std::string("cannot wait for gnuplot: ") + std::strerror(errno);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  return WIFEXITED(status) ? "exit " + std::to_string(WEXITSTATUS(status))
+                           : "killed by signal " + std::to_string(WTERMSIG(status));
+}
+
+}  // namespace
+
+std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
+                 const std::string& name, int height) {
+  // gnuplot's script and data sit beside the SVG under a temporary name: if this process
+  // is killed, the next run removes them with the other temporaries of dead processes.
+  const fs::path temp = batch.folder() + "/" + name + ".plot" + temporary_suffix();
+  std::error_code ec;
+  fs::remove_all(temp, ec);
+  if (!fs::create_directory(temp, ec))
+    throw WriteError(temp.string(), ec ? ec.message() : std::string("it exists"));
+  // The temporary folder goes, whatever happens.
+  struct Cleanup {
+    fs::path path;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  } cleanup{temp};
+  const std::string output = batch.path_for(name);
+  write_whole_file((temp / "data.txt").string(), data);
+  write_whole_file((temp / "plot.gp").string(),
+                   terminal(height) + "set output " + quote(output) + "\n" +
+                       "data = " + quote((temp / "data.txt").string()) + "\n" + script_body);
+  const std::string ended = run_gnuplot((temp / "plot.gp").string(), (temp / "log.txt").string());
+  if (!ended.empty() || !complete_svg(output)) {
+    std::ifstream log(temp / "log.txt");
+    std::string said(std::istreambuf_iterator<char>(log), {});
+    while (!said.empty() && std::isspace(static_cast<unsigned char>(said.back()))) said.pop_back();
+    std::remove(output.c_str());
+    throw WriteError(batch.folder() + "/" + name,
+                     !ended.empty()
+                         ? "gnuplot failed (" + ended + ")" + (said.empty() ? "" : ": " + said)
+                         : "gnuplot left an incomplete SVG (is the disk full?)");
+  }
+  return "";
+}
+
+std::vector<const RunRecord*> report_runs(const CaseResults& results) {
+  std::vector<const RunRecord*> out = {&results.reference_run};
+  for (const RunRecord& run : results.runs)
+    if (run.dt && *run.dt == results.scene->report_dt && !run.trajectory.states.empty())
+      out.push_back(&run);
+  return out;
+}
+
+std::string series_line(std::size_t i, int block, const std::string& title) {
+  // The reference is drawn thick and black under the backends.
+  if (i == 0)
+    return fmt::format("data index {} using 1:2 with lines lw 4 lc rgb \"black\" title {}", block,
+                       quote(title));
+  return fmt::format(
+      "data index {} using 1:2 with linespoints lw 1.5 pt {} ps 0.6 pi 6 lc rgb \"{}\" title {}",
+      block, i % 13, colour(i - 1), quote(title));
+}
+
+std::string series_rows(const std::vector<double>& times, const std::vector<double>& values) {
+  std::string rows;
+  for (std::size_t j : thinned(values, kMaxPlotPoints))
+    rows += fmt::format("{:.9g} {:.9g}\n", times[j], values[j]);
+  return rows;
+}
+
+std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t max_points) {
+  const std::size_t n = values.size();
+  std::vector<std::size_t> keep;
+  if (n <= max_points || max_points < 4) {
+    for (std::size_t j = 0; j < n; ++j) keep.push_back(j);
+    return keep;
+  }
+  // Buckets of equal width; each gives its lowest and highest point, in time order.
+  const std::size_t buckets = max_points / 2 - 1;
+  keep.push_back(0);
+  for (std::size_t k = 0; k < buckets; ++k) {
+    const std::size_t from = 1 + k * (n - 2) / buckets, to = 1 + (k + 1) * (n - 2) / buckets;
+    if (from >= to) continue;
+    std::size_t low = from, high = from;
+    for (std::size_t j = from; j < to; ++j) {
+      if (values[j] < values[low]) low = j;
+      if (values[j] > values[high]) high = j;
+    }
+    keep.push_back(std::min(low, high));
+    if (low != high) keep.push_back(std::max(low, high));
+  }
+  keep.push_back(n - 1);
+  return keep;
+}
+
+}  // namespace bb

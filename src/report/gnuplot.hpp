@@ -1,0 +1,38 @@
+// Drawing with gnuplot: a plot's script and data written beside the SVG, gnuplot run
+// without a shell, the SVG checked whole; and the pieces every plot of a page shares (a
+// colour per backend, the reference thick and black, long series thinned).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/atomic_file.hpp"
+#include "run/results.hpp"
+
+namespace bb {
+
+/// Most points a series keeps when drawn.
+inline constexpr std::size_t kMaxPlotPoints = 2000;
+
+/// A fixed colour per series position, so a backend keeps its colour across plots.
+std::string colour(std::size_t i);
+/// `s` as a gnuplot string literal.
+std::string quote(const std::string& s);
+/// Whether gnuplot can be run.
+bool gnuplot_available();
+/// Runs `script_body` (which reads the file `data` names) and writes the SVG as `name`
+/// into `batch`, `height` pixels tall. Returns an error for a plot there is nothing to
+/// draw; throws WriteError when a file could not be written.
+std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
+                 const std::string& name, int height = 600);
+/// Runs at report_dt that produced samples, the reference first.
+std::vector<const RunRecord*> report_runs(const CaseResults& results);
+/// The plot clause of series `i` (0: the reference, thick and black) in data block `block`.
+std::string series_line(std::size_t i, int block, const std::string& title);
+/// The rows "t value" of one series, thinned for drawing.
+std::string series_rows(const std::vector<double>& times, const std::vector<double>& values);
+/// Indices of the points of `values` to draw: all of them up to `max_points`, else per
+/// bucket the lowest and the highest, in order, and always the first and the last.
+std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t max_points);
+
+}  // namespace bb
