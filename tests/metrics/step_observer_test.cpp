@@ -109,5 +109,76 @@ restitution = 0.5
   EXPECT_NEAR(fine.contact_times[0], truth.contact_times[0], 1.01 * scene.dt[1]);
 }
 
+// A stop seen from the steps: a velocity along the ground that turns back between two
+// steps crossed zero where the straight line between them does; one that reaches zero
+// stopped at that step; a body at rest at the start that stays there stopped at t = 0,
+// and one that starts to slide from rest has not stopped yet.
+TEST(StepObserver, StopsAreWhereTheVelocityAlongTheGroundReachesZero) {
+  const Scene scene = test::scene_from(R"(name = "stops"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.1]
+report_dt = 0.1
+[ground]
+friction_static = 0.5
+[[body]]
+name = "turns"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+[[body]]
+name = "halts"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 1.0
+position = [5.0, 0.5, 0.0]
+[[body]]
+name = "held"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 1.0
+position = [10.0, 0.5, 0.0]
+[[body]]
+name = "slips"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 1.0
+position = [15.0, 0.5, 0.0]
+[[observe]]
+kind = "stop_time"
+body = "turns"
+[[observe]]
+kind = "stop_time"
+body = "halts"
+[[observe]]
+kind = "stop_time"
+body = "held"
+[[observe]]
+kind = "stop_time"
+body = "slips"
+)");
+  StepObserver observer(scene);
+  // Velocities along x at t = 0, 0.1, 0.2, 0.3 s (a vertical part is not sliding).
+  const double turns[] = {0.3, 0.1, -0.1, -0.3}, halts[] = {0.2, 0.1, 0.0, 0.0},
+               held[] = {0.0, 0.0, 0.0, 0.0}, slips[] = {0.0, 0.5, 1.0, 1.5};
+  State s(4);
+  for (int k = 0; k < 4; ++k) {
+    const double t = 0.1 * k;
+    s[0].velocity = {turns[k], -1.0, 0.0}, s[0].position = {t, 0.5, 0.0};
+    s[1].velocity = {halts[k], 0.0, 0.0}, s[2].velocity = {held[k], 0.0, 0.0};
+    s[3].velocity = {slips[k], 0.0, 0.0};
+    observer.observe(t, s);
+  }
+  const EventTrace& e = observer.trace();
+  ASSERT_TRUE(e.bodies[0].stop_time && e.bodies[1].stop_time && e.bodies[2].stop_time);
+  EXPECT_NEAR(*e.bodies[0].stop_time, 0.15, 1e-15);
+  EXPECT_NEAR(e.bodies[0].stop_position.x(), 0.15, 1e-15);
+  EXPECT_NEAR(*e.bodies[1].stop_time, 0.2, 1e-15);
+  EXPECT_EQ(*e.bodies[2].stop_time, 0.0);
+  EXPECT_FALSE(e.bodies[3].stop_time);
+}
+
 }  // namespace
 }  // namespace bb
