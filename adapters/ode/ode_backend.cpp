@@ -11,6 +11,7 @@
 #include <mutex>
 #include <vector>
 
+#include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "ode_contacts.hpp"
 #include "scene/engine_keys.hpp"
@@ -156,7 +157,10 @@ class OdeSimulation : public Simulation {
       s.push_back({"restitution_rule",
                    std::string("ODE combines nothing: each contact takes the surface its near "
                                "callback sets; the adapter sets the case's pair restitution "
-                               "(dContactBounce) and friction_kinetic as mu on every point")});
+                               "(dContactBounce) and friction (friction_rule) as mu on every "
+                               "point")});
+      add_friction_settings(scene_, s);
+      s.push_back({"friction_model", std::string(kOdeFrictionModel)});
       s.push_back({"restitution_below_threshold",
                    std::string("a contact approaching slower than bounce_vel does not bounce")});
       s.push_back({"contact_erp_cfm", std::string("contacts use the world's erp and cfm "
@@ -248,7 +252,8 @@ class OdeBackend : public Backend {
   FeatureSet supports() const override {
     return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
             Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
-            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs};
+            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
+            Feature::Friction};
   }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `ode` wherever the scene has no springs: it takes part only where

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "../engine_friction.hpp"
 #include "scene/contact_pairs.hpp"
 
 namespace bb {
@@ -34,7 +35,7 @@ OdeContacts::OdeContacts(const Scene& scene, dWorldID world, const std::vector<d
   for (const ContactPair& pair : contact_pairs(scene)) {
     const int b = pair.ground() ? count_ - 1 : pair.b;
     const OdeSurface s{true, static_cast<dReal>(pair.restitution),
-                       static_cast<dReal>(pair.friction_kinetic)};
+                       static_cast<dReal>(engine_friction(pair))};
     surfaces_[static_cast<std::size_t>(pair.a * count_ + b)] = s;
     surfaces_[static_cast<std::size_t>(b * count_ + pair.a)] = s;
     touches[static_cast<std::size_t>(pair.a)] = true;
@@ -83,8 +84,12 @@ void OdeContacts::near_callback(void* data, dGeomID a, dGeomID b) {
   const int found = dCollide(a, b, kOdeMaxContactsPerPair, &contacts[0].geom, sizeof(dContact));
   for (int k = 0; k < found; ++k) {
     // The pair's restitution and friction on every contact point: ODE takes what is set.
+    // With friction, dContactApprox1 bounds each friction row by mu x the point's normal
+    // force (without it, by mu newtons, whatever the load). mu2 is left unset, so both
+    // rows of the point's pyramid (dPlaneSpace of the normal, ode_contacts.hpp) get mu.
     dSurfaceParameters& surface = contacts[k].surface;
     surface.mode = dContactBounce;
+    if (s.friction > 0) surface.mode |= dContactApprox1;
     surface.bounce = s.restitution;
     surface.bounce_vel = self->bounce_vel_;
     surface.mu = s.friction;

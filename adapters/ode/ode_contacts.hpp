@@ -22,8 +22,25 @@ inline constexpr int kOdeMaxContactsPerPair = 4;
 struct OdeSurface {
   bool touches = false;
   dReal restitution = 0;
-  dReal friction = 0;  ///< ODE's one Coulomb coefficient: the case's friction_kinetic
+  dReal friction = 0;  ///< ODE's one Coulomb coefficient: engine_friction()
 };
+
+/// How ODE's contact friction works with the surface the near callback sets, for
+/// engine_settings. Each contact point has two friction rows along t1 and t2 =
+/// dPlaneSpace(normal) (no dContactFDir1): for a normal with |n_z| <= 1/sqrt(2),
+/// t1 = (-n_y, n_x, 0) / |.| and t2 = n x t1 (up to sign), so on level ground x and z, on a
+/// slope about z the slope line and z. Each row is bounded on its own by mu N
+/// (dContactApprox1): a pyramid, not a cone, so a slide at 45 degrees to those axes meets up
+/// to sqrt(2) mu N and stops in 1/sqrt(2) of the distance. A 2D case (motion in x-y, slopes
+/// about z) always slides along an axis.
+inline constexpr const char* kOdeFrictionModel =
+    "dContactApprox1 on every contact with friction: each friction row bounded by mu x the "
+    "point's normal force from the same solve (without it ODE bounds it by mu newtons, "
+    "whatever the load); two rows per point (mu2 = mu), along dPlaneSpace(normal): x and z "
+    "on level ground, the slope line and z on a slope about z; each bounded on its own, a "
+    "friction pyramid: a slide along an axis meets mu N, a slide at 45 degrees to them up to "
+    "sqrt(2) mu N and stops in 1/sqrt(2) of the distance (2D cases always slide along an "
+    "axis)";
 
 /// Geoms for the scene's bodies (a sphere or a box per body that can touch something) and
 /// the ground plane, in one space; the near callback joins touching pairs each step.
