@@ -178,7 +178,7 @@ class Box2dBackend : public Backend {
   FeatureSet supports() const override {
     return {Feature::Gravity,     Feature::Drag,    Feature::Magnus,        Feature::Wind,
             Feature::Rotation,    Feature::Boxes,   Feature::GroundContact, Feature::BodyContact,
-            Feature::Restitution, Feature::Impulse, Feature::Springs};
+            Feature::Restitution, Feature::Impulse, Feature::Springs,       Feature::Friction};
   }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `box2d` wherever the scene has no springs: it takes part only

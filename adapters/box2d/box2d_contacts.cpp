@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "../engine_friction.hpp"
 #include "box2d_vectors.hpp"
 
 namespace bb {
@@ -91,8 +92,8 @@ void Box2dContacts::PreSolve(b2Contact* contact, const b2Manifold* old_manifold)
   const ContactPair* pair = pair_of(contact->GetFixtureA(), contact->GetFixtureB());
   if (pair == nullptr) return;
   contact->SetRestitution(float(pair->restitution));
-  // Box2D has one friction coefficient for sticking and sliding: the kinetic one.
-  contact->SetFriction(float(pair->friction_kinetic));
+  // Box2D has one friction coefficient for sticking and sliding (engine_friction.hpp).
+  contact->SetFriction(float(engine_friction(*pair)));
   // A contact that has just begun: would the solver bounce it? Its approach speed at the
   // first point, as the contact solver measures it (b2ContactSolver's vRel).
   if (old_manifold->pointCount > 0 || pair->restitution <= 0.0) return;
@@ -120,9 +121,12 @@ void add_contact_settings(const Scene& scene, const Box2dContacts& contacts, Set
                            "the adapter sets every contact's restitution and friction to the "
                            "case's pair value in b2ContactListener::PreSolve, before each "
                            "solve")});
-  s.push_back(
-      {"friction_rule", std::string("one coefficient for sticking and sliding (no static/kinetic "
-                                    "split): the pair's friction_kinetic")});
+  add_friction_settings(scene, s);
+  s.push_back({"friction_model",
+               std::string("one tangent row per contact point (2D: along the contact line), "
+                           "bounded by mu x that point's accumulated normal impulse, solved "
+                           "before the normal rows in each velocity iteration "
+                           "(b2ContactSolver::SolveVelocityConstraints)")});
   s.push_back({"restitution_threshold_rule",
                std::string("a contact whose normal approach speed is below "
                            "restitution_threshold m/s does not bounce (b2ContactSolver: "
@@ -133,9 +137,13 @@ void add_contact_settings(const Scene& scene, const Box2dContacts& contacts, Set
   s.push_back({"linear_slop", std::string("0.005 m (b2_linearSlop, compile-time): the "
                                           "position solver leaves this much overlap")});
   s.push_back(
-      {"polygon_skin", std::string("0.01 m (b2_polygonRadius, compile-time): boxes and the ground "
-                                   "are rounded by it, so a sphere touches them 1 cm before their "
-                                   "surfaces meet and rests about 5 mm above")});
+      {"polygon_skin",
+       std::string("0.01 m (b2_polygonRadius, compile-time): boxes and the ground box are "
+                   "rounded by it, so a sphere touches them 1 cm before their surfaces meet and "
+                   "rests about 5 mm above, and a box rests on its skin and the ground's, not "
+                   "on its face: its face about 2 cm less the 5 mm of linear slop above the "
+                   "ground (a box placed on the ground is pushed up to there)")});
+  s.push_back({"polygon_skin_m", double(b2_polygonRadius)});
   s.push_back({"position_correction",
                std::string("Baumgarte 0.2 (b2_baumgarte; 0.75 in time-of-impact steps), at "
                            "most 0.2 m per step (b2_maxLinearCorrection), compile-time")});
