@@ -6,8 +6,10 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "bullet_contacts.hpp"
 #include "bullet_settings.hpp"
@@ -47,6 +49,10 @@ class BulletSimulation : public Simulation {
     dispatcher_.setDispatcherFlags(
         btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
     configure_solver(scene, world_.getSolverInfo());
+    // Set whatever its value (bullet_contacts.hpp). The dispatcher, built already, holds
+    // the configuration's create functions, which this call changes in place.
+    configuration_.setPlaneConvexMultipointIterations(multipoint_.iterations,
+                                                      multipoint_.threshold);
     if (contacts_) {
       pairs_ = std::make_unique<PairTable>(scene);
       filter_ = std::make_unique<PairFilter>(*pairs_);
@@ -110,7 +116,7 @@ class BulletSimulation : public Simulation {
     if (kSpringsByHand && !network_.empty())
       s.push_back({"springs", std::string(kSpringsByHandMethod)});
     if (contacts_)
-      add_contact_settings(scene_, world_.getSolverInfo(), shape_figures_, s);
+      add_contact_settings(scene_, world_.getSolverInfo(), shape_figures_, multipoint_, s);
     else
       s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
     if (!scene_.impulses.empty()) s.push_back({"impulse", std::string(kImpulseMethod)});
@@ -143,10 +149,11 @@ class BulletSimulation : public Simulation {
     if (shape) {
       take_part_in_contacts(*body);
       // Bullet's own rule multiplies restitutions and frictions; with the ground's set to 1
-      // it already gives every ground pair the case's value. The callback sets every pair.
-      if (scene_.ground) {
-        body->setRestitution(btScalar(scene_.ground->restitution));
-        body->setFriction(btScalar(scene_.ground->friction_kinetic));
+      // it already gives the body's ground pair the case's value. The callback sets every
+      // pair (engine_friction.hpp: the one coefficient is friction_kinetic).
+      if (const std::optional<ContactPair> ground = ground_pair(scene_, index)) {
+        body->setRestitution(btScalar(ground->restitution));
+        body->setFriction(btScalar(engine_friction(*ground)));
       }
       if (engine_setting(scene_, "bullet", "ccd") != 0.0 && !b.fixed) {
         body->setCcdMotionThreshold(btScalar(inner_radius(b)));
@@ -196,6 +203,7 @@ class BulletSimulation : public Simulation {
   const Scene& scene_;
   double dt_;
   bool contacts_;
+  PlaneMultipoint multipoint_ = plane_multipoint(scene_);
   btDefaultCollisionConfiguration configuration_;
   btCollisionDispatcher dispatcher_{&configuration_};
   btDbvtBroadphase broadphase_;
@@ -223,7 +231,8 @@ class BulletBackend : public Backend {
   FeatureSet supports() const override {
     return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
             Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
-            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs};
+            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
+            Feature::Friction};
   }
   FeatureSet needs() const override {
     return kSpringsByHand ? FeatureSet{Feature::Springs} : FeatureSet{};

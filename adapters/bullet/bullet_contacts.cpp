@@ -1,5 +1,8 @@
 #include "bullet_contacts.hpp"
 
+#include <algorithm>
+
+#include "../engine_friction.hpp"
 #include "bullet_vectors.hpp"
 #include "scene/contact_pairs.hpp"
 
@@ -38,7 +41,7 @@ PairTable::PairTable(const Scene& scene)
     const bool point = scene.bodies[a].shape == Shape::Point ||
                        (!pair.ground() && scene.bodies[b].shape == Shape::Point);
     if (point) continue;
-    const PairMaterial m{true, btScalar(pair.restitution), btScalar(pair.friction_kinetic)};
+    const PairMaterial m{true, btScalar(pair.restitution), btScalar(engine_friction(pair))};
     cells_[static_cast<std::size_t>(a * count_ + b)] = m;
     cells_[static_cast<std::size_t>(b * count_ + a)] = m;
   }
@@ -84,6 +87,13 @@ std::unique_ptr<btCollisionShape> make_shape(const Body& body) {
 std::unique_ptr<btCollisionShape> make_ground_shape(const Ground& ground) {
   return std::make_unique<btStaticPlaneShape>(to_bt(ground.normal),
                                               btScalar(ground.normal.dot(ground.point)));
+}
+
+PlaneMultipoint plane_multipoint(const Scene& scene) {
+  const bool box_on_ground =
+      scene.ground && std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                                  [](const Body& b) { return b.shape == Shape::Box && !b.fixed; });
+  return box_on_ground ? PlaneMultipoint{6, 5} : PlaneMultipoint{};
 }
 
 }  // namespace bb

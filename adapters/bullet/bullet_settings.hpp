@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "bullet_contacts.hpp"
 #include "scene/backend.hpp"
 #include "scene/scene.hpp"
 
@@ -26,8 +27,9 @@ struct ShapeFigures {
   std::vector<double> breaking_thresholds;
 };
 
-/// Appends the contact rules and the values in effect.
+/// Appends the contact and friction rules and the values in effect.
 void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
-                          const ShapeFigures& shapes, Settings& out);
+                          const ShapeFigures& shapes, const PlaneMultipoint& multipoint,
+                          Settings& out);
 
 }  // namespace bb
