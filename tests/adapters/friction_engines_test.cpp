@@ -72,8 +72,9 @@ struct Motion {
   double stop_time = std::nan("");
   double lowest = std::numeric_limits<double>::infinity();  ///< centre above the ground, m
   double final_height = 0.0;                                ///< centre above the ground, m
-  double max_tilt = 0.0;  ///< largest angle of the box's y axis from the normal, degrees
-  double creep = 0.0;     ///< start to end, along the ground, m
+  double max_tilt = 0.0;     ///< largest angle of the box's y axis from the normal, degrees
+  double creep = 0.0;        ///< start to end, along the ground, m
+  double final_speed = 0.0;  ///< at the end, m/s
   Settings settings;
 };
 
@@ -104,6 +105,7 @@ Motion run(const Backend& backend, const Scene& scene) {
   const Vec3 move = state[0].position - p0;
   m.creep = (move - n * n.dot(move)).norm();
   m.final_height = n.dot(state[0].position - scene.ground->point);
+  m.final_speed = state[0].velocity.norm();
   m.settings = sim->settings();
   return m;
 }
@@ -197,7 +199,9 @@ TEST_P(FrictionEngines, HoldsTheBoxOnASlopeBelowTheKineticAngle) {
 // dPlaneSpace(normal), x and z on level ground, each by mu N: a pyramid, so the diagonal
 // slide meets sqrt(2) mu N and stops in 1/sqrt(2) of the axis slide's distance (the step's
 // v0 dt / 2 in both: 0.702). Bullet's one friction row per point follows the sliding
-// velocity: the same distance in any direction. Within 3% of the ratio.
+// velocity: the same distance in any direction. Within 3% of the ratio. After the stop
+// every engine is at rest but for a crawl below 3.5e-4 m/s: bullet-float's one row turns to
+// a fixed direction (x) below sqrt(FLT_EPSILON) m/s and leaves 5.5e-5 m/s along z.
 TEST_P(FrictionEngines, ADiagonalSlideShowsTheShapeOfTheFrictionLimit) {
   if (GetParam() == "box2d") GTEST_SKIP() << "box2d is 2D only";
   const double expected = GetParam() == "ode" ? 1.0 / std::numbers::sqrt2 : 1.0;
@@ -208,11 +212,12 @@ TEST_P(FrictionEngines, ADiagonalSlideShowsTheShapeOfTheFrictionLimit) {
   const double ratio = diagonal.stop_distance / along_x.stop_distance;
   std::printf(
       "%s: along x %.5f m, along z %.5f m, at 45 degrees %.5f m in %.4f s: ratio %.4f "
-      "(expected %.4f)\n",
+      "(expected %.4f); speed at 2 s %.2g m/s\n",
       GetParam().c_str(), along_x.stop_distance, along_z.stop_distance, diagonal.stop_distance,
-      diagonal.stop_time, ratio, expected);
+      diagonal.stop_time, ratio, expected, diagonal.final_speed);
   EXPECT_NEAR(along_z.stop_distance, along_x.stop_distance, 1e-3 * along_x.stop_distance);
   EXPECT_NEAR(ratio, expected, 0.03 * expected);
+  EXPECT_LT(diagonal.final_speed, 3.5e-4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, FrictionEngines,
