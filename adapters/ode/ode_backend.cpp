@@ -150,10 +150,15 @@ class OdeSimulation : public Simulation {
                                     "sphere or box geom per body that can touch, a plane for the "
                                     "ground; up to ") +
                             std::to_string(kOdeMaxContactsPerPair) + " contact points per pair"});
-      s.push_back({"detection", std::string("discrete: a contact exists only once the shapes "
-                                            "overlap at the start of a step (no continuous "
-                                            "collision detection), so a bounce is found a "
-                                            "step late and from some penetration")});
+      s.push_back(
+          {"detection",
+           std::string("discrete: a contact exists only once the shapes overlap at the start "
+                       "of a step (no continuous collision detection), so a bounce is found a "
+                       "step late and from some penetration; a box gets a contact at each "
+                       "corner at or below the plane (dCollideBoxPlane; the fourth only "
+                       "below), so a box placed exactly on a slope starts on the corners "
+                       "rounding puts there and may pivot or fall for a step (a box at rest on "
+                       "28 degrees then slides 1.8 cm/s faster, 5% further in 3 s)")});
       s.push_back({"restitution_rule",
                    std::string("ODE combines nothing: each contact takes the surface its near "
                                "callback sets; the adapter sets the case's pair restitution "
