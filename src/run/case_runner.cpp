@@ -59,32 +59,53 @@ std::map<std::string, const RunRecord*> finest_runs(const std::vector<RunRecord>
   return out;
 }
 
-/// Queues the cost measurement of `run` (serial pool), filling run.cost when it is done.
-void queue_cost(ChildPool& pool, const Backend& backend, const Scene& scene, RunRecord& run,
-                const RunOptions& options,
-                const std::function<void(const std::string&)>& progress) {
-  if (run.status != RunStatus::Ok && run.status != RunStatus::Diverged) return;
+/// Queues the cost measurement of `runs`, all of `backend`, in one child of the serial pool
+/// (a fork per backend rather than per run), filling each run's cost when it is done. A
+/// measurement that crashes or times out leaves the batch's runs without a cost.
+void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
+                 std::vector<RunRecord*> runs, const RunOptions& options,
+                 const std::function<void(const std::string&)>& progress) {
+  std::erase_if(runs, [](const RunRecord* r) {
+    return r->status != RunStatus::Ok && r->status != RunStatus::Diverged;
+  });
+  if (runs.empty()) return;
   // The reference is stepped sample by sample; its cost per step is per internal step.
-  const double dt = run.dt ? *run.dt : scene.sample;
-  const long calls = run.dt ? run.steps : scene.sample_count();
+  struct Measure {
+    double dt = 0.0;
+    long calls = 0;
+  };
+  std::vector<Measure> measures;
   const CostOptions cost = options.cost_options;
-  const double limit = 4.0 * time_limit(scene, dt, options.timeout) + 10.0 * cost.min_seconds;
+  double limit = 0.0;
+  for (const RunRecord* run : runs) {
+    const Measure m{run->dt ? *run->dt : scene.sample, run->dt ? run->steps : scene.sample_count()};
+    measures.push_back(m);
+    limit += 4.0 * time_limit(scene, m.dt, options.timeout) + 10.0 * cost.min_seconds;
+  }
   pool.submit(
-      "cost of " + run.backend,
-      [&backend, &scene, dt, calls, cost] {
-        return wire::encode(time_steps(backend, scene, dt, calls, cost));
+      "cost of " + backend.name(),
+      [&backend, &scene, measures, cost] {
+        std::vector<Timing> timings;
+        for (const Measure& m : measures)
+          timings.push_back(time_steps(backend, scene, m.dt, m.calls, cost));
+        return wire::encode(timings);
       },
       limit,
-      [&run, dt, calls, progress](const ChildOutcome& outcome) {
-        progress("cost of " + run.backend);
+      [runs, measures, progress](const ChildOutcome& outcome) {
+        for (RunRecord* run : runs) progress("cost of " + run->backend);
         if (outcome.kind != ChildOutcome::Kind::Done) return;
-        const Timing t = wire::decode_timing(outcome.payload);
-        Cost c;
-        c.repeats = t.repeats;
-        c.ns_per_step =
-            run.steps > 0 ? t.median_seconds * 1e9 / static_cast<double>(run.steps) : 0.0;
-        c.seconds_per_simulated_second = t.median_seconds / (static_cast<double>(calls) * dt);
-        run.cost = c;
+        const std::vector<Timing> timings = wire::decode_timings(outcome.payload);
+        for (std::size_t k = 0; k < runs.size() && k < timings.size(); ++k) {
+          RunRecord& run = *runs[k];
+          const Timing& t = timings[k];
+          Cost c;
+          c.repeats = t.repeats;
+          c.ns_per_step =
+              run.steps > 0 ? t.median_seconds * 1e9 / static_cast<double>(run.steps) : 0.0;
+          c.seconds_per_simulated_second =
+              t.median_seconds / (static_cast<double>(measures[k].calls) * measures[k].dt);
+          run.cost = c;
+        }
       });
 }
 
@@ -204,9 +225,15 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
   if (options.cost) {
     ChildPool serial(1, options.isolation);
-    queue_cost(serial, reference, scene, out.reference_run, options, progress);
-    for (std::size_t i = 0; i < jobs.size(); ++i)
-      queue_cost(serial, *jobs[i].backend, scene, out.runs[i], options, progress);
+    queue_costs(serial, reference, scene, {&out.reference_run}, options, progress);
+    // One child per backend measures all its runs, in the order of the sweep.
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      if (i > 0 && jobs[i].backend == jobs[i - 1].backend) continue;
+      std::vector<RunRecord*> runs;
+      for (std::size_t k = i; k < jobs.size() && jobs[k].backend == jobs[i].backend; ++k)
+        runs.push_back(&out.runs[k]);
+      queue_costs(serial, *jobs[i].backend, scene, runs, options, progress);
+    }
     serial.run();
   }
 

@@ -234,6 +234,24 @@ Timing decode_timing(const std::string& bytes) {
   return t;
 }
 
+std::string encode(const std::vector<Timing>& timings) {
+  Writer w;
+  w.raw<std::uint64_t>(timings.size());
+  for (const Timing& t : timings) w.raw(t.median_seconds), w.raw(t.repeats), w.raw(t.calls_timed);
+  return w.take();
+}
+
+std::vector<Timing> decode_timings(const std::string& bytes) {
+  Reader r(bytes);
+  std::vector<Timing> out(r.raw<std::uint64_t>());
+  for (Timing& t : out) {
+    t.median_seconds = r.raw<double>();
+    t.repeats = r.raw<int>();
+    t.calls_timed = r.raw<long>();
+  }
+  return out;
+}
+
 std::string encode(const StabilityTrial& trial) {
   Writer w;
   w.raw<char>(trial.stable);

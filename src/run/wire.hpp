@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "run/cost.hpp"
 #include "run/results.hpp"
@@ -15,6 +16,9 @@ RunRecord decode_run(const std::string& bytes);
 
 std::string encode(const Timing& timing);
 Timing decode_timing(const std::string& bytes);
+/// Several timings, in order (one child's cost pass over a backend's runs).
+std::string encode(const std::vector<Timing>& timings);
+std::vector<Timing> decode_timings(const std::string& bytes);
 
 std::string encode(const StabilityTrial& trial);
 StabilityTrial decode_trial(const std::string& bytes);

@@ -79,5 +79,15 @@ TEST(Wire, StatesOfAFewBodiesComeBack) {
   EXPECT_FALSE(back.summarised);
 }
 
+TEST(Wire, ABackendsTimingsComeBackInOrder) {
+  const std::vector<Timing> timings = {{0.5, 3, 100}, {1e-6, 30, 7}};
+  const std::vector<Timing> back = wire::decode_timings(wire::encode(timings));
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].median_seconds, 1e-6);
+  EXPECT_EQ(back[1].repeats, 30);
+  EXPECT_EQ(back[1].calls_timed, 7);
+  EXPECT_EQ(back[0].median_seconds, 0.5);
+}
+
 }  // namespace
 }  // namespace bb
