@@ -14,7 +14,7 @@ struct CostOptions {
   /// A repeat stops timing after this many seconds of calls and the rest of the run is
   /// extrapolated from them: a grid's engine at its finest dt would take seconds, each
   /// step much like the others.
-  double max_seconds_per_repeat = 0.02;
+  double max_seconds_per_repeat = 0.01;
   int max_repeats = 30;  ///< the median of thirty is steady; each repeat builds the scene anew
 };
 
