@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "report/format.hpp"
 #include "report/table.hpp"
 
@@ -27,6 +30,25 @@ std::string shape_cell(const Body& b) {
   return "?";
 }
 
+std::string friction(double mu_static, double mu_kinetic) {
+  if (mu_static == 0.0 && mu_kinetic == 0.0) return "none";
+  return fmt::format("mu_s {:g}, mu_k {:g}", mu_static, mu_kinetic);
+}
+
+/// The ground: where, how tilted (the angle of its normal from the vertical against
+/// gravity), and its restitution and friction.
+std::string ground_line(const Scene& scene) {
+  const Ground& g = *scene.ground;
+  const double gravity = scene.gravity.norm();
+  const Vec3 up = gravity > 0.0 ? Vec3(-scene.gravity / gravity) : Vec3::UnitY();
+  const double slope = std::acos(std::clamp(g.normal.dot(up), -1.0, 1.0)) * 180.0 / M_PI;
+  return fmt::format(
+      "- a ground plane through {} with normal {} ({}), restitution {:g}, friction {}\n",
+      vec(g.point, scene.dims), vec(g.normal, scene.dims),
+      slope < 1e-9 ? std::string("level") : fmt::format("a slope of {:.4g} degrees", slope),
+      g.restitution, friction(g.friction_static, g.friction_kinetic));
+}
+
 }  // namespace
 
 std::string describe_scene(const Scene& scene) {
@@ -44,7 +66,15 @@ std::string describe_scene(const Scene& scene) {
         scene.air->density, vec(scene.air->wind, scene.dims));
   else
     out += "- no air: no drag, no wind, no Magnus\n";
-  out += scene.ground ? "- a ground plane\n" : "- no ground: nothing to touch\n";
+  out += scene.ground ? ground_line(scene) : "- no ground: nothing to touch\n";
+  for (const Contact& c : scene.contacts) {
+    const std::string who =
+        c.all_pairs ? "every pair of bodies"
+        : c.ground  ? scene.bodies[c.body_a].name + " and the ground"
+                    : scene.bodies[c.body_a].name + " and " + scene.bodies[c.body_b].name;
+    out += fmt::format("- contact: {}, restitution {:g}, friction {}\n", who, c.restitution,
+                       friction(c.friction_static, c.friction_kinetic));
+  }
   Table t;
   t.headers = {"body",     "shape",      "mass kg",      "Cd",
                "magnus k", "position m", "velocity m/s", "spin rad/s"};
