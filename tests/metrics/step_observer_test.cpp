@@ -114,39 +114,10 @@ restitution = 0.5
 // stopped at that step; a body at rest at the start that stays there stopped at t = 0,
 // and one that starts to slide from rest has not stopped yet.
 TEST(StepObserver, StopsAreWhereTheVelocityAlongTheGroundReachesZero) {
-  const Scene scene = test::scene_from(R"(name = "stops"
-dims = 2
-duration = 1.0
-sample = 0.1
-dt = [0.1]
-report_dt = 0.1
-[ground]
-friction_static = 0.5
-[[body]]
-name = "turns"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [0.0, 0.5, 0.0]
-[[body]]
-name = "halts"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [5.0, 0.5, 0.0]
-[[body]]
-name = "held"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [10.0, 0.5, 0.0]
-[[body]]
-name = "slips"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [15.0, 0.5, 0.0]
-[[observe]]
+  const Scene scene = test::scene_from(
+      test::level_ground_case("stops", "friction_static = 0.5\n") +
+      test::resting_box("turns", 0.0) + test::resting_box("halts", 5.0) +
+      test::resting_box("held", 10.0) + test::resting_box("slips", 15.0) + R"([[observe]]
 kind = "stop_time"
 body = "turns"
 [[observe]]

@@ -111,27 +111,9 @@ TEST(LoadCase, NamesOfSixtyFourCharactersTabsAndLineEndsLoad) {
 // ["<body>", "ground"] gives that body's contact with the ground its own values; the
 // others keep the [ground]'s, and no body-to-body contact appears.
 TEST(LoadCase, AContactWithTheGroundSetsThatBodysPairOnly) {
-  const Scene scene = test::scene_from(R"(name = "floor"
-dims = 2
-duration = 1.0
-sample = 0.1
-dt = [0.1]
-report_dt = 0.1
-[ground]
-friction_static = 0.2
-[[body]]
-name = "ice"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [0.0, 0.5, 0.0]
-[[body]]
-name = "rubber"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [5.0, 0.5, 0.0]
-[[contact]]
+  const Scene scene = test::scene_from(test::level_ground_case("floor", "friction_static = 0.2\n") +
+                                       test::resting_box("ice", 0.0) +
+                                       test::resting_box("rubber", 5.0) + R"([[contact]]
 bodies = ["ground", "rubber"]
 friction_static = 1.0
 friction_kinetic = 0.8

@@ -97,4 +97,19 @@ bodies = ["low", "high"]
 restitution = 0.5
 )";
 
+/// A 1 m, 1 kg cube resting on a level ground at x: a case's [[body]] entry.
+inline std::string resting_box(const std::string& name, double x) {
+  return "[[body]]\nname = \"" + name +
+         "\"\nshape = \"box\"\nhalf_extents = [0.5, 0.5, 0.5]\nmass = 1.0\nposition = [" +
+         std::to_string(x) + ", 0.5, 0.0]\n";
+}
+
+/// A 2D case head of `name` with one step of 0.1 s over 1 s and a level ground whose
+/// friction section is `ground` (the lines after [ground]).
+inline std::string level_ground_case(const std::string& name, const std::string& ground) {
+  return "name = \"" + name +
+         "\"\ndims = 2\nduration = 1.0\nsample = 0.1\ndt = [0.1]\nreport_dt = 0.1\n[ground]\n" +
+         ground;
+}
+
 }  // namespace bb::test
