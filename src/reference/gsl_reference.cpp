@@ -4,12 +4,12 @@
 
 #include <Eigen/Eigenvalues>
 #include <memory>
-#include <sstream>
 
 #include "reference/air_force_jacobian.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/scene_model.hpp"
 #include "reference/sliding_modes.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -52,12 +52,6 @@ double fastest_rate(const Scene& scene, const SceneModel& model, const std::vect
   return rate;
 }
 
-std::string number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 /// The scene as a hybrid system (scene_model.hpp), solved by the hybrid integrator. Impulses
 /// due at a step's start are applied first, as every backend applies them.
 class ReferenceSimulation : public Simulation {
@@ -93,9 +87,9 @@ class ReferenceSimulation : public Simulation {
                   {"stiffness_rule",
                    "msbdf with the analytic Jacobian from where the fastest "
                    "rate times the sample exceeds " +
-                       number(kStiffRateTimesSample)},
+                       short_number(kStiffRateTimesSample)},
                   {"rest_rule", "a ground bounce whose flight would last less than " +
-                                    number(model_->rest_flight_time()) +
+                                    short_number(model_->rest_flight_time()) +
                                     " s (1e-6 of a sample) leaves the body resting on the ground"}};
     if (max_step_ > 0.0) s.push_back({"max_step", max_step_});
     if (ground_rubs(scene_))
@@ -165,13 +159,14 @@ class ReferenceSimulation : public Simulation {
     // msbdf factors a dense Jacobian of the whole state: beyond some size, too slow to use.
     if (scene_.bodies.size() > kMaxImplicitBodies)
       throw BeyondExactAnswer("stiff (the fastest rate times the sample is " +
-                              number(rate * scene_.sample) + ") with " +
+                              short_number(rate * scene_.sample) + ") with " +
                               std::to_string(scene_.bodies.size()) +
                               " bodies: the implicit solver's "
                               "dense Jacobian would take too long (it is used up to " +
                               std::to_string(kMaxImplicitBodies) + " bodies)");
-    switch_note_ = "stiff from t = " + number(t) + " s, where the fastest rate is " + number(rate) +
-                   " /s (times the sample: " + number(rate * scene_.sample) + ")";
+    switch_note_ = "stiff from t = " + short_number(t) + " s, where the fastest rate is " +
+                   short_number(rate) +
+                   " /s (times the sample: " + short_number(rate * scene_.sample) + ")";
     implicit_ = true;
     earlier_steps_ += integrator_->steps();
     std::vector<double> y = integrator_->state();

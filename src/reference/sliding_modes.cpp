@@ -1,11 +1,11 @@
 #include "reference/sliding_modes.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "contact/contact_geometry.hpp"
 #include "reference/scene_model.hpp"
 #include "scene/contact_pairs.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -13,12 +13,6 @@ namespace {
 
 Eigen::Vector3d tangential(const Eigen::Vector3d& v, const Eigen::Vector3d& n) {
   return v - v.dot(n) * n;
-}
-
-std::string number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
 }
 
 }  // namespace
@@ -37,8 +31,8 @@ SlideDecision decide_slide(double mu_static, const Eigen::Vector3d& n, const Eig
   // A tangential force across the sliding direction would curve the path.
   const double across = (push - push.dot(d.direction) * d.direction).norm();
   if (across > 1e-9 * std::max(1.0, a.norm()))
-    throw BeyondExactAnswer("at t = " + number(t) + " s body '" + body +
-                            "' slides across the force along the ground (" + number(across) +
+    throw BeyondExactAnswer("at t = " + short_number(t) + " s body '" + body +
+                            "' slides across the force along the ground (" + short_number(across) +
                             " m/s^2 across its path): the reference models straight slides only");
   return d;
 }
@@ -64,9 +58,10 @@ std::string tipping_reason(const Scene& scene, const Body& box) {
   const double ratio =
       std::max(slides ? g->friction_kinetic : 0.0, slope <= g->friction_static ? slope : 0.0);
   if (h * ratio <= w) return "";
-  return "box '" + box.name + "' may tip over an edge: friction at its face " + number(h) +
-         " m below its centre against " + number(ratio) + " of its weight's normal part beats " +
-         "its half width " + number(w) + " m (tipping has no event model in the reference)";
+  return "box '" + box.name + "' may tip over an edge: friction at its face " + short_number(h) +
+         " m below its centre against " + short_number(ratio) +
+         " of its weight's normal part beats " + "its half width " + short_number(w) +
+         " m (tipping has no event model in the reference)";
 }
 
 std::string box_slide_reason(const Scene& scene, int index) {

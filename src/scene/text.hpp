@@ -35,6 +35,13 @@ inline bool is_name(const std::string& s, bool upper, const char* extra = "") {
   return true;
 }
 
+/// A number for a message, as a stream writes it (6 significant digits).
+inline std::string short_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
 /// A step as people write it: "1/60" when 1/dt is a whole number, else seconds (6 digits).
 inline std::string format_dt(double dt) {
   const double rate = 1.0 / dt;
