@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "metrics/observables.hpp"
+#include "reference/gsl_reference.hpp"
+#include "run/accuracy_run.hpp"
+#include "scene/load_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -218,6 +222,25 @@ TEST_P(FrictionEngines, ADiagonalSlideShowsTheShapeOfTheFrictionLimit) {
   EXPECT_NEAR(along_z.stop_distance, along_x.stop_distance, 1e-3 * along_x.stop_distance);
   EXPECT_NEAR(ratio, expected, 0.03 * expected);
   EXPECT_LT(diagonal.final_speed, 3.5e-4);
+}
+
+// On the bundled slope_hold (28 degrees, between atan mu_k and atan mu_s) the reference
+// holds the block and every engine, given mu_k, lets it go: its rest_creep is a number, the
+// whole slide after the reference's stop at t = 0 (about g (sin - mu_k cos) t^2 / 2, 1.24 m).
+TEST_P(FrictionEngines, ReportsItsCreepOnSlopeHold) {
+  const Scene scene = load_case(test::source_path("cases/slope_hold.toml"));
+  const RunRecord ref = run_accuracy(ReferenceBackend(), scene, scene.report_dt);
+  const RunRecord run = run_accuracy(backend(), scene, scene.report_dt);
+  ASSERT_EQ(ref.status, RunStatus::Ok) << ref.reason;
+  ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+  const Observe creep{"rest_creep", 0, 0, 0, "rest_creep/block"};
+  const ObservableValue held = measure(scene, creep, ref.trajectory, &ref.trajectory.events);
+  const ObservableValue slid = measure(scene, creep, run.trajectory, &ref.trajectory.events);
+  ASSERT_TRUE(held.value && slid.value) << held.note << slid.note;
+  std::printf("%s on slope_hold: creep %.4f m (reference %.3g m)\n", GetParam().c_str(),
+              *slid.value, *held.value);
+  EXPECT_EQ(*held.value, 0.0);
+  EXPECT_GT(*slid.value, 1.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, FrictionEngines,
