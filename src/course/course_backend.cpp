@@ -6,6 +6,7 @@
 #include "course/course_step.hpp"
 #include "course/friction_phase.hpp"
 #include "course/integrators.hpp"
+#include "course/rigid_rotation.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -29,6 +30,13 @@ class CourseSimulation : public Simulation {
       orientation_.push_back(b.orientation);
       omega_.push_back(b.angular_velocity);
       spins_ = spins_ || b.angular_velocity.norm() > 0.0;
+    }
+    // A body whose inertia differs along its axes turns by the seed's rigid rotation.
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      const Vec3 principal = principal_inertia(scene.bodies[i]);
+      principal_.push_back(principal);
+      rigid_.push_back(!scene.bodies[i].fixed && principal.maxCoeff() > principal.minCoeff());
+      momentum_.push_back(course::world_inertia(principal, orientation_[i]) * omega_[i]);
     }
     work_.resize(start.size());
     settings_ = {{"integrator", variant.integrator}};
@@ -66,12 +74,21 @@ class CourseSimulation : public Simulation {
     }
     // Friction's last word: the clamp rule stops a velocity that crossed zero.
     if (!friction_.empty()) friction_.end(points_.v);
-    // Seed section 5, kinematic rotation: each frame the orientation is multiplied on the
-    // left by the rotation the spin makes in one step (exact for a torque-free sphere).
+    // Seed section 5. A sphere's spin is kinematic: each frame the orientation is
+    // multiplied on the left by the rotation the spin makes in one step (exact for a
+    // torque-free sphere). A body whose inertia differs along its axes keeps its angular
+    // momentum instead, and its spin follows from it (rigid_rotation.hpp); nothing here
+    // exerts a torque on it yet.
     if (spins_)
-      for (std::size_t i = 0; i < omega_.size(); ++i)
+      for (std::size_t i = 0; i < omega_.size(); ++i) {
+        if (rigid_[i]) {
+          course::rotate_rigid(principal_[i], Vec3::Zero(), dt_, momentum_[i], orientation_[i],
+                               omega_[i]);
+          continue;
+        }
         orientation_[i] =
             (quat_from_rotation_vector(omega_[i], dt_) * orientation_[i]).normalized();
+      }
   }
 
   void read(State& out) const override {
@@ -86,6 +103,7 @@ class CourseSimulation : public Simulation {
     const std::size_t i = static_cast<std::size_t>(imp.body);
     contact::apply_impulse(scene_.bodies[i], imp, points_.x[i], orientation_[i], points_.v[i],
                            omega_[i]);
+    momentum_[i] = course::world_inertia(principal_[i], orientation_[i]) * omega_[i];
     spins_ = spins_ || omega_[i].norm() > 0.0;
   }
 
@@ -100,6 +118,9 @@ class CourseSimulation : public Simulation {
   course::AccelerationFn acceleration_;
   std::vector<Quat> orientation_;
   std::vector<Vec3> omega_;
+  std::vector<Vec3> principal_;  ///< principal moments of inertia, kg m^2
+  std::vector<char> rigid_;      ///< per body: turned by rigid rotation, not kinematically
+  std::vector<Vec3> momentum_;   ///< angular momentum, world frame (rigid bodies)
   bool spins_ = false;
   long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
   std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet

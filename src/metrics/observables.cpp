@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "metrics/event_observables.hpp"
+#include "metrics/rotation_observables.hpp"
 #include "metrics/stop_observables.hpp"
 
 namespace bb {
@@ -52,6 +53,7 @@ ObservableValue measure(const Scene& scene, const Observe& observe, const Trajec
   // Bounces, contacts and collisions come from the run's events, seen at every step.
   if (auto from_events = measure_event(observe, trajectory.events)) return *from_events;
   if (auto stop = measure_stop(scene, observe, trajectory, reference)) return *stop;
+  if (auto turn = measure_rotation(scene, observe, trajectory)) return *turn;
   if (observe.kind == "sag") return sag(scene, trajectory.states.back());
   const Vec3& v = trajectory.states.back()[observe.body].velocity;
   if (observe.kind == "final_speed") return {v.norm(), ""};

@@ -23,7 +23,8 @@ struct ObservableValue {
 /// - the event kinds (bounces, contacts, period, max_stretch): see event_observables.hpp;
 /// - the kinds of a sliding body (stop_time, stop_distance, rest_creep, final_velocity):
 ///   see stop_observables.hpp; rest_creep counts from the reference's stop, in the events
-///   `reference` (nullptr: none).
+///   `reference` (nullptr: none);
+/// - flips, how often a body turned over about its middle axis: see rotation_observables.hpp.
 ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory,
                         const EventTrace* reference);
 

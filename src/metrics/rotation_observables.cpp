@@ -1,0 +1,39 @@
+#include "metrics/rotation_observables.hpp"
+
+#include <Eigen/Geometry>
+
+namespace bb {
+
+std::optional<ObservableValue> measure_rotation(const Scene& scene, const Observe& observe,
+                                                const Trajectory& trajectory) {
+  if (observe.kind != "flips") return std::nullopt;
+  const Body& body = scene.bodies[observe.body];
+  const Vec3 principal = principal_inertia(body);
+  // The middle axis: neither the largest nor the smallest moment, and distinct from both.
+  Eigen::Index low = 0, high = 0;
+  principal.minCoeff(&low);
+  principal.maxCoeff(&high);
+  const Eigen::Index middle = 3 - low - high;
+  const double gap = 1e-9 * principal.maxCoeff();
+  if (low == high || principal[middle] - principal[low] <= gap ||
+      principal[high] - principal[middle] <= gap)
+    return ObservableValue{
+        std::nullopt, "does not apply: " + body.name + " has no distinct middle principal axis"};
+  const BodyState& start = trajectory.states.front()[observe.body];
+  const Eigen::Matrix3d r0 = start.orientation.toRotationMatrix();
+  const Vec3 momentum = r0 * principal.asDiagonal() * r0.transpose() * start.angular_velocity;
+  if (momentum.norm() == 0.0) return ObservableValue{0.0, ""};
+  const Vec3 along = momentum.normalized();
+  Vec3 axis = Vec3::Zero();
+  axis[middle] = 1.0;
+  int flips = 0;
+  double last = 0.0;
+  for (const State& s : trajectory.states) {
+    const double now = (s[observe.body].orientation * axis).dot(along);
+    if (last != 0.0 && now != 0.0 && (now > 0.0) != (last > 0.0)) ++flips;
+    if (now != 0.0) last = now;
+  }
+  return ObservableValue{static_cast<double>(flips), ""};
+}
+
+}  // namespace bb
