@@ -115,6 +115,18 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         plots.stop + ")\n";
   }
 
+  if (!plots.rotation.empty()) {
+    out += fmt::format("\n## Rotation at report_dt = {} s\n\n", format_dt(scene.report_dt));
+    out += scene.dims == 2
+               ? "For each turning body: its angle about z (unwrapped) and its angular velocity, "
+                 "every backend over the reference.\n\n"
+               : "For each turning body: how far the body axis it first spun about has tilted "
+                 "from where it started (a tennis-racket flip swings it to 180 degrees and "
+                 "back), and its spin about that axis in the body frame (which changes sign at "
+                 "each flip), every backend over the reference.\n\n";
+    out += "![rotation](" + plots.rotation + ")\n";
+  }
+
   out += "\n## Work precision\n\n";
   out +=
       "Error against the cost of computing one simulated second, one marker per dt of the "

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "report/gnuplot.hpp"
+#include "report/rotation_plot.hpp"
 #include "report/stop_plot.hpp"
 #include "report/work_precision.hpp"
 #include "run/run_summary.hpp"
@@ -171,6 +172,7 @@ std::vector<std::string> plot_file_names(const Scene& scene) {
   for (const char* kind : {"-trajectory.svg", "-energy.svg", "-error.svg"})
     names.push_back(scene.name + kind);
   if (!stopping_bodies(scene).empty()) names.push_back(scene.name + "-stop.svg");
+  if (!turning_bodies(scene).empty()) names.push_back(scene.name + "-rotation.svg");
   return names;
 }
 
@@ -201,6 +203,9 @@ PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
   if (const std::string file = scene.name + "-stop.svg";
       !stopping_bodies(scene).empty() && attempt(file, stop_plot(results, batch, file)))
     files.stop = file;
+  if (const std::string file = scene.name + "-rotation.svg";
+      !turning_bodies(scene).empty() && attempt(file, rotation_plot(results, batch, file)))
+    files.rotation = file;
   return files;
 }
 

@@ -1,7 +1,8 @@
 // The plots of a case, drawn with gnuplot as SVG: work-precision per chosen metric; at
 // report_dt the main coordinate and the energy of each body against time, and each
 // backend's distance from the reference against time (log scale); where a body's stop is
-// observed, its slide and velocity around the stop (stop_plot.hpp). Long runs are thinned
+// observed, its slide and velocity around the stop (stop_plot.hpp); where a body turns,
+// its angle and spin (rotation_plot.hpp). Long runs are thinned
 // for drawing (each bucket keeps its lowest and highest point) so a page's SVG stays small.
 #pragma once
 
@@ -19,9 +20,10 @@ struct PlotFiles {
   std::vector<std::pair<std::string, std::string>> work_precision;
   std::string trajectory;  ///< file name, empty when not drawn
   std::string energy;
-  std::string error;  ///< distance from the reference against time
-  std::string stop;   ///< sliding bodies around their stop; empty when none is observed
-  std::string note;   ///< why plots are missing, when they are
+  std::string error;     ///< distance from the reference against time
+  std::string stop;      ///< sliding bodies around their stop; empty when none is observed
+  std::string rotation;  ///< turning bodies' angle and spin; empty when none turns
+  std::string note;      ///< why plots are missing, when they are
 };
 
 /// Draws every plot of the case into `batch` (file names start with the case name). A plot

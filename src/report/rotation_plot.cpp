@@ -1,0 +1,110 @@
+#include "report/rotation_plot.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "report/gnuplot.hpp"
+#include "run/run_summary.hpp"
+
+namespace bb {
+
+namespace {
+
+/// The body axis (0, 1, 2) closest to the body's initial spin.
+int spin_axis(const Body& body) {
+  const Vec3 local = (body.orientation.conjugate() * body.angular_velocity).cwiseAbs();
+  Eigen::Index axis = 2;
+  if (local.norm() > 0.0) local.maxCoeff(&axis);
+  return static_cast<int>(axis);
+}
+
+/// The two series of `body` in one run: angle (degrees) and angular velocity (rad/s).
+void series(const Scene& scene, int body, const Trajectory& t, std::vector<double>& angle,
+            std::vector<double>& rate) {
+  const int axis = spin_axis(scene.bodies[body]);
+  Vec3 unit = Vec3::Zero();
+  unit[axis] = 1.0;
+  const Vec3 start = t.states.front()[body].orientation * unit;
+  double last = 0.0, turns = 0.0;
+  for (const State& s : t.states) {
+    const BodyState& b = s[body];
+    if (scene.dims == 2) {
+      // Unwrapped: a jump of more than half a turn between samples is a wrap.
+      const double a = angle_about_z(b.orientation) * 180.0 / std::numbers::pi;
+      if (!angle.empty() && a - last > 180.0) turns -= 360.0;
+      if (!angle.empty() && a - last < -180.0) turns += 360.0;
+      last = a;
+      angle.push_back(a + turns);
+      rate.push_back(b.angular_velocity.z());
+    } else {
+      const double c = std::clamp((b.orientation * unit).dot(start), -1.0, 1.0);
+      angle.push_back(std::acos(c) * 180.0 / std::numbers::pi);
+      rate.push_back((b.orientation.conjugate() * b.angular_velocity)[axis]);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<int> turning_bodies(const Scene& scene) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < scene.bodies.size() && i < kPlottedBodies; ++i) {
+    const Body& b = scene.bodies[i];
+    const bool flips = std::any_of(
+        scene.observes.begin(), scene.observes.end(),
+        [&](const Observe& o) { return o.kind == "flips" && o.body == static_cast<int>(i); });
+    if (flips || (b.shape == Shape::Box && !b.fixed && b.angular_velocity.norm() > 0.0))
+      out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+std::string rotation_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
+  const Scene& scene = *results.scene;
+  const std::vector<int> bodies = turning_bodies(scene);
+  if (bodies.empty()) return "no body turns";
+  const auto runs = report_runs(results);
+  std::string data,
+      script = fmt::format(
+          "set multiplot layout {},2 title {}\nset grid\n"
+          "set key at screen 0.99, screen 0.94 right top maxrows 20 samplen 2 font \",9\"\n",
+          bodies.size(), quote(scene.name + ": angle and angular velocity at report_dt"));
+  int block = 0;
+  for (int b : bodies) {
+    std::string angle_plot, rate_plot;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const Trajectory& t = runs[i]->trajectory;
+      if (t.states.empty()) continue;
+      std::vector<double> angle, rate;
+      series(scene, b, t, angle, rate);
+      data += "# " + runs[i]->backend + " angle\n" + series_rows(t.times, angle) + "\n\n";
+      angle_plot += (angle_plot.empty() ? "plot " : ", \\\n     ") +
+                    series_line(i, block++, runs[i]->backend);
+      data += "# " + runs[i]->backend + " rate\n" + series_rows(t.times, rate) + "\n\n";
+      rate_plot +=
+          (rate_plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
+    }
+    if (angle_plot.empty()) continue;
+    const std::string& who = scene.bodies[b].name;
+    const std::string angle_label =
+        scene.dims == 2 ? who + ": angle about z (deg)" : who + ": tilt of its spin axis (deg)";
+    const std::string rate_label = scene.dims == 2 ? who + ": angular velocity (rad/s)"
+                                                   : who + ": spin about that axis (rad/s)";
+    // Two columns side by side, the legend (drawn with the first panel only) right of both.
+    script += fmt::format(
+        "set lmargin at screen 0.07\nset rmargin at screen 0.39\nset xlabel \"t (s)\"\n"
+        "set ylabel {}\n{}\nunset key\n",
+        quote(angle_label), angle_plot);
+    script +=
+        fmt::format("set lmargin at screen 0.47\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
+                    quote(rate_label), rate_plot);
+  }
+  if (block == 0) return "no run at report_dt has states to draw";
+  return draw(script + "unset multiplot\n", data, batch, name,
+              80 + 260 * static_cast<int>(bodies.size()));
+}
+
+}  // namespace bb

@@ -1,0 +1,25 @@
+// The plot of turning bodies (seed section 5): for each plotted body that spins, its angle
+// and its angular velocity against time at report_dt, every backend over the reference.
+// In 2D the angle is the turn about z, unwrapped, and the angular velocity its z part;
+// in 3D the angle is how far the body's spin axis at the start (its principal axis
+// closest to the initial spin) has tilted from where it started, so a tennis-racket flip
+// shows as a swing to 180 degrees and back, and the angular velocity is that axis's
+// component of the spin in the body frame, which changes sign at each flip.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/atomic_file.hpp"
+#include "run/results.hpp"
+
+namespace bb {
+
+/// The plotted bodies (the first kPlottedBodies) that turn: a spin at the start that is
+/// not a sphere's kinematic spin, or a flips observable.
+std::vector<int> turning_bodies(const Scene& scene);
+
+/// Draws the plot as `name` into `batch`; returns why there is none, else "".
+std::string rotation_plot(const CaseResults& results, FileBatch& batch, const std::string& name);
+
+}  // namespace bb
