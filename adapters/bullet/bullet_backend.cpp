@@ -12,6 +12,7 @@
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "bullet_contacts.hpp"
+#include "bullet_gyroscopic.hpp"
 #include "bullet_settings.hpp"
 #include "bullet_springs.hpp"
 #include "bullet_vectors.hpp"
@@ -122,6 +123,7 @@ class BulletSimulation : public Simulation {
     if (!scene_.impulses.empty()) s.push_back({"impulse", std::string(kImpulseMethod)});
     add_point_body_setting(scene_, s);
     s.push_back({"max_angular_speed", std::string("pi/2 rad per step (built into btRigidBody)")});
+    add_bullet_gyroscopic_setting(scene_, s);
     return s;
   }
 
@@ -143,6 +145,7 @@ class BulletSimulation : public Simulation {
     if (!b.fixed) {
       body->setLinearVelocity(to_bt(b.velocity));
       body->setAngularVelocity(to_bt(b.angular_velocity));
+      set_bullet_gyroscopic(scene_, *body);
     }
     body->setActivationState(DISABLE_DEACTIVATION);
     body->setUserIndex(index);

@@ -28,6 +28,9 @@ inline EngineDescription bullet_engine() {
             "continuous collision detection: swept sphere, motion threshold the inner radius"},
            {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
            {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"},
+           {e, "gyroscopic_term", KeyKind::Boolean, 1,
+            "the gyroscopic term w x I w: BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY on every "
+            "moving rigid body (Bullet's default); false clears it"},
            {e, "spring_limit_if_needed", KeyKind::Boolean, 1,
             "btGeneric6DofSpring2Constraint's limitIfNeeded: stiffness and damping cut to "
             "what the step can hold (Bullet's default)"}},
