@@ -16,6 +16,9 @@ inline EngineDescription ode_engine() {
            {e, "quick_step_iterations", KeyKind::Integer, 20, "iterations of dWorldQuickStep"},
            {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping scale"},
            {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping scale"},
+           {e, "gyroscopic_term", KeyKind::Boolean, 1,
+            "the gyroscopic term w x I w, linearly implicit: dBodySetGyroscopicMode(body, 1) "
+            "on every moving body (ODE's default); false sets 0"},
            {e, "bounce_vel", KeyKind::Number, 0.1,
             "normal approach speed below which a contact does not bounce, m/s "
             "(dSurfaceParameters::bounce_vel; 0.1 as in ODE's own demos)"},
