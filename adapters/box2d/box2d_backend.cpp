@@ -120,6 +120,9 @@ class Box2dSimulation : public Simulation {
     add_point_body_setting(scene_, s);
     s.push_back({"max_translation", std::string("2 m per step (b2_maxTranslation, built in)")});
     s.push_back({"max_rotation", std::string("pi/2 rad per step (b2_maxRotation, built in)")});
+    if (scene_.features().has(Feature::Rotation))
+      s.push_back({"gyroscopic", std::string("none: a 2D body turns about z only, where w x I w "
+                                             "is zero")});
     return s;
   }
 
