@@ -26,12 +26,15 @@ std::optional<ObservableValue> measure_rotation(const Scene& scene, const Observ
   const Vec3 along = momentum.normalized();
   Vec3 axis = Vec3::Zero();
   axis[middle] = 1.0;
-  int flips = 0;
-  double last = 0.0;
+  // A flip takes the axis from one side to the other: from beyond cos = +0.5 to beyond
+  // -0.5 against L (60 degrees either way), so a wobble about the perpendicular, as a box
+  // settling into another axis makes, is not counted.
+  int flips = 0, side = 0;
   for (const State& s : trajectory.states) {
     const double now = (s[observe.body].orientation * axis).dot(along);
-    if (last != 0.0 && now != 0.0 && (now > 0.0) != (last > 0.0)) ++flips;
-    if (now != 0.0) last = now;
+    const int here = now > 0.5 ? 1 : now < -0.5 ? -1 : 0;
+    if (here != 0 && side != 0 && here != side) ++flips;
+    if (here != 0) side = here;
   }
   return ObservableValue{static_cast<double>(flips), ""};
 }
