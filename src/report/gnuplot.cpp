@@ -174,4 +174,36 @@ std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t 
   return keep;
 }
 
+void TwoColumnPlot::add(bool right, std::size_t i, const std::string& backend,
+                        const std::vector<double>& times, const std::vector<double>& values) {
+  if (times.empty()) return;
+  data_ += "# " + backend + "\n" + series_rows(times, values) + "\n\n";
+  std::string& plot = right ? right_ : left_;
+  plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block_++, backend);
+}
+
+void TwoColumnPlot::end_row(const std::string& left_label, const std::string& right_label) {
+  if (!left_.empty() && !right_.empty()) {
+    // Fixed margins put the columns side by side; the legend goes with the first panel.
+    rows_script_ += fmt::format(
+        "set lmargin at screen 0.07\nset rmargin at screen 0.39\nset xlabel \"t (s)\"\n"
+        "set ylabel {}\n{}\nunset key\n"
+        "set lmargin at screen 0.47\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
+        quote(left_label), left_, quote(right_label), right_);
+    ++rows_;
+  }
+  left_.clear();
+  right_.clear();
+}
+
+std::string TwoColumnPlot::draw_into(FileBatch& batch, const std::string& name) const {
+  if (rows_ == 0) return "no run at report_dt has states to draw";
+  const std::string script = fmt::format(
+      "set multiplot layout {},2 title {}\nset grid\n"
+      "set key at screen 0.99, screen 0.94 right top maxrows 20 samplen 2 font \",9\"\n{}"
+      "unset multiplot\n",
+      rows_, quote(title_), rows_script_);
+  return draw(script, data_, batch, name, 80 + 260 * rows_);
+}
+
 }  // namespace bb

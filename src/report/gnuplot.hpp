@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report/atomic_file.hpp"
@@ -34,5 +35,23 @@ std::string series_rows(const std::vector<double>& times, const std::vector<doub
 /// Indices of the points of `values` to draw: all of them up to `max_points`, else per
 /// bucket the lowest and the highest, in order, and always the first and the last.
 std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t max_points);
+
+/// A page of rows of two panels against time, every run in each panel with the reference
+/// first (thick and black), one legend right of both columns.
+class TwoColumnPlot {
+ public:
+  explicit TwoColumnPlot(std::string title) : title_(std::move(title)) {}
+  /// Adds run `i` (its place among report_runs) to the current row's left or right panel.
+  void add(bool right, std::size_t i, const std::string& backend, const std::vector<double>& times,
+           const std::vector<double>& values);
+  /// Ends the current row, its panels labelled on y; a row without series is left out.
+  void end_row(const std::string& left_label, const std::string& right_label);
+  /// Draws the rows as `name` into `batch`; returns why there is nothing to draw, else "".
+  std::string draw_into(FileBatch& batch, const std::string& name) const;
+
+ private:
+  std::string title_, data_, rows_script_, left_, right_;
+  int block_ = 0, rows_ = 0;
+};
 
 }  // namespace bb

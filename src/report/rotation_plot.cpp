@@ -1,7 +1,5 @@
 #include "report/rotation_plot.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -67,44 +65,23 @@ std::string rotation_plot(const CaseResults& results, FileBatch& batch, const st
   const std::vector<int> bodies = turning_bodies(scene);
   if (bodies.empty()) return "no body turns";
   const auto runs = report_runs(results);
-  std::string data,
-      script = fmt::format(
-          "set multiplot layout {},2 title {}\nset grid\n"
-          "set key at screen 0.99, screen 0.94 right top maxrows 20 samplen 2 font \",9\"\n",
-          bodies.size(), quote(scene.name + ": angle and angular velocity at report_dt"));
-  int block = 0;
+  TwoColumnPlot plot(scene.name + ": angle and angular velocity at report_dt");
   for (int b : bodies) {
-    std::string angle_plot, rate_plot;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Trajectory& t = runs[i]->trajectory;
       if (t.states.empty()) continue;
       std::vector<double> angle, rate;
       series(scene, b, t, angle, rate);
-      data += "# " + runs[i]->backend + " angle\n" + series_rows(t.times, angle) + "\n\n";
-      angle_plot += (angle_plot.empty() ? "plot " : ", \\\n     ") +
-                    series_line(i, block++, runs[i]->backend);
-      data += "# " + runs[i]->backend + " rate\n" + series_rows(t.times, rate) + "\n\n";
-      rate_plot +=
-          (rate_plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
+      plot.add(false, i, runs[i]->backend, t.times, angle);
+      plot.add(true, i, runs[i]->backend, t.times, rate);
     }
-    if (angle_plot.empty()) continue;
     const std::string& who = scene.bodies[b].name;
-    const std::string angle_label =
-        scene.dims == 2 ? who + ": angle about z (deg)" : who + ": tilt of its spin axis (deg)";
-    const std::string rate_label = scene.dims == 2 ? who + ": angular velocity (rad/s)"
-                                                   : who + ": spin about that axis (rad/s)";
-    // Two columns side by side, the legend (drawn with the first panel only) right of both.
-    script += fmt::format(
-        "set lmargin at screen 0.07\nset rmargin at screen 0.39\nset xlabel \"t (s)\"\n"
-        "set ylabel {}\n{}\nunset key\n",
-        quote(angle_label), angle_plot);
-    script +=
-        fmt::format("set lmargin at screen 0.47\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
-                    quote(rate_label), rate_plot);
+    plot.end_row(
+        scene.dims == 2 ? who + ": angle about z (deg)" : who + ": tilt of its spin axis (deg)",
+        scene.dims == 2 ? who + ": angular velocity (rad/s)"
+                        : who + ": spin about that axis (rad/s)");
   }
-  if (block == 0) return "no run at report_dt has states to draw";
-  return draw(script + "unset multiplot\n", data, batch, name,
-              80 + 260 * static_cast<int>(bodies.size()));
+  return plot.draw_into(batch, name);
 }
 
 }  // namespace bb

@@ -1,7 +1,5 @@
 #include "report/stop_plot.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 
 #include "metrics/stop_observables.hpp"
@@ -40,18 +38,12 @@ std::string stop_plot(const CaseResults& results, FileBatch& batch, const std::s
   const std::vector<int> bodies = stopping_bodies(scene);
   if (bodies.empty()) return "no body's stop is observed";
   const auto runs = report_runs(results);
-  std::string data,
-      script = fmt::format(
-          "set multiplot layout {},2 title {}\nset grid\n"
-          "set key at screen 0.99, screen 0.94 right top maxrows 20 samplen 2 font \",9\"\n",
-          bodies.size(),
-          quote(scene.name + ": slid distance and velocity along the slide, around the "
-                             "reference's stop, at report_dt"));
-  int block = 0;
+  TwoColumnPlot plot(scene.name +
+                     ": slid distance and velocity along the slide, around the reference's "
+                     "stop, at report_dt");
   for (int b : bodies) {
     const Vec3 along = sliding_direction(scene, b);
     const double from = window_start(results, b);
-    std::string distance_plot, velocity_plot;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Trajectory& t = runs[i]->trajectory;
       if (t.states.empty()) continue;
@@ -62,28 +54,13 @@ std::string stop_plot(const CaseResults& results, FileBatch& batch, const std::s
         slid.push_back((t.states[j][b].position - t.states.front()[b].position).dot(along));
         speed.push_back(t.states[j][b].velocity.dot(along));
       }
-      if (times.empty()) continue;
-      data += "# " + runs[i]->backend + " distance\n" + series_rows(times, slid) + "\n\n";
-      distance_plot += (distance_plot.empty() ? "plot " : ", \\\n     ") +
-                       series_line(i, block++, runs[i]->backend);
-      data += "# " + runs[i]->backend + " velocity\n" + series_rows(times, speed) + "\n\n";
-      velocity_plot += (velocity_plot.empty() ? "plot " : ", \\\n     ") +
-                       series_line(i, block++, runs[i]->backend);
+      plot.add(false, i, runs[i]->backend, times, slid);
+      plot.add(true, i, runs[i]->backend, times, speed);
     }
-    if (distance_plot.empty()) continue;
     const std::string& who = scene.bodies[b].name;
-    // Two columns side by side, the legend (drawn with the first panel only) right of both.
-    script += fmt::format(
-        "set lmargin at screen 0.07\nset rmargin at screen 0.39\nset xlabel \"t (s)\"\n"
-        "set ylabel {}\n{}\nunset key\n",
-        quote(who + ": slid (m)"), distance_plot);
-    script +=
-        fmt::format("set lmargin at screen 0.47\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
-                    quote(who + ": velocity (m/s)"), velocity_plot);
+    plot.end_row(who + ": slid (m)", who + ": velocity (m/s)");
   }
-  if (block == 0) return "no run at report_dt has states to draw";
-  return draw(script + "unset multiplot\n", data, batch, name,
-              80 + 260 * static_cast<int>(bodies.size()));
+  return plot.draw_into(batch, name);
 }
 
 }  // namespace bb
