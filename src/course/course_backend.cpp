@@ -5,6 +5,7 @@
 #include "contact/impulse_response.hpp"
 #include "course/course_step.hpp"
 #include "course/friction_phase.hpp"
+#include "course/hinge_turning.hpp"
 #include "course/integrators.hpp"
 #include "course/rigid_rotation.hpp"
 #include "scene/motion.hpp"
@@ -12,6 +13,13 @@
 namespace bb {
 
 namespace {
+
+/// Per body: on a [[hinge]].
+std::vector<char> hinged_bodies(const Scene& scene) {
+  std::vector<char> out(scene.bodies.size(), 0);
+  for (const Hinge& h : scene.hinges) out[h.body] = 1;
+  return out;
+}
 
 class CourseSimulation : public Simulation {
  public:
@@ -22,6 +30,7 @@ class CourseSimulation : public Simulation {
                 course::friction_rule(variant.friction)},
         contacts_(scene, phases_.ground),
         friction_(scene, phases_.friction, dt),
+        hinges_(scene),
         equations_(scene) {
     const State start = initial_state(scene);
     for (const BodyState& b : start) {
@@ -49,6 +58,16 @@ class CourseSimulation : public Simulation {
                                            "forces pressing it on the ground; a tangential speed "
                                            "under 1e-12 m/s counts as rest")});
     }
+    if (!hinges_.empty()) {
+      settings_.push_back(
+          {"hinge", std::string("seed section 5, the plank on an axis: L += T dt (T the torque "
+                                "of the forces at the centre about the axis), omega = L / J "
+                                "with the seed's J = 1/3 m d1^2 + 1/3 m d2^2 (a box as a plank "
+                                "along its longest side, split at the axis), the centre carried "
+                                "round the anchor")});
+      hinge_a_.resize(start.size());
+      spins_ = true;
+    }
     acceleration_ = [this](const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                            std::vector<Vec3>& a) {
       equations_.accelerations(x, v, omega_, a);
@@ -65,6 +84,12 @@ class CourseSimulation : public Simulation {
     ++steps_;
     // Friction acts on the bodies that touch the ground as the step starts.
     if (!friction_.empty()) friction_.begin(points_.x, orientation_, points_.v);
+    // A hinged body turns from where the step starts, under the forces there.
+    if (!hinges_.empty()) {
+      equations_.accelerations(points_.x, points_.v, omega_, hinge_a_);
+      hinge_x_ = points_.x;
+      hinge_q_ = orientation_;
+    }
     // Forces and integrate: the integrator evaluates the forces at each of its stages.
     phases_.integrate(points_, dt_, acceleration_, work_);
     // Detect, then resolve: the ground rule against fixed surfaces, the blend between bodies.
@@ -89,6 +114,14 @@ class CourseSimulation : public Simulation {
         orientation_[i] =
             (quat_from_rotation_vector(omega_[i], dt_) * orientation_[i]).normalized();
       }
+    // Seed section 5, the plank on an axis: a hinged body's step replaces the free one.
+    if (!hinges_.empty()) {
+      points_.x.swap(hinge_x_);
+      orientation_.swap(hinge_q_);
+      for (std::size_t i = 0; i < hinge_x_.size(); ++i)
+        if (!hinged_[i]) points_.x[i] = hinge_x_[i], orientation_[i] = hinge_q_[i];
+      hinges_.step(dt_, hinge_a_, points_.x, points_.v, orientation_, omega_);
+    }
   }
 
   void read(State& out) const override {
@@ -101,6 +134,7 @@ class CourseSimulation : public Simulation {
  private:
   void push(const Impulse& imp) {
     const std::size_t i = static_cast<std::size_t>(imp.body);
+    if (hinges_.push(imp, points_.x, points_.v, omega_)) return;
     contact::apply_impulse(scene_.bodies[i], imp, points_.x[i], orientation_[i], points_.v[i],
                            omega_[i]);
     momentum_[i] = course::world_inertia(principal_[i], orientation_[i]) * omega_[i];
@@ -112,6 +146,10 @@ class CourseSimulation : public Simulation {
   course::Phases phases_;
   course::ContactPhases contacts_;
   course::FrictionPhase friction_;
+  course::HingeTurning hinges_;
+  std::vector<char> hinged_ = hinged_bodies(scene_);
+  std::vector<Vec3> hinge_a_, hinge_x_;  ///< accelerations and positions at the step's start
+  std::vector<Quat> hinge_q_;            ///< orientations at the step's start
   EquationsOfMotion equations_;
   course::PointState points_;
   course::Workspace work_;
@@ -133,7 +171,7 @@ FeatureSet CourseBackend::supports() const {
   return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
           Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
           Feature::Restitution, Feature::Impulse,  Feature::Springs,       Feature::Friction,
-          Feature::Boxes};
+          Feature::Boxes,       Feature::Hinge};
 }
 
 std::unique_ptr<Simulation> CourseBackend::start(const Scene& scene, double dt) const {

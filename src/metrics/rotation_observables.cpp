@@ -1,11 +1,49 @@
 #include "metrics/rotation_observables.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <numbers>
 
 namespace bb {
 
+namespace {
+
+/// The turn about z at the end (degrees), unwrapped over the samples.
+ObservableValue final_angle(const Scene& scene, int body, const Trajectory& t) {
+  if (scene.dims != 2) return {std::nullopt, "measured in 2D cases only (the turn about z)"};
+  double total = 0.0, last = angle_about_z(t.states.front()[body].orientation);
+  for (const State& s : t.states) {
+    const double now = angle_about_z(s[body].orientation);
+    double step = now - last;
+    // A jump of more than half a turn between samples is the angle wrapping round.
+    if (step > std::numbers::pi) step -= 2.0 * std::numbers::pi;
+    if (step < -std::numbers::pi) step += 2.0 * std::numbers::pi;
+    total += step;
+    last = now;
+  }
+  return {total * 180.0 / std::numbers::pi, ""};
+}
+
+/// The spin (rad/s) at the first sample after the body's first push or contact.
+ObservableValue post_spin(const Scene& scene, int body, const Trajectory& t) {
+  std::optional<double> hit;
+  for (const Impulse& i : scene.impulses)
+    if (i.body == body) hit = std::min(hit.value_or(i.time), i.time);
+  const BodyEvents& e = t.events.bodies[body];
+  if (!e.contact_times.empty())
+    hit = std::min(hit.value_or(e.contact_times[0]), e.contact_times[0]);
+  if (!hit) return {std::nullopt, "the body was neither pushed nor touched anything"};
+  for (std::size_t j = 0; j < t.times.size(); ++j)
+    if (t.times[j] > *hit) return {t.states[j][body].angular_velocity.norm(), ""};
+  return {std::nullopt, "no sample after the first hit"};
+}
+
+}  // namespace
+
 std::optional<ObservableValue> measure_rotation(const Scene& scene, const Observe& observe,
                                                 const Trajectory& trajectory) {
+  if (observe.kind == "final_angle") return final_angle(scene, observe.body, trajectory);
+  if (observe.kind == "post_angular_velocity") return post_spin(scene, observe.body, trajectory);
   if (observe.kind != "flips") return std::nullopt;
   const Body& body = scene.bodies[observe.body];
   const Vec3 principal = principal_inertia(body);

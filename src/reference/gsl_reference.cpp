@@ -194,7 +194,7 @@ FeatureSet ReferenceBackend::supports() const {
   return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
           Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
           Feature::Restitution, Feature::Impulse,  Feature::Boxes,         Feature::Springs,
-          Feature::Friction};
+          Feature::Friction,    Feature::Hinge};
 }
 
 std::pair<std::string, std::string> ReferenceBackend::library_version() const {

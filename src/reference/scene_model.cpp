@@ -8,6 +8,7 @@
 #include "reference/air_force_jacobian.hpp"
 #include "reference/cross_matrix.hpp"
 #include "reference/gsl_reference.hpp"
+#include "reference/hinge_motion.hpp"
 #include "reference/scene_model_state.hpp"
 #include "reference/sliding_modes.hpp"
 #include "scene/air_forces.hpp"
@@ -30,6 +31,38 @@ Vector3d angular_acceleration(const Body& body, const Quaterniond& q, const Vect
 
 }  // namespace
 
+namespace {
+
+/// Why the reference cannot turn the scene's hinged bodies exactly ("" when it can): one
+/// hinge per body, touching nothing, on no spring, starting at rest or turning about the
+/// hinge.
+std::string hinge_reason(const Scene& scene) {
+  const std::vector<ContactPair> pairs = contact_pairs(scene);
+  for (const Hinge& h : scene.hinges) {
+    const Body& b = scene.bodies[h.body];
+    const std::string name =
+        "body '" + b.name + "' on the [[hinge]] at line " + std::to_string(h.line);
+    for (const Hinge& other : scene.hinges)
+      if (&other != &h && other.body == h.body)
+        return name + " has a second hinge: not modelled by the reference";
+    for (const ContactPair& p : pairs)
+      if (p.a == h.body || p.b == h.body)
+        return name +
+               " can touch something: a hinged body's contacts have no event model in "
+               "the reference";
+    for (const Spring& s : scene.springs)
+      if (s.body_a == h.body || s.body_b == h.body)
+        return name + " hangs on a spring: not modelled by the reference";
+    const Vector3d spin_across = b.angular_velocity - b.angular_velocity.dot(h.axis) * h.axis;
+    const Vector3d follows = b.angular_velocity.cross(b.position - h.anchor);
+    if (spin_across.norm() > 1e-12 || (b.velocity - follows).norm() > 1e-12)
+      return name + " starts moving other than by turning about its hinge";
+  }
+  return "";
+}
+
+}  // namespace
+
 std::string SceneModel::beyond_exact_answer(const Scene& scene) {
   if (!scene.springs.empty() && scene.bodies.size() > kMaxReferenceBodies)
     return std::to_string(scene.bodies.size()) +
@@ -40,6 +73,7 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
     if (!c.ground && (c.friction_static > 0.0 || c.friction_kinetic > 0.0))
       return "the [[contact]] at line " + std::to_string(c.line) +
              " has friction: friction between bodies has no event model in the reference";
+  if (const std::string why = hinge_reason(scene); !why.empty()) return why;
   const bool touching = scene.ground || !scene.contacts.empty();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];
@@ -84,8 +118,10 @@ SceneModel::SceneModel(const Scene& scene)
       slides_(scene.bodies.size()),
       mu_static_(scene.bodies.size(), 0.0),
       mu_kinetic_(scene.bodies.size(), 0.0),
+      hinge_(scene.bodies.size(), nullptr),
       held_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
+  for (const Hinge& h : scene.hinges) hinge_[h.body] = &h;
   for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, -1, pair});
   // A body that may slide on a ground with friction: its coefficients and its stops.
   if (ground_rubs(scene))
@@ -202,6 +238,15 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
     const Quaterniond dq = Quaterniond(0.0, omega.x(), omega.y(), omega.z()) * q;
     d[6] = 0.5 * dq.w(), d[7] = 0.5 * dq.x(), d[8] = 0.5 * dq.y(), d[9] = 0.5 * dq.z();
     Vec(d + 10) = angular_acceleration(body, q, omega);
+    // On a hinge the body turns about the axis only: the forces at its centre act through
+    // their torque about the axis, and the centre moves on a circle. (The Jacobian treats
+    // it as free: only msbdf uses that, and a hinged scene here is never stiff.)
+    if (hinge_[i]) {
+      const HingeAccelerations h = hinge_accelerations(body, q, position(y, i), omega,
+                                                       body.mass * accelerations_[i], *hinge_[i]);
+      Vec(d + 3) = h.linear;
+      Vec(d + 10) = h.angular;
+    }
   }
 }
 

@@ -109,6 +109,7 @@ class SceneModel : public HybridModel {
   std::vector<Eigen::Vector3d> applied_;        ///< m/s^2, the same before the ground acts
   std::vector<SlideDecision> slides_;           ///< per body: stuck, sliding or free
   std::vector<double> mu_static_, mu_kinetic_;  ///< per body: its contact with the ground
+  std::vector<const Hinge*> hinge_;             ///< per body: the hinge it turns on, or null
   std::vector<bool> held_;  ///< per body: resting, its acceleration projected onto the ground
 };
 

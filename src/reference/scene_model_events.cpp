@@ -7,6 +7,7 @@
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
 #include "reference/gsl_reference.hpp"
+#include "reference/hinge_motion.hpp"
 #include "reference/scene_model.hpp"
 #include "reference/scene_model_state.hpp"
 #include "reference/sliding_modes.hpp"
@@ -173,7 +174,11 @@ void SceneModel::stop(int i, double* y, double t) {
 void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
   const int i = impulse.body;
   Vector3d v = velocity(y, i), w = spin(y, i);
-  contact::apply_impulse(scene_.bodies[i], impulse, position(y, i), orientation(y, i), v, w);
+  if (hinge_[i])
+    hinge_impulse(scene_.bodies[i], orientation(y, i), position(y, i), impulse.impulse,
+                  impulse.point.value_or(Vector3d(position(y, i))), *hinge_[i], v, w);
+  else
+    contact::apply_impulse(scene_.bodies[i], impulse, position(y, i), orientation(y, i), v, w);
   Vec(y + at(i) + 3) = v;
   Vec(y + at(i) + 10) = w;
   if (!resting_[i]) return;

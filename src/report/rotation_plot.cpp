@@ -54,7 +54,9 @@ std::vector<int> turning_bodies(const Scene& scene) {
     const bool flips = std::any_of(
         scene.observes.begin(), scene.observes.end(),
         [&](const Observe& o) { return o.kind == "flips" && o.body == static_cast<int>(i); });
-    if (flips || (b.shape == Shape::Box && !b.fixed && b.angular_velocity.norm() > 0.0))
+    const bool hinged = std::any_of(scene.hinges.begin(), scene.hinges.end(),
+                                    [&](const Hinge& h) { return h.body == static_cast<int>(i); });
+    if (flips || hinged || (b.shape == Shape::Box && !b.fixed && b.angular_velocity.norm() > 0.0))
       out.push_back(static_cast<int>(i));
   }
   return out;

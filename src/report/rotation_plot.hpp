@@ -15,8 +15,8 @@
 
 namespace bb {
 
-/// The plotted bodies (the first kPlottedBodies) that turn: a spin at the start that is
-/// not a sphere's kinematic spin, or a flips observable.
+/// The plotted bodies (the first kPlottedBodies) that turn: a box spinning at the start, a
+/// body on a hinge, or one whose flips are observed.
 std::vector<int> turning_bodies(const Scene& scene);
 
 /// Draws the plot as `name` into `batch`; returns why there is none, else "".

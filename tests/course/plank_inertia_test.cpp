@@ -5,6 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "course/course_backend.hpp"
+#include "metrics/observables.hpp"
+#include "run/accuracy_run.hpp"
+#include "scene/load_case.hpp"
+#include "support/test_support.hpp"
+
 namespace bb {
 namespace {
 
@@ -32,6 +38,26 @@ TEST(PlankInertia, TheSeedsFormulaIsTwiceTheTruthAtTheCentreAndRightAtAnEnd) {
     EXPECT_GT(ratio, 1.0) << a;
     EXPECT_LT(ratio, previous) << a;
     previous = ratio;
+  }
+}
+
+// The course on plank_axis turns each plank with the seed's J: its spin after the hit is
+// the impulse's moment over 1/3 m d1^2 + 1/3 m d2^2, half the true spin at the centre.
+TEST(PlankInertia, TheCourseSpinsEachPlankWithTheSeedsInertia) {
+  const Scene scene = load_case(test::source_path("cases/plank_axis.toml"));
+  const CourseBackend backend(
+      {"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"});
+  const RunRecord run = run_accuracy(backend, scene, scene.report_dt);
+  ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+  for (const Hinge& h : scene.hinges) {
+    const Body& b = scene.bodies[h.body];
+    const double a = (h.anchor - b.position).x();
+    const Impulse& hit = scene.impulses[h.body];
+    const double moment = std::abs((*hit.point - h.anchor).cross(hit.impulse).z());
+    const Observe spin{"post_angular_velocity", h.body, 0, 0, ""};
+    const ObservableValue measured = measure(scene, spin, run.trajectory, nullptr);
+    ASSERT_TRUE(measured.value) << measured.note;
+    EXPECT_NEAR(*measured.value, moment / seed_axis_inertia(b.mass, 5.0, a), 1e-12) << b.name;
   }
 }
 
