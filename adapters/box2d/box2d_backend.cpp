@@ -10,6 +10,7 @@
 
 #include "../point_body.hpp"
 #include "box2d_contacts.hpp"
+#include "box2d_hinges.hpp"
 #include "box2d_vectors.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
@@ -59,6 +60,7 @@ class Box2dSimulation : public Simulation {
 #else
     make_spring_joints();
 #endif
+    make_box2d_hinges(scene, world_, bodies_);
   }
 
   void step() override {
@@ -113,6 +115,7 @@ class Box2dSimulation : public Simulation {
 #endif
       s.push_back({"spring_bodies_collide", false});
     }
+    if (!scene_.hinges.empty()) add_box2d_hinge_settings(s);
     if (!scene_.impulses.empty())
       s.push_back({"impulse", std::string("b2Body::ApplyLinearImpulse(J, point, true) before "
                                           "the step that starts at the impulse's time: J's x "
@@ -181,7 +184,8 @@ class Box2dBackend : public Backend {
   FeatureSet supports() const override {
     return {Feature::Gravity,     Feature::Drag,    Feature::Magnus,        Feature::Wind,
             Feature::Rotation,    Feature::Boxes,   Feature::GroundContact, Feature::BodyContact,
-            Feature::Restitution, Feature::Impulse, Feature::Springs,       Feature::Friction};
+            Feature::Restitution, Feature::Impulse, Feature::Springs,       Feature::Friction,
+            Feature::Hinge};
   }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `box2d` wherever the scene has no springs: it takes part only

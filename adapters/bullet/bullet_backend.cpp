@@ -13,6 +13,7 @@
 #include "../point_body.hpp"
 #include "bullet_contacts.hpp"
 #include "bullet_gyroscopic.hpp"
+#include "bullet_hinges.hpp"
 #include "bullet_settings.hpp"
 #include "bullet_springs.hpp"
 #include "bullet_vectors.hpp"
@@ -65,9 +66,12 @@ class BulletSimulation : public Simulation {
     if (scene.ground) add_ground(*scene.ground);
     if (!kSpringsByHand && !scene.springs.empty())
       joints_ = std::make_unique<BulletSpringJoints>(scene, dt, bodies_, world_);
+    if (!scene.hinges.empty())
+      hinges_ = std::make_unique<BulletHingeJoints>(scene, bodies_, world_);
   }
   ~BulletSimulation() override {
     joints_.reset();
+    hinges_.reset();
     for (auto& body : bodies_) world_.removeRigidBody(body.get());
     if (ground_) world_.removeRigidBody(ground_.get());
   }
@@ -114,6 +118,7 @@ class BulletSimulation : public Simulation {
                              "Bullet's default a body slower than 0.8 m/s and 1 rad/s for 2 s "
                              "(gDeactivationTime) would freeze, a slow oscillator with it")});
     if (joints_) joints_->add_settings(s);
+    if (hinges_) hinges_->add_settings(s);
     if (kSpringsByHand && !network_.empty())
       s.push_back({"springs", std::string(kSpringsByHandMethod)});
     if (contacts_)
@@ -221,6 +226,7 @@ class BulletSimulation : public Simulation {
   std::unique_ptr<btRigidBody> ground_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;
   std::unique_ptr<BulletSpringJoints> joints_;  ///< the springs as constraints, or none
+  std::unique_ptr<BulletHingeJoints> hinges_;   ///< the hinges as constraints, or none
   SpringNetwork network_ = kSpringsByHand ? spring_network(scene_) : SpringNetwork{};
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   std::vector<Vec3> forces_;
@@ -235,7 +241,7 @@ class BulletBackend : public Backend {
     return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
             Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
             Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
-            Feature::Friction};
+            Feature::Friction,    Feature::Hinge};
   }
   FeatureSet needs() const override {
     return kSpringsByHand ? FeatureSet{Feature::Springs} : FeatureSet{};

@@ -14,6 +14,7 @@
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "ode_contacts.hpp"
+#include "ode_hinges.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -114,6 +115,7 @@ class OdeSimulation : public Simulation {
 #else
     make_spring_joints();
 #endif
+    make_ode_hinges(scene, world_, bodies_);
   }
   ~OdeSimulation() override {
     contacts_.reset();
@@ -207,6 +209,7 @@ class OdeSimulation : public Simulation {
       s.push_back({"spring_cfm_first", spring_cfm_});
 #endif
     }
+    if (!scene_.hinges.empty()) add_ode_hinge_settings(world_, s);
     if (!scene_.impulses.empty())
       s.push_back({"impulse", std::string("velocity set directly at the start of the step: "
                                           "v += J / m, omega += I_world^-1 (r x J) "
@@ -278,7 +281,7 @@ class OdeBackend : public Backend {
     return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
             Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
             Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
-            Feature::Friction};
+            Feature::Friction,    Feature::Hinge};
   }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `ode` wherever the scene has no springs: it takes part only where
