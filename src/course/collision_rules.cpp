@@ -11,6 +11,12 @@ GroundRule ground_rule(const std::string& name) {
   throw std::invalid_argument("unknown ground rule '" + name + "'");
 }
 
+HitRule hit_rule(const std::string& name) {
+  if (name == "seed-plank") return HitRule::SeedPlank;
+  if (name == "impulse") return HitRule::Impulse;
+  throw std::invalid_argument("unknown hit rule '" + name + "'");
+}
+
 std::string ground_rule_name(GroundRule rule) {
   switch (rule) {
     case GroundRule::Reflect:

@@ -17,8 +17,16 @@ enum class GroundRule {
   Mirror,   ///< reverse and move it out as far as it went in (1a's right ball)
 };
 
+/// How a ball that hits a moving box (a plank) is resolved, seed section 5.
+enum class HitRule {
+  SeedPlank,  ///< the seed's demo: the ball turns back, the plank takes its momentum too
+  Impulse,    ///< Newton's restitution with rigid bodies (contact/rigid_hit.hpp)
+};
+
 /// The rule called `name` ("reflect", "clamp", "mirror"); throws std::invalid_argument.
 GroundRule ground_rule(const std::string& name);
+/// The rule called `name` ("seed-plank", "impulse"); throws std::invalid_argument.
+HitRule hit_rule(const std::string& name);
 std::string ground_rule_name(GroundRule rule);
 
 /// Seed section 3: a body at `position` moving at `velocity` found at `p` (gap < 0) against

@@ -27,8 +27,9 @@ class CourseSimulation : public Simulation {
       : scene_(scene),
         dt_(dt),
         phases_{course::integrator(variant.integrator), course::ground_rule(variant.ground),
-                course::friction_rule(variant.friction)},
-        contacts_(scene, phases_.ground),
+                course::friction_rule(variant.friction), course::hit_rule(variant.hit),
+                course::spin_rule(variant.spin)},
+        contacts_(scene, phases_, dt),
         friction_(scene, phases_.friction, dt),
         hinges_(scene),
         equations_(scene) {
@@ -50,6 +51,7 @@ class CourseSimulation : public Simulation {
     work_.resize(start.size());
     settings_ = {{"integrator", variant.integrator}};
     if (!contacts_.empty()) settings_.push_back({"ground_rule", variant.ground});
+    record_contact_rules(variant);
     if (!friction_.empty()) {
       settings_.push_back({"friction_rule", variant.friction});
       settings_.push_back(
@@ -95,7 +97,13 @@ class CourseSimulation : public Simulation {
     // Detect, then resolve: the ground rule against fixed surfaces, the blend between bodies.
     if (!contacts_.empty()) {
       contacts_.detect(points_.x, orientation_);
-      contacts_.resolve(points_.x, points_.v);
+      contacts_.resolve(points_.x, points_.v, orientation_, omega_);
+      // A hit may have turned a rigid body: its angular momentum follows its new spin.
+      for (const course::FoundContact& c : contacts_.found())
+        for (int body : {contacts_.pair(c.pair).a, contacts_.pair(c.pair).b})
+          if (body >= 0 && rigid_[body])
+            momentum_[body] =
+                course::world_inertia(principal_[body], orientation_[body]) * omega_[body];
     }
     // Friction's last word: the clamp rule stops a velocity that crossed zero.
     if (!friction_.empty()) friction_.end(points_.v);
@@ -132,6 +140,21 @@ class CourseSimulation : public Simulation {
   Settings settings() const override { return settings_; }
 
  private:
+  /// The hit and spin rules, where the scene has a ball that can meet a moving box, or a
+  /// ball that touches anything.
+  void record_contact_rules(const CourseVariant& variant) {
+    bool hits = false, balls = false;
+    for (const ContactPair& p : contact_pairs(scene_)) {
+      const bool ball = scene_.bodies[p.a].shape == Shape::Sphere;
+      balls = balls || ball;
+      hits = hits || (ball && !p.ground() && !scene_.bodies[p.b].fixed &&
+                      scene_.bodies[p.b].shape == Shape::Box);
+    }
+    if (hits) settings_.push_back({"hit_rule", variant.hit});
+    if (balls) settings_.push_back({"spin_rule", variant.spin});
+    spins_ = spins_ || hits || variant.spin != "free";
+  }
+
   void push(const Impulse& imp) {
     const std::size_t i = static_cast<std::size_t>(imp.body);
     if (hinges_.push(imp, points_.x, points_.v, omega_)) return;

@@ -1,8 +1,8 @@
 // The course step as named phases, the way Box2D and MuJoCo lay theirs out: forces,
 // integrate, detect, resolve, friction. A course variant is a choice per phase: the
-// integrator (seed section 1), the ground rule (section 3) and the friction rule (section 6,
-// friction_phase.hpp). Between bodies the seed's restitution blend (section 4) always
-// applies.
+// integrator (seed section 1), the ground rule (section 3), the friction rule (section 6,
+// friction_phase.hpp), the rule for a ball hitting a moving box and the spin rule (section
+// 5). Between two balls the seed's restitution blend (section 4) always applies.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -12,6 +12,7 @@
 #include "course/collision_rules.hpp"
 #include "course/friction_rules.hpp"
 #include "course/integrators.hpp"
+#include "course/kinematic_spin.hpp"
 #include "scene/scene.hpp"
 
 namespace bb::course {
@@ -21,6 +22,8 @@ struct Phases {
   StepFn integrate = nullptr;                   ///< forces are evaluated inside, at its stages
   GroundRule ground = GroundRule::Mirror;       ///< against the ground and fixed bodies
   FrictionRule friction = FrictionRule::Clamp;  ///< against a ground with friction
+  HitRule hit = HitRule::SeedPlank;             ///< a ball against a moving box
+  SpinRule spin = SpinRule::Free;               ///< a ball's spin at its contacts
 };
 
 /// A contact found in the detect phase: the pair and where it stands.
@@ -33,18 +36,27 @@ struct FoundContact {
 /// a step allocates nothing.
 class ContactPhases {
  public:
-  ContactPhases(const Scene& scene, GroundRule rule);
+  /// `dt` is the step, for the spin rule's per-step reading of a spin.
+  ContactPhases(const Scene& scene, const Phases& phases, double dt);
   /// Detect: every pair whose gap is below zero at positions `x` and orientations `q`.
   void detect(const std::vector<Vec3>& x, const std::vector<Quat>& q);
-  /// Resolve: each found contact by the ground rule (ground, fixed bodies) or the
-  /// restitution blend (two moving bodies, only while they approach).
-  void resolve(std::vector<Vec3>& x, std::vector<Vec3>& v);
+  /// Resolve: each found contact by the ground rule (ground, fixed bodies), the hit rule
+  /// (a ball against a moving box) or the restitution blend (two balls), the last two only
+  /// while the bodies approach; then the spin rule sets the balls' spins `w`.
+  void resolve(std::vector<Vec3>& x, std::vector<Vec3>& v, const std::vector<Quat>& q,
+               std::vector<Vec3>& w);
   const std::vector<FoundContact>& found() const { return found_; }
+  const ContactPair& pair(std::size_t k) const { return pairs_[k]; }
   bool empty() const { return pairs_.empty(); }
 
  private:
+  /// The hit rule between ball a and moving box b of `pair`.
+  void hit(const ContactPair& pair, const contact::Proximity& p, const std::vector<Vec3>& x,
+           std::vector<Vec3>& v, const std::vector<Quat>& q, std::vector<Vec3>& w) const;
+
   const Scene& scene_;
-  GroundRule rule_;
+  Phases phases_;
+  double dt_;
   std::vector<ContactPair> pairs_;
   std::vector<FoundContact> found_;
 };

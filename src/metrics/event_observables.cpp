@@ -47,12 +47,15 @@ std::optional<ObservableValue> measure_event(const Observe& observe, const Event
     if (!b.post_velocity) return ObservableValue{std::nullopt, "the body touched nothing"};
     return ObservableValue{(*b.post_velocity).norm(), ""};
   }
-  if (kind != "momentum_change" && kind != "energy_change") return std::nullopt;
+  if (kind != "momentum_change" && kind != "energy_change" && kind != "angular_momentum_change")
+    return std::nullopt;
   const auto& c = events.first_collision;
   if (!c) return ObservableValue{std::nullopt, "no two moving bodies collided"};
   if (c->body_a != observe.body && c->body_b != observe.body)
     return ObservableValue{std::nullopt, "the first collision is between other bodies"};
   if (kind == "momentum_change") return ObservableValue{c->momentum_change.norm(), ""};
+  if (kind == "angular_momentum_change")
+    return ObservableValue{c->angular_momentum_change.norm(), ""};
   return ObservableValue{c->kinetic_energy_after - c->kinetic_energy_before, ""};
 }
 

@@ -14,8 +14,10 @@ namespace bb {
 /// contact_time (s), bounce_apex (m, the centre's height above the ground), post_velocity
 /// (m/s, the speed right after the body's first contact), max_penetration (m),
 /// momentum_change (N s, |change of total momentum| across the first collision between two
-/// moving bodies, gravity's impulse over the step removed), energy_change (J, the kinetic
-/// energy after that collision less before it).
+/// moving bodies, gravity's impulse over the step removed), angular_momentum_change (N m s,
+/// the same for angular momentum about the world's origin, gravity's angular impulse
+/// removed), energy_change (J, the kinetic energy, spins included, after that collision
+/// less before it).
 std::optional<ObservableValue> measure_event(const Observe& observe, const EventTrace& events);
 
 }  // namespace bb

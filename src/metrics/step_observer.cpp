@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/motion.hpp"
+
 namespace bb {
 
 namespace {
@@ -11,16 +13,19 @@ double radius(const Body& b) {
   return b.shape == Shape::Sphere ? b.radius : 0.0;
 }
 
-/// Kinetic energy (J) of bodies a and b.
+/// Kinetic energy (J, spins included) of bodies a and b.
 double kinetic_energy(const Scene& scene, const State& s, int a, int b) {
-  double e = 0.0;
-  for (int i : {a, b}) e += 0.5 * scene.bodies[i].mass * s[i].velocity.dot(s[i].velocity);
-  return e;
+  return bb::kinetic_energy(scene.bodies[a], s[a]) + bb::kinetic_energy(scene.bodies[b], s[b]);
 }
 
 /// Momentum (N s) of bodies a and b.
 Vec3 momentum(const Scene& scene, const State& s, int a, int b) {
   return s[a].velocity * scene.bodies[a].mass + s[b].velocity * scene.bodies[b].mass;
+}
+
+/// Angular momentum (N m s) of bodies a and b about the origin.
+Vec3 angular_momentum(const Scene& scene, const State& s, int a, int b) {
+  return bb::angular_momentum(scene.bodies[a], s[a]) + bb::angular_momentum(scene.bodies[b], s[b]);
 }
 
 }  // namespace
@@ -155,14 +160,21 @@ void StepObserver::observe(double t, const State& s) {
         const double gravity_work =
             scene_.gravity.dot((s[pair.a].position - previous_[pair.a].position) * body_a.mass +
                                (s[pair.b].position - previous_[pair.b].position) * body_b.mass);
-        trace_.first_collision = {pair.a,
-                                  pair.b,
-                                  t,
-                                  momentum(scene_, s, pair.a, pair.b) -
-                                      momentum(scene_, previous_, pair.a, pair.b) -
-                                      scene_.gravity * (mass * dt),
-                                  kinetic_energy(scene_, previous_, pair.a, pair.b),
-                                  kinetic_energy(scene_, s, pair.a, pair.b) - gravity_work};
+        // Gravity's angular impulse about the origin over the step, at the mid positions.
+        Vec3 gravity_turn = Vec3::Zero();
+        for (int i : {pair.a, pair.b})
+          gravity_turn += (0.5 * (s[i].position + previous_[i].position))
+                              .cross(scene_.gravity * (scene_.bodies[i].mass * dt));
+        trace_.first_collision = {
+            pair.a,
+            pair.b,
+            t,
+            momentum(scene_, s, pair.a, pair.b) - momentum(scene_, previous_, pair.a, pair.b) -
+                scene_.gravity * (mass * dt),
+            angular_momentum(scene_, s, pair.a, pair.b) -
+                angular_momentum(scene_, previous_, pair.a, pair.b) - gravity_turn,
+            kinetic_energy(scene_, previous_, pair.a, pair.b),
+            kinetic_energy(scene_, s, pair.a, pair.b) - gravity_work};
       }
     }
     closing_[k] = closing;

@@ -83,7 +83,6 @@ class SceneModel : public HybridModel {
   Eigen::Matrix3d resting_projection(int body) const;
   /// Adds the springs' derivatives to the Jacobian's velocity rows.
   void add_spring_jacobian(const double* y, double* dfdy) const;
-  double kinetic_energy(const double* y) const;     ///< J, of every moving body
   Eigen::Vector3d momentum(const double* y) const;  ///< N s, of every moving body
   contact::Proximity proximity(const ContactPair& pair, const double* y) const;
   /// Newton's restitution along the contact normal; the ground and fixed bodies do not move.

@@ -6,6 +6,7 @@
 
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
+#include "contact/rigid_hit.hpp"
 #include "reference/gsl_reference.hpp"
 #include "reference/hinge_motion.hpp"
 #include "reference/scene_model.hpp"
@@ -67,13 +68,6 @@ double SceneModel::max_step(double, const double* y) {
   return limit;
 }
 
-double SceneModel::kinetic_energy(const double* y) const {
-  double e = 0.0;
-  for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i)
-    if (!scene_.bodies[i].fixed) e += 0.5 * scene_.bodies[i].mass * velocity(y, i).squaredNorm();
-  return e;
-}
-
 Vector3d SceneModel::momentum(const double* y) const {
   Vector3d p = Vector3d::Zero();
   for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i)
@@ -98,20 +92,37 @@ void SceneModel::check_simultaneous(const ContactPair& pair, const double* y, do
 void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
   const bool ground = pair.ground();
   const contact::Proximity p = proximity(pair, y);
-  const Vector3d relative =
-      Vector3d(velocity(y, pair.a)) - (ground ? Vector3d::Zero() : Vector3d(velocity(y, pair.b)));
-  const double closing = relative.dot(p.normal);
+  const auto hit_body = [&](int i) {
+    return contact::hit_body(scene_.bodies[i], position(y, i), orientation(y, i), velocity(y, i),
+                             spin(y, i));
+  };
+  // Newton's restitution between the surface points, spins and inertia included.
+  contact::HitBody a = hit_body(pair.a), b = ground ? contact::HitBody{} : hit_body(pair.b);
+  const Vector3d arm_b = p.point - b.position;
+  const double closing =
+      (a.velocity + a.spin.cross(p.point - a.position) - b.velocity - b.spin.cross(arm_b))
+          .dot(p.normal);
   // Touching while separating (a grazing root) needs no impulse.
   if (closing >= 0.0) return;
   check_simultaneous(pair, y, t);
-  const double wa = inverse_mass(scene_.bodies[pair.a]);
-  const double wb = ground ? 0.0 : inverse_mass(scene_.bodies[pair.b]);
-  const double j = -(1.0 + pair.restitution) * closing / (wa + wb);
-  const double energy_before = kinetic_energy(y);
-  const Vector3d momentum_before = momentum(y);
-  Vec(y + at(pair.a) + 3) += j * wa * p.normal;
-  if (!ground) Vec(y + at(pair.b) + 3) -= j * wb * p.normal;
   const bool b_moves = !ground && !scene_.bodies[pair.b].fixed;
+  const auto balance = [&](double* energy, Vector3d* angular) {
+    State s(scene_.bodies.size());
+    read(y, s);
+    *energy = 0.0, angular->setZero();
+    for (int i : {pair.a, b_moves ? pair.b : -1})
+      if (i >= 0)
+        *energy += bb::kinetic_energy(scene_.bodies[i], s[i]),
+            *angular += bb::angular_momentum(scene_.bodies[i], s[i]);
+  };
+  double energy_before = 0.0, energy_after = 0.0;
+  Vector3d angular_before, angular_after;
+  if (b_moves && !trace_.first_collision) balance(&energy_before, &angular_before);
+  const Vector3d momentum_before = momentum(y);
+  contact::impulse_hit(a, b, p.point, p.normal, pair.restitution);
+  Vec(y + at(pair.a) + 3) = a.velocity;
+  Vec(y + at(pair.a) + 10) = a.spin;
+  if (b_moves) Vec(y + at(pair.b) + 3) = b.velocity, Vec(y + at(pair.b) + 10) = b.spin;
   for (int body : {pair.a, b_moves ? pair.b : -1}) {
     if (body < 0) continue;
     BodyEvents& e = trace_.bodies[body];
@@ -119,9 +130,16 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
     if (!e.post_velocity) e.post_velocity = (velocity(y, body));
     after_bounce_[body] = true;
   }
-  if (b_moves && !trace_.first_collision)
-    trace_.first_collision = {pair.a,        pair.b,           t, (momentum(y) - momentum_before),
-                              energy_before, kinetic_energy(y)};
+  if (b_moves && !trace_.first_collision) {
+    balance(&energy_after, &angular_after);
+    trace_.first_collision = {pair.a,
+                              pair.b,
+                              t,
+                              momentum(y) - momentum_before,
+                              angular_after - angular_before,
+                              energy_before,
+                              energy_after};
+  }
   for (int body : {pair.a, pair.b}) {
     if (body < 0 || !resting_[body]) continue;
     // An impulse may lift a resting body off the ground, but not press it in.

@@ -90,6 +90,7 @@ void put(Writer& w, const EventTrace& events) {
   w.raw<char>(events.first_collision.has_value());
   if (const auto& c = events.first_collision) {
     w.raw(c->body_a), w.raw(c->body_b), w.raw(c->time), put(w, c->momentum_change);
+    put(w, c->angular_momentum_change);
     w.raw(c->kinetic_energy_before), w.raw(c->kinetic_energy_after);
   }
   w.raw<char>(events.max_stretch.has_value());
@@ -110,6 +111,7 @@ EventTrace get_events(Reader& r) {
     CollisionBalance c;
     c.body_a = r.raw<int>(), c.body_b = r.raw<int>();
     c.time = r.raw<double>(), c.momentum_change = get_vec(r);
+    c.angular_momentum_change = get_vec(r);
     c.kinetic_energy_before = r.raw<double>(), c.kinetic_energy_after = r.raw<double>();
     events.first_collision = c;
   }

@@ -20,6 +20,16 @@ const std::vector<std::string>& known_friction_rules() {
   return v;
 }
 
+const std::vector<std::string>& known_hit_rules() {
+  static const std::vector<std::string> v = {"seed-plank", "impulse"};
+  return v;
+}
+
+const std::vector<std::string>& known_spin_rules() {
+  static const std::vector<std::string> v = {"free", "kinematic", "shared"};
+  return v;
+}
+
 std::vector<std::string> engine_backend_names() {
   std::vector<std::string> out;
   for (const EngineDescription& e : engine_catalogue())
@@ -29,16 +39,29 @@ std::vector<std::string> engine_backend_names() {
 
 std::vector<CourseVariant> course_variants(const Scene& scene) {
   const CourseOptions& c = scene.course;
-  std::vector<CourseVariant> out;
-  for (const std::string& integrator : c.integrators)
-    for (const std::string& ground : c.ground)
-      for (const std::string& friction : c.friction) {
-        std::string name = "course/" + integrator;
-        // A variant's name carries a rule only when the case compares several.
-        if (c.ground.size() > 1) name += "+" + ground;
-        if (c.friction.size() > 1) name += "+" + friction;
-        out.push_back({name, integrator, ground, friction});
+  // Each phase's choices, in the order a variant's name lists them.
+  const std::vector<std::pair<const std::vector<std::string>*, std::string CourseVariant::*>>
+      phases = {{&c.integrators, &CourseVariant::integrator},
+                {&c.ground, &CourseVariant::ground},
+                {&c.friction, &CourseVariant::friction},
+                {&c.hit, &CourseVariant::hit},
+                {&c.spin, &CourseVariant::spin}};
+  std::vector<CourseVariant> out = {{"course", "", "", "", "", ""}};
+  for (const auto& [choices, field] : phases) {
+    std::vector<CourseVariant> grown;
+    for (const CourseVariant& v : out)
+      for (const std::string& choice : *choices) {
+        CourseVariant w = v;
+        w.*field = choice;
+        // The integrator always names the variant; a rule only when the case compares several.
+        if (field == &CourseVariant::integrator)
+          w.name += "/" + choice;
+        else if (choices->size() > 1)
+          w.name += "+" + choice;
+        grown.push_back(std::move(w));
       }
+    out = std::move(grown);
+  }
   return out;
 }
 

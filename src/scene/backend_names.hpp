@@ -8,17 +8,22 @@
 
 namespace bb {
 
-/// A course backend: an integrator, a floor rule and a friction rule (seed sections 1, 3, 6).
+/// A course backend: an integrator, a floor rule, a friction rule, a rule for a ball hitting
+/// a moving box and a spin rule (seed sections 1, 3, 6 and 5).
 struct CourseVariant {
   std::string name;        ///< "course/semi-implicit-euler", maybe with "+reflect" etc.
   std::string integrator;  ///< "explicit-euler" | "semi-implicit-euler" | "velocity-verlet" | "rk4"
   std::string ground;      ///< "reflect" | "clamp" | "mirror"
   std::string friction;    ///< "naive" | "clamp" | "low-speed"
+  std::string hit = "seed-plank";  ///< "seed-plank" | "impulse"
+  std::string spin = "free";       ///< "free" | "kinematic" | "shared"
 };
 
 const std::vector<std::string>& known_integrators();
 const std::vector<std::string>& known_ground_rules();
 const std::vector<std::string>& known_friction_rules();
+const std::vector<std::string>& known_hit_rules();
+const std::vector<std::string>& known_spin_rules();
 /// The engines' backend names, whether built or not, from the engines' descriptions.
 std::vector<std::string> engine_backend_names();
 

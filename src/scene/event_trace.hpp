@@ -29,14 +29,17 @@ struct BodyEvents {
   Vec3 stop_position;  ///< metres: where it was at stop_time
 };
 
-/// Momentum and kinetic energy of the whole scene just before and just after the first
-/// contact between two moving bodies; the difference is what the collision changed.
+/// Momentum, angular momentum and kinetic energy of the two bodies just before and just
+/// after the first contact between two moving bodies; the difference is what the
+/// collision changed.
 struct CollisionBalance {
   int body_a = -1;  ///< the two bodies that collide
   int body_b = -1;
   double time = 0.0;     ///< seconds
   Vec3 momentum_change;  ///< N s, of the two bodies; from steps, less gravity's impulse
-  double kinetic_energy_before = 0.0;  ///< J
+  /// N m s, about the world's origin; from steps, less gravity's angular impulse
+  Vec3 angular_momentum_change;
+  double kinetic_energy_before = 0.0;  ///< J, with the spins' part
   /// J; from steps, less gravity's work on the two bodies over the step
   double kinetic_energy_after = 0.0;
 };

@@ -40,6 +40,8 @@ void read_course(TomlReader& root, Scene& scene) {
       read_choices(r, "integrators", known_integrators(), known_integrators());
   scene.course.ground = read_choices(r, "ground", known_ground_rules(), {"mirror"});
   scene.course.friction = read_choices(r, "friction", known_friction_rules(), {"clamp"});
+  scene.course.hit = read_choices(r, "hit", known_hit_rules(), {"seed-plank"});
+  scene.course.spin = read_choices(r, "spin", known_spin_rules(), {"free"});
   r.finish();
 }
 

@@ -11,15 +11,25 @@ const std::vector<std::string>& error_metric_names() {
 }
 
 const std::vector<std::string>& observable_kinds() {
-  static const std::vector<std::string> v = {"final_speed",   "terminal_velocity",
-                                             "stop_time",     "stop_distance",
-                                             "rest_creep",    "final_velocity",
-                                             "bounce_apex",   "contact_time",
-                                             "post_velocity", "post_angular_velocity",
-                                             "period",        "max_penetration",
-                                             "final_angle",   "momentum_change",
-                                             "energy_change", "max_stretch",
-                                             "sag",           "flips"};
+  static const std::vector<std::string> v = {"final_speed",
+                                             "terminal_velocity",
+                                             "stop_time",
+                                             "stop_distance",
+                                             "rest_creep",
+                                             "final_velocity",
+                                             "bounce_apex",
+                                             "contact_time",
+                                             "post_velocity",
+                                             "post_angular_velocity",
+                                             "period",
+                                             "max_penetration",
+                                             "final_angle",
+                                             "momentum_change",
+                                             "energy_change",
+                                             "max_stretch",
+                                             "sag",
+                                             "flips",
+                                             "angular_momentum_change"};
   return v;
 }
 

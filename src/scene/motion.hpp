@@ -45,6 +45,12 @@ inline void EquationsOfMotion::accelerations(const std::vector<Vec3>& x, const s
         inverse_mass_[i] == 0.0 ? Vec3::Zero() : Vec3(scene_.gravity + out[i] * inverse_mass_[i]);
 }
 
+/// Kinetic energy (J) of one body, its spin's part included; zero for a fixed body.
+double kinetic_energy(const Body& body, const BodyState& state);
+
+/// Angular momentum (N m s) of one body about the world's origin: r x m v + J omega.
+Vec3 angular_momentum(const Body& body, const BodyState& state);
+
 /// Total mechanical energy (J): kinetic, rotational, gravitational (zero at the origin) and
 /// the springs' potential energy.
 double total_energy(const Scene& scene, const State& state);

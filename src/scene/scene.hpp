@@ -114,6 +114,8 @@ struct CourseOptions {
   std::vector<std::string> integrators;
   std::vector<std::string> ground;
   std::vector<std::string> friction;
+  std::vector<std::string> hit;   ///< a ball against a moving box (section 5, the plank)
+  std::vector<std::string> spin;  ///< a ball's spin at its contacts (section 5)
 };
 
 /// A case's value for one engine setting; see engine_keys.hpp for the keys.

@@ -10,6 +10,12 @@
 namespace bb::course {
 namespace {
 
+using contact::angular_momentum;
+using contact::HitBody;
+using contact::impulse_hit;
+using contact::kinetic_energy;
+using contact::momentum;
+
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 

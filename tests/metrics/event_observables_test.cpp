@@ -33,7 +33,7 @@ TEST(EventObservables, CountedKindsReadTheNthEventOrSayHowManyThereWere) {
 TEST(EventObservables, TheFirstCollisionsBalanceBelongsToItsTwoBodies) {
   EventTrace t;
   t.bodies.resize(3);
-  t.first_collision = CollisionBalance{0, 1, 0.5, {0.0, 3.0, 4.0}, 10.0, 7.5};
+  t.first_collision = CollisionBalance{0, 1, 0.5, {0.0, 3.0, 4.0}, {0.0, 0.0, 2.0}, 10.0, 7.5};
   EXPECT_EQ(*measure_event(of("momentum_change", 1), t)->value, 5.0);
   EXPECT_EQ(*measure_event(of("energy_change", 0), t)->value, -2.5);
   EXPECT_FALSE(measure_event(of("energy_change", 2), t)->value);
