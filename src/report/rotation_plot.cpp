@@ -51,9 +51,13 @@ std::vector<int> turning_bodies(const Scene& scene) {
   std::vector<int> out;
   for (std::size_t i = 0; i < scene.bodies.size() && i < kPlottedBodies; ++i) {
     const Body& b = scene.bodies[i];
-    const bool flips = std::any_of(
-        scene.observes.begin(), scene.observes.end(),
-        [&](const Observe& o) { return o.kind == "flips" && o.body == static_cast<int>(i); });
+    // A body whose turning the case observes: its flips, its spin after a hit, its angle.
+    const bool flips =
+        std::any_of(scene.observes.begin(), scene.observes.end(), [&](const Observe& o) {
+          return o.body == static_cast<int>(i) &&
+                 (o.kind == "flips" || o.kind == "post_angular_velocity" ||
+                  o.kind == "final_angle");
+        });
     const bool hinged = std::any_of(scene.hinges.begin(), scene.hinges.end(),
                                     [&](const Hinge& h) { return h.body == static_cast<int>(i); });
     if (flips || hinged || (b.shape == Shape::Box && !b.fixed && b.angular_velocity.norm() > 0.0))

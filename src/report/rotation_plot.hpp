@@ -16,7 +16,7 @@
 namespace bb {
 
 /// The plotted bodies (the first kPlottedBodies) that turn: a box spinning at the start, a
-/// body on a hinge, or one whose flips are observed.
+/// body on a hinge, or one whose flips, spin after a hit or final angle are observed.
 std::vector<int> turning_bodies(const Scene& scene);
 
 /// Draws the plot as `name` into `batch`; returns why there is none, else "".
