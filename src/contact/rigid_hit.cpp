@@ -51,6 +51,30 @@ double impulse_hit(HitBody& a, HitBody& b, const Eigen::Vector3d& point,
   return j;
 }
 
+double friction_hit(HitBody& a, HitBody& b, const Eigen::Vector3d& point,
+                    const Eigen::Vector3d& normal, double normal_impulse, double mu_static,
+                    double mu_kinetic) {
+  const Eigen::Vector3d ra = point - a.position, rb = point - b.position;
+  const Eigen::Vector3d relative = a.velocity + a.spin.cross(ra) - b.velocity - b.spin.cross(rb);
+  const Eigen::Vector3d slip = relative - relative.dot(normal) * normal;
+  if (slip.norm() == 0.0 || normal_impulse <= 0.0) return 0.0;
+  const Eigen::Vector3d t = slip.normalized();
+  const double k = inverse_mass(a) + inverse_mass(b) + turning(a, ra, t) + turning(b, rb, t);
+  if (k <= 0.0) return 0.0;
+  // Sticking needs |slip| / k; the surfaces hold it up to mu_s j_n, else slide at mu_k j_n.
+  const double stick = slip.norm() / k;
+  const double j = stick <= mu_static * normal_impulse ? stick : mu_kinetic * normal_impulse;
+  if (a.mass > 0.0) {
+    a.velocity -= j / a.mass * t;
+    a.spin = spun(a, ra.cross(-j * t));
+  }
+  if (b.mass > 0.0) {
+    b.velocity += j / b.mass * t;
+    b.spin = spun(b, rb.cross(j * t));
+  }
+  return j;
+}
+
 Eigen::Vector3d momentum(const HitBody& a, const HitBody& b) {
   return a.mass * a.velocity + b.mass * b.velocity;
 }

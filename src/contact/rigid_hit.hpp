@@ -34,6 +34,16 @@ HitBody hit_body(const Body& body, const Eigen::Vector3d& position,
 double impulse_hit(HitBody& a, HitBody& b, const Eigen::Vector3d& point,
                    const Eigen::Vector3d& normal, double restitution);
 
+/// Coulomb's law at the same impact, after the normal impulse `normal_impulse` (N s, from
+/// impulse_hit): the tangential impulse that stops the surface points slipping, if it is
+/// at most mu_static times the normal impulse; else mu_kinetic times it, against the slip.
+/// Exact where the normal and tangential directions do not couple (a ball against anything
+/// through its centre: a sphere's arm lies along the normal). Returns the tangential
+/// impulse's size (N s).
+double friction_hit(HitBody& a, HitBody& b, const Eigen::Vector3d& point,
+                    const Eigen::Vector3d& normal, double normal_impulse, double mu_static,
+                    double mu_kinetic);
+
 /// The spin a torque impulse `angular` (N m s) gives `body`: J^-1 (J omega + angular).
 Eigen::Vector3d spun(const HitBody& body, const Eigen::Vector3d& angular);
 

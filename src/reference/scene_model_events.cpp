@@ -119,7 +119,10 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
   Vector3d angular_before, angular_after;
   if (b_moves && !trace_.first_collision) balance(&energy_before, &angular_before);
   const Vector3d momentum_before = momentum(y);
-  contact::impulse_hit(a, b, p.point, p.normal, pair.restitution);
+  const double j = contact::impulse_hit(a, b, p.point, p.normal, pair.restitution);
+  // Coulomb at the impact, for a ball against the ground or a fixed body (exact there).
+  if (pair.friction_static > 0.0 || pair.friction_kinetic > 0.0)
+    contact::friction_hit(a, b, p.point, p.normal, j, pair.friction_static, pair.friction_kinetic);
   Vec(y + at(pair.a) + 3) = a.velocity;
   Vec(y + at(pair.a) + 10) = a.spin;
   if (b_moves) Vec(y + at(pair.b) + 3) = b.velocity, Vec(y + at(pair.b) + 10) = b.spin;
@@ -157,6 +160,12 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
   const double pull = -scene_.gravity.dot(n);
   const double rebound = velocity(y, pair.a).dot(n);
   if (pull > 0.0 && 2.0 * rebound / pull < rest_flight_time()) {
+    if (scene_.bodies[pair.a].shape == Shape::Sphere &&
+        (pair.friction_static > 0.0 || pair.friction_kinetic > 0.0))
+      throw BeyondExactAnswer("at t = " + std::to_string(t) + " s ball '" +
+                              scene_.bodies[pair.a].name +
+                              "' comes to rest on a ground with friction: it would roll, and "
+                              "rolling has no model in the reference");
     resting_[pair.a] = true;
     after_bounce_[pair.a] = false;
     Vec(y + at(pair.a) + 3) -= rebound * n;

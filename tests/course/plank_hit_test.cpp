@@ -71,6 +71,34 @@ TEST(PlankHit, TheImpulseKeepsMomentumAndAngularMomentumForEveryRestitution) {
   }
 }
 
+// Friction at the impact is an impulse at the same point: momentum and angular momentum
+// stay, energy does not grow, and the slip is stopped or only slowed, never turned back.
+TEST(PlankHit, FrictionAtTheImpactKeepsMomentumAndNeverReversesTheSlip) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<> u(-1.0, 1.0);
+  for (int k = 0; k < 50; ++k) {
+    HitBody a = ball(0.5 + std::abs(u(rng)), 2.0 * u(rng), 1.0 + 3.0 * std::abs(u(rng)));
+    HitBody b = plank(1.0 + std::abs(u(rng)));
+    a.velocity.x() = 3.0 * u(rng);
+    a.spin = {0.0, 0.0, 2.0 * u(rng)};
+    const Vector3d point(a.position.x(), 0.1, 0.0), normal = Vector3d::UnitY();
+    const Vector3d origin(u(rng), u(rng), 0.0);
+    const auto slip = [&] {
+      return (a.velocity + a.spin.cross(point - a.position) - b.velocity -
+              b.spin.cross(point - b.position))
+          .x();
+    };
+    const double jn = impulse_hit(a, b, point, normal, 0.5);
+    const Vector3d p0 = momentum(a, b), l0 = angular_momentum(a, b, origin);
+    const double e0 = kinetic_energy(a, b), s0 = slip();
+    contact::friction_hit(a, b, point, normal, jn, 0.3, 0.2);
+    EXPECT_LT((momentum(a, b) - p0).norm(), 1e-12) << k;
+    EXPECT_LT((angular_momentum(a, b, origin) - l0).norm(), 1e-11) << k;
+    EXPECT_LE(kinetic_energy(a, b), e0 * (1.0 + 1e-12)) << k;
+    EXPECT_GE(slip() * s0, -1e-12) << k;
+  }
+}
+
 // The seed's demo: the ball keeps its speed and turns back, and the plank takes the ball's
 // momentum as well. Momentum changes by -(m_ball v_n + m_plank V_n) n, and the energy grows
 // by what the plank gained, f^2 / (2 m_plank) + (r x f).J^-1 (r x f) / 2.

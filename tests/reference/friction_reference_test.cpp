@@ -120,5 +120,73 @@ velocity = [1.0, 0.0, 0.0]
   EXPECT_NE(tipping.reason.find("tip"), std::string::npos) << tipping.reason;
 }
 
+// A ball bouncing on a ground with friction meets Coulomb's law at each impact: it grips
+// (the contact point stops slipping: a shell keeps 3/5 of its speed along the ground and
+// rolls) when mu_s j_n allows, and slides with mu_k j_n when it does not. A ball that
+// comes to rest on such a ground would roll: the reference says so when it gets there.
+TEST(FrictionReference, ABallBouncingOnAGroundWithFrictionMeetsCoulombAtEachImpact) {
+  const auto scene = [](double mu) {
+    return test::scene_from(R"(name = "x"
+dims = 2
+duration = 0.5
+sample = 0.05
+dt = [0.01]
+report_dt = 0.01
+[ground]
+restitution = 1.0
+friction_static = )" + std::to_string(mu) +
+                            R"(
+friction_kinetic = )" + std::to_string(mu) +
+                            R"(
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 0.25
+shell = true
+position = [0.0, 0.5001, 0.0]
+velocity = [4.0, -3.0, 0.0]
+)");
+  };
+  for (const double mu : {0.5, 0.1}) {
+    const Scene s = scene(mu);
+    const RunRecord r = run_accuracy(ReferenceBackend(), s, 0.01);
+    ASSERT_EQ(r.status, RunStatus::Ok) << r.reason;
+    const BodyState& end = r.trajectory.states.back()[0];
+    const double vn = std::sqrt(9.0 + 2.0 * 9.81 * 0.0001);
+    // Gripping needs 2/5 m v_t against mu (1 + e) m v_n.
+    const bool grips = 0.4 * 4.0 <= mu * 2.0 * vn;
+    const double vt = grips ? 0.6 * 4.0 : 4.0 - mu * 2.0 * vn;
+    // The shell's spin: the tangential impulse's moment over 2/3 m r^2.
+    const double spin = -(4.0 - vt) * 0.25 * 0.5 / (2.0 / 3.0 * 0.25 * 0.25);
+    EXPECT_EQ(grips, mu == 0.5);
+    EXPECT_NEAR(end.velocity.x(), vt, 1e-9) << mu;
+    EXPECT_NEAR(end.angular_velocity.z(), spin, 1e-9) << mu;
+    if (grips) {
+      EXPECT_NEAR(end.velocity.x() + end.angular_velocity.z() * 0.5, 0.0, 1e-9);
+    }
+  }
+  // Ever smaller bounces (e = 0.5) end at rest, where the ball would roll.
+  std::string text = R"(name = "x"
+dims = 2
+duration = 5.0
+sample = 0.05
+dt = [0.01]
+report_dt = 0.01
+[ground]
+restitution = 0.5
+friction_static = 0.5
+friction_kinetic = 0.5
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 0.25
+position = [0.0, 1.5, 0.0]
+velocity = [1.0, 0.0, 0.0]
+)";
+  const RunRecord rests = run_accuracy(ReferenceBackend(), test::scene_from(text), 0.01);
+  EXPECT_EQ(rests.status, RunStatus::Unsupported);
+  EXPECT_NE(rests.reason.find("roll"), std::string::npos) << rests.reason;
+}
+
 }  // namespace
 }  // namespace bb
