@@ -23,6 +23,10 @@ inline constexpr std::size_t kMaxImplicitBodies = 80;
 /// Above this many bodies a scene with springs is beyond a tight reference in the time a
 /// report allows (DESIGN.md's fallback).
 inline constexpr std::size_t kMaxReferenceBodies = 400;
+/// The most moving bodies that may touch each other for which the reference tries an
+/// exact answer: beyond this a crowd (a pile, balls resting on balls) is what a scene makes,
+/// and its simultaneous contacts have none.
+inline constexpr std::size_t kMaxTouchingBodies = 8;
 
 class ReferenceBackend : public Backend {
  public:

@@ -1,5 +1,6 @@
 #include "reference/scene_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -80,6 +81,16 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
            " bodies on springs: a reference to 1e-10 would take longer than a report allows "
            "(it is solved up to " +
            std::to_string(kMaxReferenceBodies) + " bodies)";
+  // A crowd of bodies that can touch each other ends in piles and simultaneous contacts.
+  std::vector<char> touches(scene.bodies.size(), 0);
+  for (const ContactPair& p : contact_pairs(scene))
+    if (!p.ground() && !scene.bodies[p.b].fixed) touches[p.a] = touches[p.b] = 1;
+  const auto crowd = static_cast<std::size_t>(std::count(touches.begin(), touches.end(), 1));
+  if (crowd > kMaxTouchingBodies)
+    return std::to_string(crowd) +
+           " moving bodies can touch each other: a crowd piles up and touches at many points at "
+           "once, which has no exact answer (the reference takes up to " +
+           std::to_string(kMaxTouchingBodies) + ")";
   // Friction at an impact is exact where a ball meets something that does not move.
   for (const ContactPair& p : contact_pairs(scene)) {
     const bool rubs = p.friction_static > 0.0 || p.friction_kinetic > 0.0;
