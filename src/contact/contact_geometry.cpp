@@ -1,5 +1,8 @@
 #include "contact/contact_geometry.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace bb::contact {
 
 Proximity sphere_plane(const Eigen::Vector3d& centre, double radius,
@@ -51,6 +54,26 @@ Proximity box_plane(const Eigen::Vector3d& centre, const Eigen::Quaterniond& ori
   const Eigen::Vector3d lowest = centre + to_world * corner;
   const double height = (lowest - plane_point).dot(plane_normal);
   return {height, plane_normal, lowest - height * plane_normal};
+}
+
+double clear_height(const Eigen::Vector3d& centre, const Eigen::Quaterniond& orientation,
+                    const Eigen::Vector3d& half_extents, const Eigen::Vector3d& axis_point,
+                    const Eigen::Vector3d& axis, const Eigen::Vector3d& plane_point,
+                    const Eigen::Vector3d& plane_normal) {
+  const Eigen::Matrix3d to_world = orientation.normalized().toRotationMatrix();
+  // A corner within this distance of the hinge's line is on it.
+  const double on_axis = 1e-9 * (1.0 + half_extents.maxCoeff());
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3d local((k & 1) ? half_extents.x() : -half_extents.x(),
+                                (k & 2) ? half_extents.y() : -half_extents.y(),
+                                (k & 4) ? half_extents.z() : -half_extents.z());
+    const Eigen::Vector3d corner = centre + to_world * local;
+    const Eigen::Vector3d from_axis = corner - axis_point;
+    if ((from_axis - from_axis.dot(axis) * axis).norm() <= on_axis) continue;
+    lowest = std::min(lowest, (corner - plane_point).dot(plane_normal));
+  }
+  return lowest;
 }
 
 }  // namespace bb::contact

@@ -42,4 +42,12 @@ Proximity box_plane(const Eigen::Vector3d& centre, const Eigen::Quaterniond& ori
                     const Eigen::Vector3d& half_extents, const Eigen::Vector3d& plane_point,
                     const Eigen::Vector3d& plane_normal);
 
+/// A box turning about a hinge on one of its edges (the line through `axis_point` along the
+/// unit `axis`), over a plane: the height above the plane of its lowest corner off that line
+/// (the hinge's own corners touch all along). Zero or below: the box lies on the plane.
+double clear_height(const Eigen::Vector3d& centre, const Eigen::Quaterniond& orientation,
+                    const Eigen::Vector3d& half_extents, const Eigen::Vector3d& axis_point,
+                    const Eigen::Vector3d& axis, const Eigen::Vector3d& plane_point,
+                    const Eigen::Vector3d& plane_normal);
+
 }  // namespace bb::contact

@@ -8,6 +8,7 @@
 #include "course/hinge_turning.hpp"
 #include "course/integrators.hpp"
 #include "course/rigid_rotation.hpp"
+#include "scene/contact_pairs.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -67,12 +68,20 @@ class CourseSimulation : public Simulation {
                                 "with the seed's J = 1/3 m d1^2 + 1/3 m d2^2 (a box as a plank "
                                 "along its longest side, split at the axis), the centre carried "
                                 "round the anchor")});
+      for (const Hinge& h : scene.hinges)
+        if (ground_pair(scene, h.body) && scene.bodies[h.body].shape == Shape::Box) {
+          settings_.push_back(
+              {"hinge_ground", std::string("a step that would turn a hinged box further below "
+                                           "the ground is not taken and its L becomes -e L "
+                                           "(section 3's clamp rule applied to the angle)")});
+          break;
+        }
       hinge_a_.resize(start.size());
       spins_ = true;
     }
     acceleration_ = [this](const std::vector<Vec3>& x, const std::vector<Vec3>& v,
                            std::vector<Vec3>& a) {
-      equations_.accelerations(x, v, omega_, a);
+      equations_.accelerations(x, v, omega_, orientation_, a);
       if (!friction_.empty()) friction_.apply(v, a);
     };
   }
@@ -88,7 +97,7 @@ class CourseSimulation : public Simulation {
     if (!friction_.empty()) friction_.begin(points_.x, orientation_, points_.v);
     // A hinged body turns from where the step starts, under the forces there.
     if (!hinges_.empty()) {
-      equations_.accelerations(points_.x, points_.v, omega_, hinge_a_);
+      equations_.accelerations(points_.x, points_.v, omega_, orientation_, hinge_a_);
       hinge_x_ = points_.x;
       hinge_q_ = orientation_;
     }

@@ -1,6 +1,8 @@
 #include "course/hinge_turning.hpp"
 
+#include "contact/contact_geometry.hpp"
 #include "course/plank_inertia.hpp"
+#include "scene/contact_pairs.hpp"
 #include "scene/vec3.hpp"
 
 namespace bb::course {
@@ -33,6 +35,9 @@ HingeTurning::HingeTurning(const Scene& scene) : scene_(scene) {
     hinges_.push_back(&h);
     inertia_.push_back(seed_inertia(b, h));
     momentum_.push_back(inertia_.back() * b.angular_velocity.dot(h.axis));
+    const std::optional<ContactPair> ground = ground_pair(scene, h.body);
+    const bool lands = ground && b.shape == Shape::Box;
+    ground_restitution_.push_back(lands ? ground->restitution : -1.0);
   }
 }
 
@@ -44,13 +49,30 @@ void HingeTurning::step(double dt, const std::vector<Vec3>& a, std::vector<Vec3>
     const Vec3 r = x[i] - h.anchor;
     // Seed: L = L + T dt, omega = L / J, then the turn by omega dt.
     momentum_[k] += r.cross(scene_.bodies[i].mass * a[i]).dot(h.axis) * dt;
-    const double omega = momentum_[k] / inertia_[k];
+    double omega = momentum_[k] / inertia_[k];
     const Quat turn = quat_from_axis_angle(h.axis, omega * dt);
-    x[i] = h.anchor + turn * r;
-    q[i] = (turn * q[i]).normalized();
+    const Vec3 turned_x = h.anchor + turn * r;
+    const Quat turned_q = (turn * q[i]).normalized();
+    // Into the ground: the step is not taken and the spin turns back (section 3's clamp).
+    if (ground_restitution_[k] >= 0.0 && into_ground(i, h, x[i], q[i], turned_x, turned_q)) {
+      momentum_[k] *= -ground_restitution_[k];
+      omega = momentum_[k] / inertia_[k];
+    } else {
+      x[i] = turned_x;
+      q[i] = turned_q;
+    }
     spin[i] = omega * h.axis;
     v[i] = spin[i].cross(x[i] - h.anchor);
   }
+}
+
+bool HingeTurning::into_ground(int i, const Hinge& h, const Vec3& x0, const Quat& q0,
+                               const Vec3& x1, const Quat& q1) const {
+  const Ground& g = *scene_.ground;
+  const Vec3& half = scene_.bodies[i].half_extents;
+  const double after = contact::clear_height(x1, q1, half, h.anchor, h.axis, g.point, g.normal);
+  if (after >= 0.0) return false;
+  return after < contact::clear_height(x0, q0, half, h.anchor, h.axis, g.point, g.normal);
 }
 
 bool HingeTurning::push(const Impulse& impulse, std::vector<Vec3>& x, std::vector<Vec3>& v,

@@ -3,7 +3,10 @@
 // centre (and an impulse's moment at once), turns by omega = L / J, and its centre is
 // carried round the anchor. J is the seed's: a plank (a box, its longest side the
 // length) split at the axis into two rods, 1/3 m d1^2 + 1/3 m d2^2 (plank_inertia.hpp);
-// another shape gets its true inertia about the axis.
+// another shape gets its true inertia about the axis. A hinged box that touches the ground
+// (the falling wall of section 8, on its bottom edge) cannot turn into it: a step that would
+// put a corner below the ground is not taken, and the spin is reversed and scaled by the
+// restitution, the clamp rule of section 3 applied to the angle.
 #pragma once
 
 #include <vector>
@@ -30,10 +33,17 @@ class HingeTurning {
             std::vector<Vec3>& spin);
 
  private:
+  /// Whether body i, turned from (x0, q0) to (x1, q1) about `h`, went further below the
+  /// ground than it was.
+  bool into_ground(int i, const Hinge& h, const Vec3& x0, const Quat& q0, const Vec3& x1,
+                   const Quat& q1) const;
+
   const Scene& scene_;
   std::vector<const Hinge*> hinges_;
   std::vector<double> inertia_;   ///< the seed's J per hinge
   std::vector<double> momentum_;  ///< L about the axis per hinge, N m s
+  /// Per hinge: the restitution of its body's ground contact, or -1 when it has none.
+  std::vector<double> ground_restitution_;
 };
 
 }  // namespace bb::course

@@ -35,7 +35,8 @@ std::optional<ObservableValue> measure_event(const Observe& observe, const Event
     return ObservableValue{*events.max_stretch, ""};
   }
   const bool body_kind = kind == "contact_time" || kind == "bounce_apex" ||
-                         kind == "post_velocity" || kind == "max_penetration" || kind == "period";
+                         kind == "post_velocity" || kind == "max_penetration" || kind == "period" ||
+                         kind == "fall_time";
   if (body_kind) {
     if (observe.body < 0 || static_cast<std::size_t>(observe.body) >= events.bodies.size())
       return ObservableValue{std::nullopt, "the run has no event trace"};
@@ -44,6 +45,10 @@ std::optional<ObservableValue> measure_event(const Observe& observe, const Event
     if (kind == "bounce_apex") return nth(b.apex_heights, observe.n, "apexes after a contact");
     if (kind == "max_penetration") return ObservableValue{b.max_penetration, ""};
     if (kind == "period") return period(b);
+    if (kind == "fall_time") {
+      if (!b.fall_time) return ObservableValue{std::nullopt, "it did not fall"};
+      return ObservableValue{*b.fall_time, ""};
+    }
     if (!b.post_velocity) return ObservableValue{std::nullopt, "the body touched nothing"};
     return ObservableValue{(*b.post_velocity).norm(), ""};
   }

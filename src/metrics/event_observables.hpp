@@ -12,7 +12,8 @@ namespace bb {
 
 /// The value of `observe` from `events`, or nullopt when its kind is not an event kind.
 /// contact_time (s), bounce_apex (m, the centre's height above the ground), post_velocity
-/// (m/s, the speed right after the body's first contact), max_penetration (m),
+/// (m/s, the speed right after the body's first contact), max_penetration (m), fall_time
+/// (s, the first time the centre came within kFallAllowance of lying flat: a wall down),
 /// momentum_change (N s, |change of total momentum| across the first collision between two
 /// moving bodies, gravity's impulse over the step removed), angular_momentum_change (N m s,
 /// the same for angular momentum about the world's origin, gravity's angular impulse

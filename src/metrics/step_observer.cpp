@@ -46,6 +46,7 @@ StepObserver::StepObserver(const Scene& scene)
   for (const Observe& o : scene.observes) {
     if (o.kind == "period") swinging_.push_back(o.body);
     if (o.kind == "max_stretch") watch_stretch_ = true;
+    if (o.kind == "fall_time" && scene.ground) falling_.push_back(o.body);
     const bool stop = o.kind == "stop_time" || o.kind == "stop_distance" || o.kind == "rest_creep";
     if (stop && std::find(stopping_.begin(), stopping_.end(), o.body) == stopping_.end())
       stopping_.push_back(o.body);
@@ -97,9 +98,22 @@ void StepObserver::observe_stops(double t, const State& s) {
   }
 }
 
+void StepObserver::observe_falls(double t, const State& s) {
+  const Ground& g = *scene_.ground;
+  for (int i : falling_) {
+    BodyEvents& e = trace_.bodies[i];
+    const double level = fallen_height(scene_.bodies[i].half_extents);
+    const double now = (s[i].position - g.point).dot(g.normal) - level;
+    const double before = (previous_[i].position - g.point).dot(g.normal) - level;
+    if (e.fall_time || now > 0.0 || before <= 0.0) continue;
+    e.fall_time = previous_t_ + (t - previous_t_) * before / (before - now);
+  }
+}
+
 void StepObserver::observe(double t, const State& s) {
   if (!active()) return;
   const double dt = t - previous_t_;
+  if (!first_ && !falling_.empty()) observe_falls(t, s);
   if (!first_ && !swinging_.empty()) observe_swings(t, s);
   if (!stopping_.empty()) observe_stops(t, s);
   for (std::size_t k = 0; k < swinging_.size(); ++k) {

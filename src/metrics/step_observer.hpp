@@ -26,7 +26,8 @@ class StepObserver {
   /// False when the scene has nothing to touch, time, stop or stretch: observing costs
   /// nothing then.
   bool active() const {
-    return !pairs_.empty() || !swinging_.empty() || !stopping_.empty() || watch_stretch_;
+    return !pairs_.empty() || !swinging_.empty() || !stopping_.empty() || !falling_.empty() ||
+           watch_stretch_;
   }
 
  private:
@@ -47,7 +48,11 @@ class StepObserver {
   void observe_stops(double t, const State& s);
   std::vector<int> stopping_;    ///< bodies with stop_time, stop_distance or rest_creep
   std::vector<double> fastest_;  ///< per stopping body: m/s, fastest along the ground yet
-  bool watch_stretch_ = false;   ///< a max_stretch observable is asked for
+  /// The first time each body whose fall is observed has its centre below fallen_height()
+  /// above the ground, placed by linear interpolation between the two steps.
+  void observe_falls(double t, const State& s);
+  std::vector<int> falling_;    ///< bodies with fall_time
+  bool watch_stretch_ = false;  ///< a max_stretch observable is asked for
   State previous_;
   double previous_t_ = 0.0;
   bool first_ = true;

@@ -46,11 +46,17 @@ std::string hinge_reason(const Scene& scene) {
     for (const Hinge& other : scene.hinges)
       if (&other != &h && other.body == h.body)
         return name + " has a second hinge: not modelled by the reference";
+    // A box on the ground turning about a hinge lands on it (the falling wall); it takes no
+    // other contact.
     for (const ContactPair& p : pairs)
-      if (p.a == h.body || p.b == h.body)
+      if ((p.a == h.body || p.b == h.body) && !(p.ground() && b.shape == Shape::Box))
         return name +
-               " can touch something: a hinged body's contacts have no event model in "
-               "the reference";
+               " can touch another body: a hinged body's contacts other than a box's with the "
+               "ground have no event model in the reference";
+    for (const Impulse& i : scene.impulses)
+      if (i.body == h.body && ground_pair(scene, h.body))
+        return name + " is pushed (the [[impulse]] at line " + std::to_string(i.line) +
+               ") while it can land on the ground: not modelled by the reference";
     for (const Spring& s : scene.springs)
       if (s.body_a == h.body || s.body_b == h.body)
         return name + " hangs on a spring: not modelled by the reference";
@@ -149,7 +155,8 @@ SceneModel::SceneModel(const Scene& scene)
       mu_static_(scene.bodies.size(), 0.0),
       mu_kinetic_(scene.bodies.size(), 0.0),
       hinge_(scene.bodies.size(), nullptr),
-      held_(scene.bodies.size(), false) {
+      held_(scene.bodies.size(), false),
+      hinge_held_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
   for (const Hinge& h : scene.hinges) hinge_[h.body] = &h;
   for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, -1, pair});
@@ -164,6 +171,10 @@ SceneModel::SceneModel(const Scene& scene)
   if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
       if (!scene.bodies[i].fixed) sources_.push_back({true, -1, i, {}});
+  // Falls are timed exactly, as every backend's are from its steps.
+  for (const Observe& o : scene.observes)
+    if (o.kind == "fall_time" && scene.ground)
+      sources_.push_back({false, -1, o.body, {}, false, true});
   // Swings are timed exactly, as every backend's are from its steps.
   for (const Observe& o : scene.observes)
     if (o.kind == "period")
@@ -175,10 +186,16 @@ SceneModel::SceneModel(const Scene& scene)
     if (!pair.ground()) continue;
     const Vector3d n = scene.ground->normal;
     const bool pressed = -scene.gravity.dot(n) > 0.0;
+    if (hinge_[pair.a]) continue;  // a hinged body is held by its hinge, below
     if (pressed && std::abs(proximity(pair, y.data()).gap) <= kSimultaneousGap &&
         std::abs(velocity(y.data(), pair.a).dot(n)) <= 1e-12)
       resting_[pair.a] = true;
   }
+  // A hinged body on the ground that its forces turn into it stays where it is.
+  std::vector<double> start = initial_state();
+  for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
+    if (lands(i) && pressed_into_ground(i, start.data(), hinge_alpha(i, start.data())))
+      hinge_held_[i] = true;
   // Resting on a ground with friction: stuck or sliding from the start.
   for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
     if (resting_[i]) settle(i, y.data(), 0.0);
@@ -222,8 +239,9 @@ void SceneModel::linear_accelerations(const double* y) {
       accelerations_[i].setZero();
       continue;
     }
-    Vector3d a = scene_.gravity +
-                 (force_[i] + air_force(scene_, body, velocity(y, i), spin(y, i))) / body.mass;
+    Vector3d a = scene_.gravity + (force_[i] + air_force(scene_, body, velocity(y, i), spin(y, i)) +
+                                   panel_wind_force(body, orientation(y, i).normalized())) /
+                                      body.mass;
     applied_[i] = a;
     // A body resting on the ground is held there: the ground takes any push into it, and
     // its friction holds the body (stuck) or acts against its sliding, mu_k N.
@@ -256,7 +274,7 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
   for (int i = 0; i < static_cast<int>(scene_.bodies.size()); ++i) {
     const Body& body = scene_.bodies[i];
     double* d = dydt + at(i);
-    if (body.fixed) {
+    if (body.fixed || hinge_held_[i]) {
       std::fill(d, d + kPerBody, 0.0);
       continue;
     }

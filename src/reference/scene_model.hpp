@@ -71,11 +71,22 @@ class SceneModel : public HybridModel {
   struct Source {
     bool apex = false;
     int swing_axis = -1;  ///< 0, 1, 2 for a swing
-    int body = -1;        ///< the apex's, swing's or stop's body
+    int body = -1;        ///< the apex's, swing's, stop's or fall's body
     ContactPair pair;     ///< a contact's pair
     bool stop = false;
-    bool contact() const { return !apex && swing_axis < 0 && !stop; }
+    bool fall = false;  ///< the centre reaching fallen_height() above the ground
+    bool contact() const { return !apex && swing_axis < 0 && !stop && !fall; }
   };
+  /// Whether body i turns on a hinge and may land on the ground (a falling wall).
+  bool lands(int i) const;
+  /// The angular acceleration (rad/s^2) about its axis of hinged body i at `y`.
+  double hinge_alpha(int i, const double* y);
+  /// Whether turning hinged body i at `y` the way `alpha` says lowers a corner that touches
+  /// the ground: the ground holds it then.
+  bool pressed_into_ground(int i, const double* y, double alpha) const;
+  /// A hinged body landing on the ground at time t: Newton's restitution about the axis,
+  /// omega -> -e omega; a rebound too short to leave, or none, leaves it held there.
+  void land(const ContactPair& pair, double* y, double t);
   /// Each body's linear acceleration at `y` into accelerations_: gravity, air, springs, and
   /// a resting body held on the ground.
   void linear_accelerations(const double* y);
@@ -109,7 +120,8 @@ class SceneModel : public HybridModel {
   std::vector<SlideDecision> slides_;           ///< per body: stuck, sliding or free
   std::vector<double> mu_static_, mu_kinetic_;  ///< per body: its contact with the ground
   std::vector<const Hinge*> hinge_;             ///< per body: the hinge it turns on, or null
-  std::vector<bool> held_;  ///< per body: resting, its acceleration projected onto the ground
+  std::vector<bool> held_;        ///< per body: resting, its acceleration projected onto the ground
+  std::vector<bool> hinge_held_;  ///< per body: on a hinge, held still by the ground
 };
 
 }  // namespace bb

@@ -42,8 +42,20 @@ void SceneModel::events(double, const double* y, double* g) {
       // The normal velocity falling through zero after a bounce is the apex.
       const bool watching = after_bounce_[s.body] && !resting_[s.body];
       g[k] = watching ? velocity(y, s.body).dot(scene_.ground->normal) : 1.0;
+    } else if (s.fall) {
+      // The centre's height falls through the height of lying flat.
+      const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
+      g[k] = above.dot(scene_.ground->normal) - fallen_height(scene_.bodies[s.body].half_extents);
     } else if (s.pair.ground() && resting_[s.pair.a]) {
       g[k] = 1.0;
+    } else if (s.pair.ground() && lands(s.pair.a)) {
+      // A hinged box's corners off its axis reaching the ground; held, it watches nothing.
+      const int i = s.pair.a;
+      const Hinge& h = *hinge_[i];
+      g[k] = hinge_held_[i] ? 1.0
+                            : contact::clear_height(position(y, i), orientation(y, i),
+                                                    scene_.bodies[i].half_extents, h.anchor, h.axis,
+                                                    scene_.ground->point, scene_.ground->normal);
     } else {
       g[k] = proximity(s.pair, y).gap;
     }
@@ -198,6 +210,58 @@ void SceneModel::stop(int i, double* y, double t) {
   settle(i, y, t);
 }
 
+bool SceneModel::lands(int i) const {
+  return hinge_[i] != nullptr && scene_.ground && scene_.bodies[i].shape == Shape::Box &&
+         ground_pair(scene_, i).has_value();
+}
+
+double SceneModel::hinge_alpha(int i, const double* y) {
+  linear_accelerations(y);
+  const Body& b = scene_.bodies[i];
+  const HingeAccelerations a = hinge_accelerations(b, orientation(y, i), position(y, i), spin(y, i),
+                                                   b.mass * accelerations_[i], *hinge_[i]);
+  return a.angular.dot(hinge_[i]->axis);
+}
+
+bool SceneModel::pressed_into_ground(int i, const double* y, double alpha) const {
+  const Hinge& h = *hinge_[i];
+  const Vector3d& half = scene_.bodies[i].half_extents;
+  const Vector3d centre = position(y, i);
+  const Quaterniond q = orientation(y, i).normalized();
+  const auto height = [&](double turn) {
+    const Quaterniond by(Eigen::AngleAxisd(turn, h.axis));
+    return contact::clear_height(h.anchor + by * (centre - h.anchor), by * q, half, h.anchor,
+                                 h.axis, scene_.ground->point, scene_.ground->normal);
+  };
+  const double now = height(0.0);
+  if (now > kSimultaneousGap) return false;
+  // No torque, or a turn that lowers a touching corner: the ground holds the body.
+  return alpha == 0.0 || height(alpha > 0.0 ? 1e-6 : -1e-6) < now;
+}
+
+void SceneModel::land(const ContactPair& pair, double* y, double t) {
+  const int i = pair.a;
+  const Vector3d u = hinge_[i]->axis;
+  const double omega = Vector3d(spin(y, i)).dot(u);
+  // Leaving the ground (a grazing root) needs nothing.
+  if (!pressed_into_ground(i, y, omega)) return;
+  BodyEvents& e = trace_.bodies[i];
+  e.contact_times.push_back(t);
+  if (!e.post_velocity) e.post_velocity = Vector3d(velocity(y, i));
+  // Newton's restitution at the landing corner: about the axis its speed is omega r.
+  const double rebound = -pair.restitution * omega;
+  Vec(y + at(i) + 10) = rebound * u;
+  Vec(y + at(i) + 3) = (rebound * u).cross(Vector3d(position(y, i)) - hinge_[i]->anchor);
+  const double alpha = hinge_alpha(i, y);
+  const bool short_rebound =
+      alpha * rebound < 0.0 && 2.0 * std::abs(rebound / alpha) < rest_flight_time();
+  if ((rebound == 0.0 || short_rebound) && pressed_into_ground(i, y, alpha)) {
+    hinge_held_[i] = true;
+    Vec(y + at(i) + 10).setZero();
+    Vec(y + at(i) + 3).setZero();
+  }
+}
+
 void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
   const int i = impulse.body;
   Vector3d v = velocity(y, i), w = spin(y, i);
@@ -234,6 +298,12 @@ void SceneModel::apply(std::size_t k, double t, double* y) {
     return;
   }
   if (s.stop) return stop(s.body, y, t);
+  if (s.fall) {
+    std::optional<double>& fell = trace_.bodies[s.body].fall_time;
+    if (!fell) fell = t;
+    return;
+  }
+  if (s.contact() && s.pair.ground() && lands(s.pair.a)) return land(s.pair, y, t);
   if (!s.apex) return resolve(s.pair, y, t);
   const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
   trace_.bodies[s.body].apex_heights.push_back(above.dot(scene_.ground->normal));

@@ -86,6 +86,8 @@ void put(Writer& w, const EventTrace& events) {
     put(w, b.velocity_range);
     w.raw<char>(b.stop_time.has_value());
     if (b.stop_time) w.raw(*b.stop_time), put(w, b.stop_position);
+    w.raw<char>(b.fall_time.has_value());
+    if (b.fall_time) w.raw(*b.fall_time);
   }
   w.raw<char>(events.first_collision.has_value());
   if (const auto& c = events.first_collision) {
@@ -106,6 +108,7 @@ EventTrace get_events(Reader& r) {
     for (auto& crossings : b.upward_crossings) crossings = get_values(r);
     b.velocity_range = get_vec(r);
     if (r.raw<char>()) b.stop_time = r.raw<double>(), b.stop_position = get_vec(r);
+    if (r.raw<char>()) b.fall_time = r.raw<double>();
   }
   if (r.raw<char>()) {
     CollisionBalance c;

@@ -20,6 +20,17 @@ inline Vec3 magnus_force(const Body& body, const Air& air, const Vec3& velocity,
   return omega.cross(velocity - air.wind) * body.magnus;
 }
 
+/// The wind on a panel (seed section 8, the falling wall): a box with `wind_force` feels
+/// its part along the normal n of the box's broad face (the axis of its smallest half
+/// extent) turned by `q`, (F.n) n, at its centre (newtons).
+inline Vec3 panel_wind_force(const Body& body, const Quat& q) {
+  if (body.wind_force.isZero()) return Vec3::Zero();
+  Eigen::Index thin = 0;
+  body.half_extents.minCoeff(&thin);
+  const Vec3 n = q * Vec3::Unit(thin);
+  return n * body.wind_force.dot(n);
+}
+
 /// Sum of drag and Magnus on a body; zero when the scene has no air.
 inline Vec3 air_force(const Scene& scene, const Body& body, const Vec3& velocity,
                       const Vec3& omega) {

@@ -27,7 +27,21 @@ struct BodyEvents {
   /// bodies whose stop is observed.
   std::optional<double> stop_time;
   Vec3 stop_position;  ///< metres: where it was at stop_time
+  /// Seconds: the first time the body's centre came within kFallAllowance of the height it
+  /// has lying on its broadest face (a wall reaching the ground), for bodies whose fall is
+  /// observed.
+  std::optional<double> fall_time;
 };
+
+/// Metres: how near the height of lying flat a falling body's centre must come for it to
+/// have fallen; it allows for the skins and margins the engines keep between surfaces.
+inline constexpr double kFallAllowance = 0.02;
+
+/// Metres: the height above the ground of the centre of `half_extents`' box lying on its
+/// broadest face, plus kFallAllowance: below it, the body has fallen.
+inline double fallen_height(const Vec3& half_extents) {
+  return half_extents.minCoeff() + kFallAllowance;
+}
 
 /// Momentum, angular momentum and kinetic energy of the two bodies just before and just
 /// after the first contact between two moving bodies; the difference is what the

@@ -5,6 +5,8 @@
 namespace bb {
 
 bool has_external_forces(const Scene& scene) {
+  for (const Body& b : scene.bodies)
+    if (!b.wind_force.isZero()) return true;
   return scene.air.has_value();
 }
 
@@ -13,8 +15,9 @@ void external_forces(const Scene& scene, const State& state, std::vector<Vec3>& 
   forces.resize(scene.bodies.size());
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];
-    forces[i] =
-        b.fixed ? Vec3{} : air_force(scene, b, state[i].velocity, state[i].angular_velocity);
+    forces[i] = b.fixed ? Vec3{}
+                        : Vec3(air_force(scene, b, state[i].velocity, state[i].angular_velocity) +
+                               panel_wind_force(b, state[i].orientation));
   }
   if (springs_by_hand == nullptr) return;
   add_spring_forces(*springs_by_hand, state, forces.data());

@@ -1,7 +1,7 @@
 // The forces the harness adds to an engine's bodies before each of its steps, computed
-// from the engine's own current state, the way a game adds them: air drag, wind and the
-// Magnus force today, springs applied by hand later. Every adapter calls this one
-// function instead of keeping its own copy of the loop.
+// from the engine's own current state, the way a game adds them: air drag, wind, the
+// Magnus force, the wind on a panel (a box's broad face), and springs applied by hand. Every
+// adapter calls this one function instead of keeping its own copy of the loop.
 #pragma once
 
 #include <vector>

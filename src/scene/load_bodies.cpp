@@ -77,6 +77,12 @@ void read_air_coefficients(TomlReader& r, const Scene& scene, Body& b) {
            "drag needs a frontal area: only a sphere has one (A = pi r^2)");
   if (b.magnus != 0.0 && b.shape == Shape::Point)
     r.fail(r.line_of("magnus"), "a point does not spin, so it feels no Magnus force");
+  b.wind_force = r.vec3_or("wind_force", {});
+  require_planar(r, scene, "wind_force", b.wind_force);
+  if (b.wind_force.norm() > 0.0 && b.shape != Shape::Box)
+    r.fail(r.line_of("wind_force"),
+           "'wind_force' pushes a box's broad face (a panel, a wall); body '" + b.name +
+               "' is not a box");
   if ((b.drag_coefficient > 0.0 || b.magnus != 0.0) && !scene.air)
     r.fail(r.line_of(b.drag_coefficient > 0.0 ? "drag_coefficient" : "magnus"),
            r.where() + " has air coefficients but the case has no [air] section");

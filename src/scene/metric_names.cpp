@@ -29,7 +29,8 @@ const std::vector<std::string>& observable_kinds() {
                                              "max_stretch",
                                              "sag",
                                              "flips",
-                                             "angular_momentum_change"};
+                                             "angular_momentum_change",
+                                             "fall_time"};
   return v;
 }
 

@@ -31,6 +31,7 @@ FeatureSet Scene::features() const {
     if (air && b.magnus != 0.0) magnus_used = true;
     if (b.angular_velocity.norm() > 0.0) f.add(Feature::Rotation);
     if (b.shape == Shape::Box) f.add(Feature::Boxes);
+    if (b.wind_force.norm() > 0.0) f.add(Feature::Wind);
   }
   if (drag) f.add(Feature::Drag);
   if (magnus_used) f.add(Feature::Magnus);

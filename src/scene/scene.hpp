@@ -29,8 +29,12 @@ struct Body {
   Vec3 angular_velocity;                ///< radians per second, world frame
   double drag_coefficient = 0.0;        ///< Cd, dimensionless
   double magnus = 0.0;                  ///< k in F = k (omega x (v - wind)), kilograms
-  bool fixed = false;                   ///< infinite mass, never moves
-  int line = 0;                         ///< line of the [[body]] header in the case file
+  /// Newtons: the wind's push on a box's broad face when the face meets it square on; the
+  /// box feels its part along the face's normal, (F.n) n, at its centre (seed section 8,
+  /// the falling wall: F_w cos(phi) as the wall tips).
+  Vec3 wind_force;
+  bool fixed = false;  ///< infinite mass, never moves
+  int line = 0;        ///< line of the [[body]] header in the case file
 };
 
 /// Still air with an optional uniform wind.

@@ -38,8 +38,9 @@ TEST(SpringForces, TheEquationsOfMotionAndTheEnergyCarryTheSprings) {
   const EquationsOfMotion equations(scene);
   const State start = initial_state(scene);
   std::vector<Vec3> x, v, omega(start.size()), a(start.size());
+  const std::vector<Quat> q(start.size(), Quat::Identity());
   for (const BodyState& s : start) x.push_back(s.position), v.push_back(s.velocity);
-  equations.accelerations(x, v, omega, a);
+  equations.accelerations(x, v, omega, q, a);
   std::vector<Vec3> by_hand;
   const SpringNetwork springs = spring_network(scene);
   external_forces(scene, start, by_hand, &springs);
