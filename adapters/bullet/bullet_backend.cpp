@@ -38,6 +38,12 @@ constexpr const char* kSpringsByHandMethod =
     "state (external_forces), btRigidBody::applyCentralForce; no constraint, so no stiffness "
     "limit; anchored particles static (mass 0)";
 
+/// What a 2D scene's moving bodies are held by, for engine_settings.
+constexpr const char* kPlane2d =
+    "btRigidBody::setLinearFactor(1, 1, 0) and setAngularFactor(0, 0, 1) on every moving "
+    "body: the solver, forces and integration leave z and the spin about x and y untouched, "
+    "so each body stays at its z (0) and turns about z only";
+
 /// The radius of the largest sphere inside a body: what CCD sweeps and its motion threshold.
 double inner_radius(const Body& b) {
   return b.shape == Shape::Box ? b.half_extents.minCoeff() : b.radius;
@@ -129,6 +135,7 @@ class BulletSimulation : public Simulation {
     add_point_body_setting(scene_, s);
     s.push_back({"max_angular_speed", std::string("pi/2 rad per step (built into btRigidBody)")});
     add_bullet_gyroscopic_setting(scene_, s);
+    s.push_back({"plane_2d", std::string(scene_.dims == 2 ? kPlane2d : "none (3D scene)")});
     return s;
   }
 
@@ -151,6 +158,11 @@ class BulletSimulation : public Simulation {
       body->setLinearVelocity(to_bt(b.velocity));
       body->setAngularVelocity(to_bt(b.angular_velocity));
       set_bullet_gyroscopic(scene_, *body);
+      // A 2D scene stays in the x-y plane, as a 2D game sets Bullet up.
+      if (scene_.dims == 2) {
+        body->setLinearFactor(btVector3(1, 1, 0));
+        body->setAngularFactor(btVector3(0, 0, 1));
+      }
     }
     body->setActivationState(DISABLE_DEACTIVATION);
     body->setUserIndex(index);

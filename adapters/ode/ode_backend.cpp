@@ -56,6 +56,22 @@ constexpr const char* kOdeGyroscopicOff =
     "dBodySetGyroscopicMode(body, 0) on every moving body (gyroscopic_term = false): no "
     "gyroscopic torque, a free body keeps its world angular velocity and never flips";
 
+/// What holds a 2D scene's moving bodies in the plane, for engine_settings.
+constexpr const char* kOdePlane2d =
+    "dJointCreatePlane2D per moving body without a hinge (a hinge about z already holds its "
+    "body), attached to (body, 0): rows vz = 0 (with the "
+    "world's ERP pulling z back to 0), wx = 0, wy = 0 on the world's CFM, motors off; the "
+    "joint leaves the orientation's drift to the application, so after each step the "
+    "adapter does what ODE's demo_plane2d does: the quaternion keeps only w and z "
+    "(renormalised) and the spin only its z part";
+
+/// Whether body `index` of `scene` turns on a hinge.
+bool hinged(const Scene& scene, std::size_t index) {
+  for (const Hinge& h : scene.hinges)
+    if (static_cast<std::size_t>(h.body) == index) return true;
+  return false;
+}
+
 Vec3 from_ode(const dReal* v) {
   return {v[0], v[1], v[2]};
 }
@@ -100,6 +116,13 @@ class OdeSimulation : public Simulation {
         dBodySetAngularVel(body, b.angular_velocity.x(), b.angular_velocity.y(),
                            b.angular_velocity.z());
         dBodySetGyroscopicMode(body, gyroscopic_ ? 1 : 0);
+        // A 2D scene stays in the x-y plane: ODE's own plane-2D joint to the world.
+        // A hinged body is left to its hinge (about z in a 2D scene): the plane rows would
+        // repeat its own, which with cfm = 0 makes ODE's matrix singular.
+        if (scene.dims == 2 && !hinged(scene, bodies_.size())) {
+          dJointID plane = dJointCreatePlane2D(world_, nullptr);
+          dJointAttach(plane, body, nullptr);
+        }
       }
       dBodySetAutoDisableFlag(body, 0);
       bodies_.push_back(body);
@@ -146,6 +169,7 @@ class OdeSimulation : public Simulation {
     else
       dWorldStep(world_, dt_);
     if (contacts_) contacts_->clear();
+    if (scene_.dims == 2) realign_to_plane();
   }
 
   void read(State& out) const override {
@@ -215,10 +239,26 @@ class OdeSimulation : public Simulation {
                                           "v += J / m, omega += I_world^-1 (r x J) "
                                           "(ODE has no impulse call)")});
     add_point_body_setting(scene_, s);
+    s.push_back({"plane_2d", std::string(scene_.dims == 2 ? kOdePlane2d : "none (3D scene)")});
     return s;
   }
 
  private:
+  /// ODE's plane-2D joint corrects z but not the tilt (plane2d.cpp leaves "angular correction
+  /// to the application"); as demo_plane2d does after each step, each body on a plane joint's
+  /// orientation keeps its turn about z only and its spin only the z part.
+  void realign_to_plane() {
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      if (scene_.bodies[i].fixed || hinged(scene_, i)) continue;
+      const dReal* q = dBodyGetQuaternion(bodies_[i]);
+      const dReal norm = std::sqrt(q[0] * q[0] + q[3] * q[3]);
+      const dQuaternion upright = {q[0] / norm, 0, 0, q[3] / norm};
+      dBodySetQuaternion(bodies_[i], upright);
+      const dReal* w = dBodyGetAngularVel(bodies_[i]);
+      dBodySetAngularVel(bodies_[i], 0, 0, w[2]);
+    }
+  }
+
   const Scene& scene_;
   dReal dt_;
   bool quick_step_ = false;
