@@ -8,6 +8,7 @@
 #include "cli/progress.hpp"
 #include "report/atomic_file.hpp"
 #include "report/format.hpp"
+#include "report/rotation_plot.hpp"
 #include "report/table.hpp"
 #include "run/interrupt.hpp"
 #include "run/stability.hpp"
@@ -60,6 +61,18 @@ std::string index_page(const std::vector<CaseResults>& all) {
   for (const CaseResults& r : all)
     titles.rows.push_back({fmt::format("[{0}]({0}.md)", r.scene->name), r.scene->title,
                            r.scene->seed.empty() ? "-" : r.scene->seed});
+  // The cases whose bodies turn: each page's rotation plot, gathered here.
+  std::string rotation;
+  for (const CaseResults& r : all)
+    if (!turning_bodies(*r.scene).empty())
+      rotation +=
+          fmt::format("### [{0}]({0}.md)\n\n![{0}: rotation]({0}-rotation.svg)\n\n", r.scene->name);
+  if (!rotation.empty())
+    rotation =
+        "\n## Rotation\n\nThe cases whose bodies turn: each turning body's angle about "
+        "z and angular velocity (2D), or the tilt of its spin axis and its spin about it "
+        "(3D), every backend at report_dt over the reference, as on the case's page.\n\n" +
+        rotation;
   return "# beachball report\n\nThe bundled suite, one page per case: the scene, every backend's "
          "error against the GSL reference and its cost, the whole dt sweep with work-precision "
          "diagrams, trajectories and energy, the stability search, the gates and the engine "
@@ -68,7 +81,7 @@ std::string index_page(const std::vector<CaseResults>& all) {
          "\n## At report_dt\n\nEach cell: position_max against the reference at the case's "
          "report_dt, the observed order of convergence p over the sweep, the median cost of one "
          "step, and ✓ or ✗ where a gate covers the backend.\n\n" +
-         render_markdown(t);
+         render_markdown(t) + rotation;
 }
 
 }  // namespace

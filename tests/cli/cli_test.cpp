@@ -178,6 +178,24 @@ TEST(Cli, ReportWritesAnIndexPagesPlotsAndStability) {
     EXPECT_TRUE(j["stability"]["course/rk4"]["theory"].is_number()) << name;
   }
   EXPECT_NE(text.find("unsupported"), std::string::npos);  // box2d on the 3D case
+  // Neither case turns a body: the index has no rotation section.
+  EXPECT_EQ(text.find("## Rotation"), std::string::npos);
+}
+
+// A case whose bodies turn has its rotation plot on its page, and the index shows it too.
+TEST(Cli, TheIndexGathersTheRotationPlots) {
+  const std::string out = fresh_dir("report_rotation");
+  ASSERT_EQ(beachball("report " + test::source_path("cases/plank_free.toml") + " " +
+                      test::source_path("cases/arrow.toml") + " --out " + out + " --no-cost")
+                .exit_code,
+            0);
+  std::ifstream index(out + "/README.md");
+  const std::string text((std::istreambuf_iterator<char>(index)), std::istreambuf_iterator<char>());
+  const std::size_t section = text.find("## Rotation");
+  ASSERT_NE(section, std::string::npos);
+  EXPECT_NE(text.find("(plank_free-rotation.svg)", section), std::string::npos);
+  EXPECT_EQ(text.find("arrow-rotation", section), std::string::npos);
+  EXPECT_TRUE(fs::exists(out + "/plank_free-rotation.svg"));
 }
 
 // A report folder reused for a smaller suite keeps no page, data or plot of a case that is
