@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "metrics/event_observables.hpp"
+#include "metrics/hinge_observables.hpp"
 #include "metrics/rotation_observables.hpp"
 #include "metrics/stop_observables.hpp"
 
@@ -54,6 +55,7 @@ ObservableValue measure(const Scene& scene, const Observe& observe, const Trajec
   if (auto from_events = measure_event(observe, trajectory.events)) return *from_events;
   if (auto stop = measure_stop(scene, observe, trajectory, reference)) return *stop;
   if (auto turn = measure_rotation(scene, observe, trajectory)) return *turn;
+  if (auto hinge = measure_hinge(scene, observe, trajectory)) return *hinge;
   if (observe.kind == "sag") return sag(scene, trajectory.states.back());
   const Vec3& v = trajectory.states.back()[observe.body].velocity;
   if (observe.kind == "final_speed") return {v.norm(), ""};

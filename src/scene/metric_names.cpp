@@ -30,7 +30,8 @@ const std::vector<std::string>& observable_kinds() {
                                              "sag",
                                              "flips",
                                              "angular_momentum_change",
-                                             "fall_time"};
+                                             "fall_time",
+                                             "hinge_force"};
   return v;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "metrics/hinge_observables.hpp"
 #include "report/summary_tables.hpp"
 #include "run/case_runner.hpp"
 #include "support/test_support.hpp"
@@ -187,6 +188,35 @@ n = 1
   const RunRecord& euler = results.runs.front();
   EXPECT_NEAR(observable(euler, "contact_time/ball/1").measured.value.value(), t, 2e-3);
   EXPECT_NEAR(observable(euler, "bounce_apex/ball/1").measured.value.value(), apex, 2e-2);
+}
+
+// The hinge force by the hinge's law: a plank hanging still from its end is held up by
+// exactly its weight; spinning without gravity about its end, it is pulled in by m w^2 d.
+TEST(HingeForce, HoldsTheWeightAndSuppliesTheCentripetalPull) {
+  Scene scene = test::scene_from(R"(name = "x"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.1, 0.05]
+report_dt = 0.05
+[[body]]
+name = "plank"
+shape = "box"
+half_extents = [0.1, 1.0, 0.1]
+mass = 2.0
+position = [0.0, -1.0, 0.0]
+[[hinge]]
+body = "plank"
+anchor = [0.0, 0.0, 0.0]
+axis = [0.0, 0.0, 1.0]
+)");
+  BodyState s{scene.bodies[0].position, Vec3::Zero(), Quat::Identity(), Vec3::Zero()};
+  EXPECT_LT((hinge_force(scene, scene.hinges[0], s) - Vec3(0.0, 2.0 * 9.81, 0.0)).norm(), 1e-12);
+  scene.gravity = Vec3::Zero();
+  s.angular_velocity = {0.0, 0.0, 3.0};
+  s.velocity = s.angular_velocity.cross(s.position);
+  EXPECT_LT((hinge_force(scene, scene.hinges[0], s) - Vec3(0.0, 2.0 * 9.0 * 1.0, 0.0)).norm(),
+            1e-12);
 }
 
 }  // namespace

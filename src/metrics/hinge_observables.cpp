@@ -1,0 +1,51 @@
+#include "metrics/hinge_observables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "reference/hinge_motion.hpp"
+#include "scene/air_forces.hpp"
+
+namespace bb {
+
+namespace {
+
+/// The turn at which the hinge force is read, radians: 45 degrees.
+constexpr double kTurn = std::numbers::pi / 4.0;
+
+}  // namespace
+
+Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& s) {
+  const Body& body = scene.bodies[hinge.body];
+  const Vec3 applied = body.mass * scene.gravity +
+                       air_force(scene, body, s.velocity, s.angular_velocity) +
+                       panel_wind_force(body, s.orientation);
+  const HingeAccelerations a =
+      hinge_accelerations(body, s.orientation, s.position, s.angular_velocity, applied, hinge);
+  return body.mass * a.linear - applied;
+}
+
+std::optional<ObservableValue> measure_hinge(const Scene& scene, const Observe& observe,
+                                             const Trajectory& trajectory) {
+  if (observe.kind != "hinge_force") return std::nullopt;
+  const auto h = std::find_if(scene.hinges.begin(), scene.hinges.end(),
+                              [&](const Hinge& x) { return x.body == observe.body; });
+  if (h == scene.hinges.end()) return ObservableValue{std::nullopt, "the body is on no hinge"};
+  const Quat start = scene.bodies[observe.body].orientation;
+  // The turn from the start, radians, and the hinge force, at each sample in order.
+  double turn_before = 0.0, force_before = 0.0;
+  for (std::size_t n = 0; n < trajectory.states.size(); ++n) {
+    const BodyState& s = trajectory.states[n][observe.body];
+    const double turn =
+        2.0 * std::acos(std::min(1.0, std::abs((start.conjugate() * s.orientation).w())));
+    const double force = hinge_force(scene, *h, s).norm();
+    if (n > 0 && turn >= kTurn && turn_before < kTurn)
+      return ObservableValue{
+          force_before + (force - force_before) * (kTurn - turn_before) / (turn - turn_before), ""};
+    turn_before = turn, force_before = force;
+  }
+  return ObservableValue{std::nullopt, "it never turned 45 degrees"};
+}
+
+}  // namespace bb

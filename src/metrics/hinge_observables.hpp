@@ -1,0 +1,27 @@
+// The force a hinge exerts on its body (seed section 8: the falling wall's push "against the
+// contact point with the ground", where a weak anchor would break), recovered from each
+// sampled state by the hinge's law: the body turns about the axis under the forces at its
+// centre, so the hinge supplies m a - F, a the centre's acceleration that turning implies.
+#pragma once
+
+#include <optional>
+
+#include "metrics/observables.hpp"
+
+namespace bb {
+
+/// The force (N) hinge `hinge` exerts on its body in `state`: m a - F with F gravity, air
+/// and the wind on a panel at its centre, a = alpha x r + omega x (omega x r) from the
+/// torque of F about the axis. Exact for a body turning free of anything else.
+Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& state);
+
+/// The value of `observe` on `trajectory`, or nullopt when its kind is not this one:
+/// hinge_force (N), the hinge's force on the body when it has turned 45 degrees from its
+/// start, interpolated linearly in the turn between the samples either side (a force read
+/// at a fixed turn compares backends; its largest value, just before a wall lands, would
+/// depend on where the samples fall); a note when the body is on no hinge or never turns
+/// that far.
+std::optional<ObservableValue> measure_hinge(const Scene& scene, const Observe& observe,
+                                             const Trajectory& trajectory);
+
+}  // namespace bb
