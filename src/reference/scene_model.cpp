@@ -192,9 +192,8 @@ SceneModel::SceneModel(const Scene& scene)
       resting_[pair.a] = true;
   }
   // A hinged body on the ground that its forces turn into it stays where it is.
-  std::vector<double> start = initial_state();
   for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
-    if (lands(i) && pressed_into_ground(i, start.data(), hinge_alpha(i, start.data())))
+    if (lands(i) && pressed_into_ground(i, y.data(), hinge_alpha(i, y.data())))
       hinge_held_[i] = true;
   // Resting on a ground with friction: stuck or sliding from the start.
   for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
