@@ -1,5 +1,7 @@
 #include "report/json_writer.hpp"
 
+#include "run/claims.hpp"
+
 namespace bb {
 
 namespace {
@@ -84,6 +86,17 @@ Json results_json(const CaseResults& results) {
   j["order_fit"] = Json::object();
   for (const auto& [name, counts] : results.order_points)
     j["order_fit"][name] = {{"points", counts.first}, {"below_floor", counts.second}};
+  // Each claim's verdict per backend, computed from the runs above.
+  j["claims"] = Json::array();
+  for (const ClaimResult& c : judge_claims(results)) {
+    Json verdicts = Json::object();
+    for (const ClaimVerdict& v : c.verdicts)
+      verdicts[v.backend] = {{"verdict", v.verdict},
+                             {"left", optional_json(v.left)},
+                             {"right", optional_json(v.right)}};
+    j["claims"].push_back(
+        {{"text", c.claim->text}, {"seed", c.claim->seed}, {"verdicts", verdicts}});
+  }
   j["stability"] = Json::object();
   for (const StabilityResult& r : results.stability)
     j["stability"][r.backend] = {{"critical_dt", optional_json(r.critical_dt)},

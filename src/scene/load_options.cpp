@@ -138,6 +138,65 @@ void read_gates(TomlReader& root, Scene& scene) {
   }
 }
 
+namespace {
+
+/// One side of a [[claim]], `key` "left" or "right": a number, or
+/// "<backend or *>:<metric or observable>" naming something the case has.
+ClaimSide read_claim_side(TomlReader& r, const Scene& scene, const std::string& key,
+                          const std::vector<std::string>& backends) {
+  ClaimSide side;
+  if (r.holds_number(key)) {
+    side.number = r.number(key);
+    return side;
+  }
+  const std::string text = r.string(key);
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos)
+    r.fail(r.line_of(key), "[[claim]] '" + key + "' is '" + text +
+                               "'; write a number or '<backend or *>:<metric or observable>'");
+  side.backend = text.substr(0, colon);
+  side.metric = text.substr(colon + 1);
+  if (side.backend != "*" && !contains(backends, side.backend))
+    r.fail(r.line_of(key), "[[claim]] '" + key + "' names backend '" + side.backend +
+                               "', which this case does not run; it runs: " + joined(backends));
+  if (!is_metric(scene, side.metric))
+    r.fail(r.line_of(key), "[[claim]] '" + key + "' names '" + side.metric +
+                               "', which is neither an error metric (" +
+                               joined(error_metric_names()) + ") nor an [[observe]] of this case");
+  return side;
+}
+
+}  // namespace
+
+void read_claims(TomlReader& root, Scene& scene) {
+  const std::vector<std::string> backends = backend_names(scene);
+  const std::vector<std::string> ops = {"<", "<=", ">", ">=", "~"};
+  for (const toml::table* t : root.tables("claim")) {
+    TomlReader r = sub_reader(root, *t, "[[claim]]");
+    Claim c;
+    c.line = r.line();
+    c.text = r.string("text");
+    if (c.text.empty()) r.fail(r.line_of("text"), "[[claim]] 'text' must not be empty");
+    c.seed = r.string_or("seed", "");
+    c.left = read_claim_side(r, scene, "left", backends);
+    c.op = r.string("op");
+    if (!contains(ops, c.op))
+      r.fail(r.line_of("op"), "[[claim]] 'op' is '" + c.op + "'; known: " + joined(ops));
+    c.right = read_claim_side(r, scene, "right", backends);
+    if (c.left.is_number())
+      r.fail(r.line_of("left"), "[[claim]] 'left' must name a quantity, not a number");
+    if (c.right.backend == "*" && c.left.backend != "*")
+      r.fail(r.line_of("right"),
+             "[[claim]] 'right' says '*' (each backend) where 'left' names one backend");
+    c.tolerance = r.number_or("tolerance", 0.0);
+    require_range(r, "tolerance", c.tolerance, 0.0, 0.0, true);
+    if (c.op == "~" && !r.has("tolerance"))
+      r.fail(r.line_of("op"), "[[claim]] with '~' needs a 'tolerance'");
+    r.finish();
+    scene.claims.push_back(c);
+  }
+}
+
 void read_report_and_stability(TomlReader& root, Scene& scene) {
   if (const toml::table* t = root.table("report")) {
     TomlReader r = sub_reader(root, *t, "[report]");

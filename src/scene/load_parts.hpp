@@ -20,6 +20,7 @@ void read_course(TomlReader& root, Scene& scene);
 void read_engines(TomlReader& root, Scene& scene);
 void read_observes(TomlReader& root, Scene& scene);
 void read_gates(TomlReader& root, Scene& scene);
+void read_claims(TomlReader& root, Scene& scene);
 void read_report_and_stability(TomlReader& root, Scene& scene);
 
 /// A number as messages show it: up to ten significant digits.

@@ -146,6 +146,25 @@ struct Gate {
   int line = 0;
 };
 
+/// One side of a claim: `<backend or *>:<metric or observable>`, or a number.
+struct ClaimSide {
+  std::string backend;  ///< a backend of the case, or "*" (each backend in turn); "" for a number
+  std::string metric;   ///< an error metric or an [[observe]] of the case
+  double number = 0.0;  ///< when backend is ""
+  bool is_number() const { return backend.empty(); }
+};
+
+/// A sentence of the course text checked by numbers ([[claim]]): left op right.
+struct Claim {
+  std::string text;
+  std::string seed;  ///< the section of the course text, may be empty
+  ClaimSide left;
+  std::string op;  ///< "<", "<=", ">", ">=", "~" (within `tolerance`)
+  ClaimSide right;
+  double tolerance = 0.0;  ///< absolute, in the quantities' unit; for "~"
+  int line = 0;
+};
+
 /// How the report presents the case ([report], optional).
 struct ReportOptions {
   /// Error metrics or observable names to draw work-precision diagrams for.
@@ -187,6 +206,7 @@ struct Scene {
   std::map<std::string, std::map<std::string, EngineValue>> engines;
   std::vector<Observe> observes;
   std::vector<Gate> gates;
+  std::vector<Claim> claims;
   ReportOptions report;
   StabilityOptions stability;
 

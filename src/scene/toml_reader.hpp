@@ -37,6 +37,11 @@ class TomlReader {
   std::vector<const toml::table*> tables(const std::string& key);
 
   bool has(const std::string& key) const { return table_.contains(key); }
+  /// Whether `key` holds a number (an integer or a float).
+  bool holds_number(const std::string& key) const {
+    const toml::node* n = table_.get(key);
+    return n != nullptr && (n->is_integer() || n->is_floating_point());
+  }
   /// Line of a key's value, or of the table when the key is absent.
   int line_of(const std::string& key) const;
   int line() const { return line_; }

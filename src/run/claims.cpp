@@ -1,0 +1,115 @@
+#include "run/claims.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/metric_names.hpp"
+#include "scene/text.hpp"
+
+namespace bb {
+
+namespace {
+
+/// The value of `metric` in `run`: an error metric, or an observable's measured value.
+std::optional<double> quantity(const RunRecord& run, const std::string& metric) {
+  if (run.status != RunStatus::Ok) return std::nullopt;
+  const auto& errors = error_metric_names();
+  if (std::find(errors.begin(), errors.end(), metric) != errors.end())
+    return run.errors ? std::optional<double>(run.errors->get(metric)) : std::nullopt;
+  for (const ObservableResult& o : run.observables)
+    if (o.name == metric) return o.measured.value;
+  return std::nullopt;
+}
+
+/// Backend `backend`'s runs: the reference's one, or one per dt, largest dt first.
+std::vector<const RunRecord*> runs_of(const CaseResults& results, const std::string& backend) {
+  if (backend == "reference") return {&results.reference_run};
+  std::vector<const RunRecord*> out;
+  for (const RunRecord& run : results.runs)
+    if (run.backend == backend) out.push_back(&run);
+  return out;
+}
+
+/// The run of `backend` at `dt` (the reference's whatever the dt), or null.
+const RunRecord* run_at(const CaseResults& results, const std::string& backend,
+                        std::optional<double> dt) {
+  for (const RunRecord* run : runs_of(results, backend))
+    if (backend == "reference" || run->dt == dt) return run;
+  return nullptr;
+}
+
+/// The value of one side of a claim, for the backend being judged at `dt`.
+std::optional<double> side_value(const CaseResults& results, const ClaimSide& side,
+                                 const std::string& judged, std::optional<double> dt) {
+  if (side.is_number()) return side.number;
+  const std::string backend = side.backend == "*" ? judged : side.backend;
+  const RunRecord* run = run_at(results, backend, dt);
+  // A named engine or course variant without this dt is read at report_dt.
+  if (run == nullptr) run = run_at(results, backend, results.scene->report_dt);
+  return run ? quantity(*run, side.metric) : std::nullopt;
+}
+
+ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::string& backend) {
+  ClaimVerdict v{backend, "", std::nullopt, std::nullopt};
+  std::vector<double> holding, failing;  // the dts, largest first
+  bool any = false;
+  for (const RunRecord* run : runs_of(results, backend)) {
+    const std::optional<double> l = side_value(results, claim.left, backend, run->dt);
+    const std::optional<double> r = side_value(results, claim.right, backend, run->dt);
+    const bool at_report = !run->dt || *run->dt == results.scene->report_dt;
+    if (at_report) v.left = l, v.right = r;
+    if (!l || !r) continue;
+    any = true;
+    (claim_holds(claim.op, *l, *r, claim.tolerance) ? holding : failing)
+        .push_back(run->dt.value_or(0.0));
+  }
+  if (!any) {
+    v.verdict = "not measured (" + backend + " has no value for it)";
+    return v;
+  }
+  if (failing.empty()) {
+    v.verdict = "holds";
+  } else if (holding.empty()) {
+    v.verdict = "fails";
+  } else if (*std::max_element(holding.begin(), holding.end()) <
+             *std::min_element(failing.begin(), failing.end())) {
+    v.verdict =
+        "holds for dt <= " + format_dt(*std::max_element(holding.begin(), holding.end())) + " s";
+  } else {
+    std::string list;
+    for (double dt : holding) list += (list.empty() ? "" : ", ") + format_dt(dt);
+    v.verdict = "holds at dt " + list + " s only";
+  }
+  return v;
+}
+
+}  // namespace
+
+bool claim_holds(const std::string& op, double left, double right, double tolerance) {
+  if (op == "<") return left < right;
+  if (op == "<=") return left <= right;
+  if (op == ">") return left > right;
+  if (op == ">=") return left >= right;
+  return std::abs(left - right) <= tolerance;
+}
+
+std::vector<ClaimResult> judge_claims(const CaseResults& results) {
+  std::vector<ClaimResult> out;
+  for (const Claim& claim : results.scene->claims) {
+    ClaimResult r{&claim, {}};
+    std::vector<std::string> backends;
+    if (claim.left.backend == "*") {
+      if (!results.reference_run.backend.empty()) backends.push_back("reference");
+      for (const RunRecord& run : results.runs)
+        if (std::find(backends.begin(), backends.end(), run.backend) == backends.end())
+          backends.push_back(run.backend);
+    } else {
+      backends.push_back(claim.left.backend);
+    }
+    for (const std::string& b : backends) r.verdicts.push_back(judge(results, claim, b));
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace bb
