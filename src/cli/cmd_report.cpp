@@ -7,6 +7,7 @@
 #include "cli/output_folder.hpp"
 #include "cli/progress.hpp"
 #include "report/atomic_file.hpp"
+#include "report/claims_page.hpp"
 #include "report/format.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/table.hpp"
@@ -76,7 +77,9 @@ std::string index_page(const std::vector<CaseResults>& all) {
   return "# beachball report\n\nThe bundled suite, one page per case: the scene, every backend's "
          "error against the GSL reference and its cost, the whole dt sweep with work-precision "
          "diagrams, trajectories and energy, the stability search, the gates and the engine "
-         "settings used. Regenerate with `scripts/report`; only cost figures change.\n\n" +
+         "settings used. Regenerate with `scripts/report`; only cost figures change.\n\n"
+         "**[Claims ledger](claims.md)**: the course text's sentences, each with its verdict "
+         "per backend and the numbers behind it.\n\n" +
          render_markdown(titles) +
          "\n## At report_dt\n\nEach cell: position_max against the reference at the case's "
          "report_dt, the observed order of convergence p over the sweep, the median cost of one "
@@ -115,6 +118,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
     FileBatch batch(folder.staging());
     for (const CaseResults& r : all) write_case_outputs(r, batch);
     batch.write("README.md", index_page(all));
+    batch.write("claims.md", claims_page(all));
     batch.commit();
     folder.commit();
   }

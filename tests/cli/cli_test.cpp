@@ -182,6 +182,27 @@ TEST(Cli, ReportWritesAnIndexPagesPlotsAndStability) {
   EXPECT_EQ(text.find("## Rotation"), std::string::npos);
 }
 
+// The claims ledger: written beside the index, linked before any case, one row per claim
+// with its verdicts computed from the runs.
+TEST(Cli, TheClaimsLedgerIsLinkedFirstAndJudgesEveryBackend) {
+  const std::string out = fresh_dir("report_claims");
+  ASSERT_EQ(beachball("report " + test::source_path("cases/drag_fall.toml") + " --out " + out +
+                      " --no-cost")
+                .exit_code,
+            0);
+  std::ifstream index(out + "/README.md");
+  const std::string text((std::istreambuf_iterator<char>(index)), std::istreambuf_iterator<char>());
+  ASSERT_NE(text.find("(claims.md)"), std::string::npos);
+  EXPECT_LT(text.find("(claims.md)"), text.find("(drag_fall.md)"));
+  std::ifstream ledger(out + "/claims.md");
+  const std::string md((std::istreambuf_iterator<char>(ledger)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("The elephant falls faster than the mouse"), std::string::npos);
+  EXPECT_NE(md.find("reference: **holds**"), std::string::npos) << md;
+  EXPECT_NE(md.find("ode: **holds**"), std::string::npos) << md;
+  const auto j = nlohmann::json::parse(std::ifstream(out + "/drag_fall.json"));
+  EXPECT_EQ(j["claims"][0]["verdicts"]["reference"]["verdict"], "holds");
+}
+
 // A case whose bodies turn has its rotation plot on its page, and the index shows it too.
 TEST(Cli, TheIndexGathersTheRotationPlots) {
   const std::string out = fresh_dir("report_rotation");
