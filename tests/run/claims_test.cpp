@@ -13,30 +13,24 @@
 namespace bb {
 namespace {
 
-const std::string kFall = R"(name = "fall"
-dims = 2
-duration = 2.0
-sample = 0.1
-dt = [0.1, 0.05, 0.025, 0.0125]
-report_dt = 0.05
-[air]
-density = 1.2
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 1.0
-position = [0.0, 100.0, 0.0]
-drag_coefficient = 0.47
+/// The minimal drag case over 2 s and a sweep of four steps, seen by two Euler integrators.
+std::string fall_case() {
+  std::string text = test::minimal_case("fall");
+  const std::string old_time = "duration = 1.0\nsample = 0.1\ndt = [0.1, 0.05]\n";
+  text.replace(text.find(old_time), old_time.size(),
+               "duration = 2.0\nsample = 0.1\ndt = [0.1, 0.05, 0.025, 0.0125]\n");
+  return text + R"(
 [course]
 integrators = ["explicit-euler", "semi-implicit-euler"]
 [[observe]]
 kind = "final_speed"
 body = "ball"
 )";
+}
 
 CaseResults judged(const std::string& claims) {
   static Scene scene;  // the results point into it
-  scene = test::scene_from(kFall + claims);
+  scene = test::scene_from(fall_case() + claims);
   RunOptions options;
   options.backends = {"course/explicit-euler", "course/semi-implicit-euler"};
   options.cost = false;
@@ -108,7 +102,7 @@ tolerance = 1.0
 
 TEST(Claims, AClaimNamingAMissingQuantityIsALoadErrorWithItsLine) {
   try {
-    test::scene_from(kFall + R"(
+    test::scene_from(fall_case() + R"(
 [[claim]]
 text = "the elephant falls faster"
 left = "reference:final_speed/elephant"
