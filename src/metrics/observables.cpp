@@ -1,5 +1,6 @@
 #include "metrics/observables.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "metrics/event_observables.hpp"
@@ -43,6 +44,35 @@ ObservableValue sag(const Scene& scene, const State& state) {
   return {(top - bottom) / (nx * nz), ""};
 }
 
+ObservableValue final_shear(const Scene& scene, const State& start, const State& end) {
+  if (!scene.grid) return {std::nullopt, "does not apply: the case has no [grid]"};
+  const std::vector<int>& size = scene.grid->size;
+  const int nx = size[0], ny = size[1], nz = size.size() > 2 ? size[2] : 1;
+  if (nx < 2 || ny < 2) return {std::nullopt, "does not apply: the grid has no cells"};
+  const int first = scene.grid->first_body;
+  const auto at = [&](int i, int j, int k) { return first + (k * ny + j) * nx + i; };
+  // Both diagonals of every cell in every layer: a sheared cell lengthens one, shortens
+  // the other, whatever springs it has.
+  double worst = 0.0;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j + 1 < ny; ++j)
+      for (int i = 0; i + 1 < nx; ++i)
+        for (const auto& [a, b] : {std::pair{at(i, j, k), at(i + 1, j + 1, k)},
+                                   std::pair{at(i + 1, j, k), at(i, j + 1, k)}}) {
+          const double rest = (start[a].position - start[b].position).norm();
+          const double now = (end[a].position - end[b].position).norm();
+          if (rest > 0.0) worst = std::max(worst, std::abs(now - rest) / rest);
+        }
+  return {worst, ""};
+}
+
+ObservableValue final_height(const Scene& scene, int body, const State& state) {
+  const double g = scene.gravity.norm();
+  if (g <= 0.0) return {std::nullopt, "does not apply: the case has no gravity"};
+  const Vec3 up = -scene.gravity / g;
+  return {state[body].position.dot(up), ""};
+}
+
 std::optional<double> formula_value(const Scene& scene, const Observe& observe) {
   if (observe.kind != "terminal_velocity") return std::nullopt;
   return terminal_speed(scene, scene.bodies[observe.body]).value;
@@ -57,6 +87,10 @@ ObservableValue measure(const Scene& scene, const Observe& observe, const Trajec
   if (auto turn = measure_rotation(scene, observe, trajectory)) return *turn;
   if (auto hinge = measure_hinge(scene, observe, trajectory)) return *hinge;
   if (observe.kind == "sag") return sag(scene, trajectory.states.back());
+  if (observe.kind == "final_shear")
+    return final_shear(scene, trajectory.states.front(), trajectory.states.back());
+  if (observe.kind == "final_height")
+    return final_height(scene, observe.body, trajectory.states.back());
   const Vec3& v = trajectory.states.back()[observe.body].velocity;
   if (observe.kind == "final_speed") return {v.norm(), ""};
   if (observe.kind == "terminal_velocity") {

@@ -19,6 +19,8 @@ struct ObservableValue {
 /// - final_speed: |v| at the end of the run (m/s);
 /// - terminal_velocity: |v - wind| at the end of the run (m/s), the speed relative to the
 ///   air that tends to the terminal speed; a note where the terminal speed does not apply;
+/// - final_shear: the grid's largest relative change of a cell diagonal, start to end;
+/// - final_height: the centre's height along -gravity at the end of the run (m);
 /// - sag: how far the grid's last row hangs below its first at the end (m, along gravity);
 /// - the event kinds (bounces, contacts, period, max_stretch): see event_observables.hpp;
 /// - the kinds of a sliding body (stop_time, stop_distance, rest_creep, final_velocity):
@@ -31,6 +33,15 @@ ObservableValue measure(const Scene& scene, const Observe& observe, const Trajec
 /// The sag of the scene's grid at `state`: the mean height of its first row (j = 0, the
 /// anchored row of a cloth) less that of its last row, heights along -gravity (m).
 ObservableValue sag(const Scene& scene, const State& state);
+
+/// How far the scene's grid has lost its shape at `end`: the largest relative change, from
+/// `start`, of the length of either diagonal of any cell (a cell sheared by an angle gamma
+/// changes its diagonals by about gamma / 2), whatever springs the cells have.
+ObservableValue final_shear(const Scene& scene, const State& start, const State& end);
+
+/// The height of `body`'s centre at `state` along -gravity, from the world's origin (m): a
+/// throw's end point, where a force across the path (Magnus) lifted it or pushed it down.
+ObservableValue final_height(const Scene& scene, int body, const State& state);
 
 /// The terminal speed of `body`, sqrt(2 m |g| / (rho Cd A)) with A = pi r^2 (m/s), or a
 /// note saying why it does not apply (no drag, no air, no gravity, or a Magnus force).

@@ -31,12 +31,14 @@ const std::vector<std::string>& observable_kinds() {
                                              "flips",
                                              "angular_momentum_change",
                                              "fall_time",
-                                             "hinge_force"};
+                                             "hinge_force",
+                                             "final_height",
+                                             "final_shear"};
   return v;
 }
 
 bool observable_is_scene_wide(const std::string& kind) {
-  return kind == "max_stretch" || kind == "sag";
+  return kind == "max_stretch" || kind == "sag" || kind == "final_shear";
 }
 
 bool observable_is_counted(const std::string& kind) {

@@ -14,7 +14,7 @@ const std::vector<std::string>& observable_kinds();
 
 /// Kinds that count events and take an `n` (the n-th bounce, contact, ...).
 /// Whether observables of this kind describe the whole scene and take no `body` (they are
-/// named by their kind alone): max_stretch, sag.
+/// named by their kind alone): max_stretch, sag, final_shear.
 bool observable_is_scene_wide(const std::string& kind);
 
 bool observable_is_counted(const std::string& kind);

@@ -148,6 +148,54 @@ TEST(Observables, TerminalVelocityDoesNotApplyWithoutDragOrGravity) {
   }
 }
 
+// final_height is the centre's height along -gravity at the end of the run, whatever the
+// direction gravity points in; without gravity it does not apply.
+TEST(Observables, FinalHeightIsTheHeightAlongMinusGravityAtTheEnd) {
+  const std::string observe = "\n[[observe]]\nkind = \"final_height\"\nbody = \"ball\"\n";
+  Trajectory trajectory;
+  trajectory.times = {0.0, 1.0};
+  trajectory.states = {{BodyState{{0.0, 9.0, 0.0}, {}, {}, {}}},
+                       {BodyState{{2.0, 3.0, -4.0}, {0.0, -3.0, 0.0}, {}, {}}}};
+  const Scene scene = test::scene_from(test::kMinimalCase + observe);
+  EXPECT_DOUBLE_EQ(*measure(scene, scene.observes[0], trajectory, nullptr).value, 3.0);
+  std::string sideways = test::kMinimalCase;
+  sideways.replace(sideways.find("[air]"), 5, "gravity = [-2.0, 0.0, 0.0]\n\n[air]");
+  const Scene side = test::scene_from(sideways + observe);
+  EXPECT_DOUBLE_EQ(*measure(side, side.observes[0], trajectory, nullptr).value, 2.0);
+  std::string none = test::kMinimalCase;
+  none.replace(none.find("[air]"), 5, "gravity = [0.0, 0.0, 0.0]\n\n[air]");
+  const Scene floating = test::scene_from(none + observe);
+  const ObservableValue v = measure(floating, floating.observes[0], trajectory, nullptr);
+  EXPECT_FALSE(v.value.has_value());
+  EXPECT_EQ(v.note, "does not apply: the case has no gravity");
+}
+
+// final_shear is the largest relative change of a grid cell's diagonal from the start to
+// the end: a unit cell whose lower row slides half a side along x lengthens one diagonal to
+// sqrt(1.5^2 + 1) and shortens the other to sqrt(0.5^2 + 1); the larger change counts.
+TEST(Observables, FinalShearIsTheLargestChangeOfACellDiagonal) {
+  const Scene scene = test::scene_from(
+      "name = \"g\"\ndims = 2\nduration = 1.0\nsample = 0.1\ndt = [0.1]\n"
+      "gravity = [0.0, 0.0, 0.0]\n[grid]\nsize = [2, 2]\nspacing = 1.0\nneighbours = 4\n"
+      "[[observe]]\nkind = \"final_shear\"\n");
+  State start;
+  for (const Body& b : scene.bodies) start.push_back(BodyState{b.position, {}, {}, {}});
+  ASSERT_EQ(start.size(), 4u);
+  State sheared = start;
+  sheared[2].position.x() += 0.5;  // p0_1 and p1_1: the row below the first
+  sheared[3].position.x() += 0.5;
+  Trajectory trajectory;
+  trajectory.times = {0.0, 1.0};
+  trajectory.states = {start, start};
+  EXPECT_DOUBLE_EQ(*measure(scene, scene.observes[0], trajectory, nullptr).value, 0.0);
+  trajectory.states = {start, sheared};
+  EXPECT_NEAR(*measure(scene, scene.observes[0], trajectory, nullptr).value,
+              std::sqrt(3.25) / std::sqrt(2.0) - 1.0, 1e-12);
+  const ObservableValue none = final_shear(test::scene_from(test::kMinimalCase), start, start);
+  EXPECT_FALSE(none.value.has_value());
+  EXPECT_EQ(none.note, "does not apply: the case has no [grid]");
+}
+
 // A ball dropped on the ground: contact_time and bounce_apex reach the results through the
 // runner, from the reference's located events (the closed form) and from every course step.
 TEST(DroppedBall, BounceObservablesComeFromTheRunsEvents) {
