@@ -107,6 +107,20 @@ Json results_json(const CaseResults& results) {
                                  {"theory_formula", r.theory_formula},
                                  {"theory_note", r.theory_note},
                                  {"trials", r.trials}};
+  // The case at each value of its [[sweep]], every backend at report_dt.
+  if (results.sweep) {
+    Json sweep = {{"parameter", results.sweep->parameter}, {"values", Json::array()}};
+    sweep["points"] = Json::array();
+    for (const SweepPoint& p : results.sweep->points) {
+      sweep["values"].push_back(p.value);
+      Json rows = Json::array();
+      for (const RunRecord& run : p.runs) rows.push_back(run_json(run));
+      sweep["points"].push_back({{"value", p.value}, {"runs", rows}});
+    }
+    j["sweep"] = sweep;
+  } else {
+    j["sweep"] = nullptr;
+  }
   j["gates"] = Json::array();
   for (const GateResult& g : results.gates)
     j["gates"].push_back({{"backend", g.gate.backend},

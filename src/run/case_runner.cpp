@@ -9,6 +9,7 @@
 #include "run/child_pool.hpp"
 #include "run/gates.hpp"
 #include "run/run_summary.hpp"
+#include "run/sweep_runner.hpp"
 #include "run/wire.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
@@ -135,7 +136,8 @@ int progress_units(const Scene& scene, const Registry& registry, const RunOption
   for (const Backend* b : backends_for(scene, registry).all) backends += wanted(options, b->name());
   const int dts = options.dts.empty() ? static_cast<int>(scene.dt.size())
                                       : static_cast<int>(options.dts.size());
-  return backends * dts + 2 + (options.cost ? backends * dts + 1 : 0);
+  const int sweep = scene.sweep && options.sweep ? static_cast<int>(scene.sweep->values.size()) : 0;
+  return backends * dts + 2 + (options.cost ? backends * dts + 1 : 0) + sweep;
 }
 
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options) {
@@ -259,6 +261,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     for (RunRecord& run : out.runs) keep_plotted_states(scene, run);
 
   out.gates = evaluate_gates(scene, out);
+  if (scene.sweep && options.sweep) out.sweep = run_sweep(scene, registry, options, progress);
   return out;
 }
 
@@ -271,6 +274,7 @@ CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOpt
   }
   options.dts = {scene.report_dt};
   options.cost = false;
+  options.sweep = false;
   if (options.backends.empty()) options.backends.push_back("reference");
   CaseResults results = run_case(scene, registry, options);
   // Without a reference, errors are against the finest dt: run it too.

@@ -3,23 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/metric_names.hpp"
 #include "scene/text.hpp"
 
 namespace bb {
 
 namespace {
-
-/// The value of `metric` in `run`: an error metric, or an observable's measured value.
-std::optional<double> quantity(const RunRecord& run, const std::string& metric) {
-  if (run.status != RunStatus::Ok) return std::nullopt;
-  const auto& errors = error_metric_names();
-  if (std::find(errors.begin(), errors.end(), metric) != errors.end())
-    return run.errors ? std::optional<double>(run.errors->get(metric)) : std::nullopt;
-  for (const ObservableResult& o : run.observables)
-    if (o.name == metric) return o.measured.value;
-  return std::nullopt;
-}
 
 /// Backend `backend`'s runs: the reference's one, or one per dt, largest dt first.
 std::vector<const RunRecord*> runs_of(const CaseResults& results, const std::string& backend) {
@@ -46,7 +34,7 @@ std::optional<double> side_value(const CaseResults& results, const ClaimSide& si
   const RunRecord* run = run_at(results, backend, dt);
   // A named engine or course variant without this dt is read at report_dt.
   if (run == nullptr) run = run_at(results, backend, results.scene->report_dt);
-  return run ? quantity(*run, side.metric) : std::nullopt;
+  return run ? run_quantity(*run, side.metric) : std::nullopt;
 }
 
 ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::string& backend) {

@@ -17,6 +17,16 @@ std::optional<double> metric_value(const RunRecord& run, const std::string& metr
   return std::nullopt;
 }
 
+std::optional<double> run_quantity(const RunRecord& run, const std::string& metric) {
+  if (run.status != RunStatus::Ok) return std::nullopt;
+  const auto& names = error_metric_names();
+  if (std::find(names.begin(), names.end(), metric) != names.end())
+    return run.errors ? std::optional<double>(run.errors->get(metric)) : std::nullopt;
+  for (const ObservableResult& o : run.observables)
+    if (o.name == metric) return o.measured.value;
+  return std::nullopt;
+}
+
 std::string status_name(RunStatus status) {
   switch (status) {
     case RunStatus::Ok:

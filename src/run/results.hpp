@@ -83,6 +83,21 @@ struct StabilityResult {
 /// A run's value for an error metric, or the size of an observable's difference from the
 /// reference; nullopt when the run has none.
 std::optional<double> metric_value(const RunRecord& run, const std::string& metric);
+/// An ok run's value for an error metric, or an observable's measured value; nullopt when
+/// the run has none.
+std::optional<double> run_quantity(const RunRecord& run, const std::string& metric);
+
+/// One value of a [[sweep]]: the whole case run at it, reference first, then every backend
+/// at report_dt (rows as in CaseResults::runs, without what the page plots over time).
+struct SweepPoint {
+  double value = 0.0;
+  std::vector<RunRecord> runs;
+};
+
+struct SweepResults {
+  std::string parameter;
+  std::vector<SweepPoint> points;  ///< in the order of the case's values
+};
 
 struct CaseResults {
   const Scene* scene = nullptr;
@@ -99,6 +114,7 @@ struct CaseResults {
   std::map<std::string, std::pair<int, int>> order_points;
   std::vector<GateResult> gates;
   std::vector<StabilityResult> stability;  ///< empty unless a stability search ran
+  std::optional<SweepResults> sweep;       ///< when the case has a [[sweep]] and it ran
 };
 
 }  // namespace bb

@@ -224,6 +224,20 @@ RunRecord decode_run(const std::string& bytes) {
   return run;
 }
 
+std::string encode(const std::vector<RunRecord>& runs) {
+  Writer w;
+  w.raw<std::uint64_t>(runs.size());
+  for (const RunRecord& run : runs) w.text(encode(run));
+  return w.take();
+}
+
+std::vector<RunRecord> decode_runs(const std::string& bytes) {
+  Reader r(bytes);
+  std::vector<RunRecord> out(r.raw<std::uint64_t>());
+  for (RunRecord& run : out) run = decode_run(r.text());
+  return out;
+}
+
 std::string encode(const Timing& timing) {
   Writer w;
   w.raw(timing.median_seconds);

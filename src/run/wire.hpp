@@ -14,6 +14,9 @@ namespace bb::wire {
 std::string encode(const RunRecord& run);
 RunRecord decode_run(const std::string& bytes);
 
+/// Several runs, in order (one sweep point's).
+std::string encode(const std::vector<RunRecord>& runs);
+std::vector<RunRecord> decode_runs(const std::string& bytes);
 std::string encode(const Timing& timing);
 Timing decode_timing(const std::string& bytes);
 /// Several timings, in order (one child's cost pass over a backend's runs).

@@ -153,6 +153,7 @@ Scene parse_case(std::string_view text, const std::string& file) {
   load::read_observes(root, scene);
   load::read_gates(root, scene);
   load::read_claims(root, scene);
+  load::read_sweep(root, scene);
   load::read_report_and_stability(root, scene);
   root.finish();
   return scene;

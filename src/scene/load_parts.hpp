@@ -21,8 +21,11 @@ void read_engines(TomlReader& root, Scene& scene);
 void read_observes(TomlReader& root, Scene& scene);
 void read_gates(TomlReader& root, Scene& scene);
 void read_claims(TomlReader& root, Scene& scene);
+void read_sweep(TomlReader& root, Scene& scene);
 void read_report_and_stability(TomlReader& root, Scene& scene);
 
+/// An error metric, or the name of one of the case's observables.
+bool is_metric(const Scene& scene, const std::string& name);
 /// A number as messages show it: up to ten significant digits.
 std::string show(double v);
 /// Index of a named body, or a CaseError at `line` naming what is missing.

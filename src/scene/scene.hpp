@@ -165,6 +165,20 @@ struct Claim {
   int line = 0;
 };
 
+/// One parameter of the case varied over values ([[sweep]]): each value is a run of the
+/// whole case for every backend at report_dt.
+struct Sweep {
+  std::string parameter;  ///< a path into the case, see sweep_parameter.hpp
+  std::vector<double> values;
+  /// What a published study found on this sweep, shown on the page (may be empty).
+  std::string published;
+  /// An observable whose first value above `onset_above` marks where something starts
+  /// (the angle at which a block first slides); may be empty.
+  std::string onset;
+  double onset_above = 0.0;
+  int line = 0;
+};
+
 /// How the report presents the case ([report], optional).
 struct ReportOptions {
   /// Error metrics or observable names to draw work-precision diagrams for.
@@ -207,6 +221,7 @@ struct Scene {
   std::vector<Observe> observes;
   std::vector<Gate> gates;
   std::vector<Claim> claims;
+  std::optional<Sweep> sweep;
   ReportOptions report;
   StabilityOptions stability;
 

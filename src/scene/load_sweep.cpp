@@ -1,0 +1,73 @@
+// [[sweep]] of a case file: one parameter, its values (a list or a range), and what the
+// page says beside it.
+#include <cmath>
+
+#include "scene/load_parts.hpp"
+#include "scene/sweep_parameter.hpp"
+
+namespace bb::load {
+
+namespace {
+
+/// Most values one sweep may take: each is a run of the whole case per backend.
+constexpr int kMaxSweepValues = 1000;
+
+std::vector<double> read_values(TomlReader& r) {
+  if (r.has("values") == r.has("range"))
+    r.fail(r.line(),
+           "[[sweep]] needs 'values' = [...] or 'range' = [from, to, count], one of them");
+  if (r.has("values")) {
+    std::vector<double> values = r.numbers("values");
+    if (values.size() < 2) r.fail(r.line_of("values"), "[[sweep]] 'values' needs at least two");
+    if (values.size() > kMaxSweepValues)
+      r.fail(r.line_of("values"), "[[sweep]] 'values' has " + std::to_string(values.size()) +
+                                      "; at most " + std::to_string(kMaxSweepValues));
+    return values;
+  }
+  const std::vector<double> range = r.numbers("range", 3);
+  const double count = range[2];
+  if (count != std::floor(count) || count < 2 || count > kMaxSweepValues)
+    r.fail(r.line_of("range"),
+           "[[sweep]] 'range' = [from, to, count]: count must be a whole "
+           "number from 2 to " +
+               std::to_string(kMaxSweepValues) + ", not " + show(count));
+  if (!(range[0] < range[1]))
+    r.fail(r.line_of("range"), "[[sweep]] 'range' = [from, to, count] needs from < to");
+  return sweep_range(range[0], range[1], static_cast<int>(count));
+}
+
+}  // namespace
+
+void read_sweep(TomlReader& root, Scene& scene) {
+  const std::vector<const toml::table*> sweeps = root.tables("sweep");
+  if (sweeps.empty()) return;
+  TomlReader r = sub_reader(root, *sweeps.front(), "[[sweep]]");
+  if (sweeps.size() > 1) {
+    const TomlReader second = sub_reader(root, *sweeps[1], "[[sweep]]");
+    second.fail(second.line(),
+                "a case varies one parameter; this is its second [[sweep]] (the first is on line " +
+                    std::to_string(r.line()) + ")");
+  }
+  Sweep s;
+  s.line = r.line();
+  s.parameter = r.string("parameter");
+  if (const std::string problem = sweep_path_problem(scene, s.parameter); !problem.empty())
+    r.fail(r.line_of("parameter"), "[[sweep]] 'parameter' " + problem);
+  s.values = read_values(r);
+  const std::string key = r.has("values") ? "values" : "range";
+  for (double v : s.values)
+    if (const std::string problem = sweep_value_problem(scene, s.parameter, v); !problem.empty())
+      r.fail(r.line_of(key), "[[sweep]] " + problem);
+  s.published = r.string_or("published", "");
+  s.onset = r.string_or("onset", "");
+  if (!s.onset.empty() && !is_metric(scene, s.onset))
+    r.fail(r.line_of("onset"), "[[sweep]] 'onset' '" + s.onset +
+                                   "' is neither an error metric nor an [[observe]] of this case");
+  if (r.has("onset_above") && s.onset.empty())
+    r.fail(r.line_of("onset_above"), "[[sweep]] 'onset_above' needs an 'onset' to compare");
+  s.onset_above = r.number_or("onset_above", 0.0);
+  r.finish();
+  scene.sweep = s;
+}
+
+}  // namespace bb::load

@@ -1,0 +1,181 @@
+#include "scene/sweep_parameter.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+
+#include "scene/text.hpp"
+
+namespace bb {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+/// A path split at its dots.
+std::vector<std::string> parts_of(const std::string& path) {
+  std::vector<std::string> parts;
+  std::string::size_type start = 0;
+  while (true) {
+    const std::string::size_type dot = path.find('.', start);
+    parts.push_back(path.substr(start, dot - start));
+    if (dot == std::string::npos) return parts;
+    start = dot + 1;
+  }
+}
+
+int component(const std::string& axis) {
+  if (axis == "x") return 0;
+  if (axis == "y") return 1;
+  if (axis == "z") return 2;
+  return -1;
+}
+
+/// Where a path points: the number it names in `scene` (null when it names nothing).
+template <class S>
+std::conditional_t<std::is_const_v<S>, const double*, double*> target(
+    S& scene, const std::vector<std::string>& p) {
+  if (p[0] == "body" && (p.size() == 3 || p.size() == 4)) {
+    const int i = scene.body_index(p[1]);
+    if (i < 0) return nullptr;
+    auto& b = scene.bodies[i];
+    if (p.size() == 3) {
+      if (p[2] == "mass") return &b.mass;
+      if (p[2] == "radius") return &b.radius;
+      if (p[2] == "drag_coefficient") return &b.drag_coefficient;
+      if (p[2] == "magnus") return &b.magnus;
+      return nullptr;
+    }
+    const int c = component(p[3]);
+    if (c < 0) return nullptr;
+    if (p[2] == "position") return &b.position[c];
+    if (p[2] == "velocity") return &b.velocity[c];
+    if (p[2] == "angular_velocity") return &b.angular_velocity[c];
+    if (p[2] == "half_extents") return &b.half_extents[c];
+    if (p[2] == "wind_force") return &b.wind_force[c];
+    return nullptr;
+  }
+  if (p[0] == "ground" && p.size() == 2 && scene.ground) {
+    if (p[1] == "restitution") return &scene.ground->restitution;
+    if (p[1] == "friction_static") return &scene.ground->friction_static;
+    if (p[1] == "friction_kinetic") return &scene.ground->friction_kinetic;
+    return nullptr;
+  }
+  if (p[0] == "air" && scene.air) {
+    if (p.size() == 2 && p[1] == "density") return &scene.air->density;
+    if (p.size() == 3 && p[1] == "wind" && component(p[2]) >= 0)
+      return &scene.air->wind[component(p[2])];
+    return nullptr;
+  }
+  if (p[0] == "gravity" && p.size() == 2 && component(p[1]) >= 0)
+    return &scene.gravity[component(p[1])];
+  return nullptr;
+}
+
+/// The ground's "up" and the horizontal direction it tilts towards.
+std::pair<Vec3, Vec3> tilt_frame(const Ground& g) {
+  const Vec3 up = Vec3::UnitY();
+  Vec3 across = g.normal - g.normal.dot(up) * up;
+  if (across.norm() < 1e-12) across = Vec3::UnitX();
+  return {up, across.normalized()};
+}
+
+const char* kKnownPaths =
+    "body.<name>.mass|radius|drag_coefficient|magnus, "
+    "body.<name>.position|velocity|angular_velocity|half_extents|wind_force.x|y|z, "
+    "ground.restitution|friction_static|friction_kinetic|normal (an angle in degrees), "
+    "air.density, air.wind.x|y|z, gravity.x|y|z";
+
+}  // namespace
+
+std::string sweep_path_problem(const Scene& scene, const std::string& path) {
+  const std::vector<std::string> p = parts_of(path);
+  const bool found = (p.size() == 2 && p[0] == "ground" && p[1] == "normal" && scene.ground) ||
+                     target(scene, p) != nullptr;
+  if (!found) {
+    if (p[0] == "body" && p.size() >= 2 && scene.body_index(p[1]) < 0)
+      return "'" + path + "' names no body '" + p[1] + "'";
+    if ((p[0] == "ground" && !scene.ground) || (p[0] == "air" && !scene.air))
+      return "'" + path + "' names the " + p[0] + ", and the case has no [" + p[0] + "]";
+    return "'" + path + "' names nothing in the case; known: " + kKnownPaths;
+  }
+  if (p[0] == "body") {
+    const Body& b = scene.bodies[scene.body_index(p[1])];
+    if (b.fixed && p[2] != "position")
+      return "'" + path + "': body '" + b.name + "' is fixed; only its position can be swept";
+    if (p[2] == "radius" && b.shape != Shape::Sphere)
+      return "'" + path + "': body '" + b.name + "' is not a sphere";
+    if ((p[2] == "half_extents" || p[2] == "wind_force") && b.shape != Shape::Box)
+      return "'" + path + "': body '" + b.name + "' is not a box";
+    if (scene.dims == 2 && p.size() == 4 && p[2] != "half_extents" && p[2] != "angular_velocity" &&
+        p[3] == "z")
+      return "'" + path + "': a 2D case keeps z at 0";
+    if (scene.dims == 2 && p[2] == "angular_velocity" && p[3] != "z")
+      return "'" + path + "': a 2D body turns about z only";
+  }
+  if (scene.dims == 2 && p.back() == "z" && (p[0] == "gravity" || p[0] == "air"))
+    return "'" + path + "': a 2D case keeps z at 0";
+  return "";
+}
+
+std::string sweep_value_problem(const Scene& scene, const std::string& path, double value) {
+  const std::vector<std::string> p = parts_of(path);
+  const std::string& field = p[0] == "body" ? p[2] : p.back();
+  const std::string at = "the value " + short_number(value) + " for '" + path + "'";
+  if (!std::isfinite(value)) return at + " is not a finite number";
+  if ((field == "mass" || field == "radius" || field == "half_extents") && value <= 0.0)
+    return at + " must be greater than 0";
+  if ((field == "drag_coefficient" || field == "friction_static" || field == "friction_kinetic" ||
+       field == "density") &&
+      value < 0.0)
+    return at + " must not be negative";
+  if (field == "restitution" && (value < 0.0 || value > 1.0))
+    return at + " must be between 0 and 1";
+  if (p[0] == "ground" && field == "normal" && std::abs(value) >= 90.0)
+    return at + " is a tilt in degrees and must lie between -90 and 90";
+  (void)scene;
+  return "";
+}
+
+double sweep_parameter_value(const Scene& scene, const std::string& path) {
+  const std::vector<std::string> p = parts_of(path);
+  if (p[0] == "ground" && p.size() == 2 && p[1] == "normal") {
+    const auto [up, across] = tilt_frame(*scene.ground);
+    return std::atan2(scene.ground->normal.dot(across), scene.ground->normal.dot(up)) / kDegree;
+  }
+  return *target(scene, p);
+}
+
+void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
+  const std::vector<std::string> p = parts_of(path);
+  if (!(p[0] == "ground" && p.size() == 2 && p[1] == "normal")) {
+    *target(scene, p) = value;
+    return;
+  }
+  Ground& g = *scene.ground;
+  const auto [up, across] = tilt_frame(g);
+  const Vec3 normal = std::cos(value * kDegree) * up + std::sin(value * kDegree) * across;
+  // The turn that takes the case's ground to the swept one, about the ground's point.
+  const Quat turn = Quat::FromTwoVectors(g.normal, normal);
+  const auto turned = [&](const Vec3& x) -> Vec3 { return g.point + turn * (x - g.point); };
+  for (Body& b : scene.bodies) {
+    b.position = turned(b.position);
+    b.velocity = turn * b.velocity;
+    b.angular_velocity = turn * b.angular_velocity;
+    b.orientation = (turn * b.orientation).normalized();
+  }
+  for (Hinge& h : scene.hinges) {
+    h.anchor = turned(h.anchor);
+    h.axis = (turn * h.axis).normalized();
+  }
+  g.normal = normal;
+}
+
+std::vector<double> sweep_range(double from, double to, int count) {
+  std::vector<double> values;
+  for (int i = 0; i < count; ++i)
+    values.push_back(i + 1 == count ? to : from + (to - from) * i / (count - 1));
+  return values;
+}
+
+}  // namespace bb
