@@ -186,10 +186,10 @@ void TwoColumnPlot::end_row(const std::string& left_label, const std::string& ri
   if (!left_.empty() && !right_.empty()) {
     // Fixed margins put the columns side by side; the legend goes with the first panel.
     rows_script_ += fmt::format(
-        "set lmargin at screen 0.07\nset rmargin at screen 0.39\nset xlabel \"t (s)\"\n"
+        "set lmargin at screen 0.07\nset rmargin at screen 0.39\nset xlabel {}\n"
         "set ylabel {}\n{}\nunset key\n"
         "set lmargin at screen 0.47\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
-        quote(left_label), left_, quote(right_label), right_);
+        quote(x_label_), quote(left_label), left_, quote(right_label), right_);
     ++rows_;
   }
   left_.clear();

@@ -40,7 +40,9 @@ std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t 
 /// first (thick and black), one legend right of both columns.
 class TwoColumnPlot {
  public:
-  explicit TwoColumnPlot(std::string title) : title_(std::move(title)) {}
+  /// `x_label` names the horizontal axis of every panel.
+  explicit TwoColumnPlot(std::string title, std::string x_label = "t (s)")
+      : title_(std::move(title)), x_label_(std::move(x_label)) {}
   /// Adds run `i` (its place among report_runs) to the current row's left or right panel.
   void add(bool right, std::size_t i, const std::string& backend, const std::vector<double>& times,
            const std::vector<double>& values);
@@ -50,7 +52,7 @@ class TwoColumnPlot {
   std::string draw_into(FileBatch& batch, const std::string& name) const;
 
  private:
-  std::string title_, data_, rows_script_, left_, right_;
+  std::string title_, x_label_, data_, rows_script_, left_, right_;
   int block_ = 0, rows_ = 0;
 };
 

@@ -9,6 +9,7 @@
 #include "report/markdown_text.hpp"
 #include "report/scene_description.hpp"
 #include "report/summary_tables.hpp"
+#include "report/sweep_page.hpp"
 #include "report/work_precision.hpp"
 
 namespace bb {
@@ -126,6 +127,8 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
                  "each flip), every backend over the reference.\n\n";
     out += "![rotation](" + plots.rotation + ")\n";
   }
+
+  out += sweep_markdown(results, plots.sweep);
 
   out += "\n## Work precision\n\n";
   out +=

@@ -5,6 +5,7 @@
 #include "report/gnuplot.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/stop_plot.hpp"
+#include "report/sweep_page.hpp"
 #include "report/work_precision.hpp"
 #include "run/run_summary.hpp"
 
@@ -173,6 +174,7 @@ std::vector<std::string> plot_file_names(const Scene& scene) {
     names.push_back(scene.name + kind);
   if (!stopping_bodies(scene).empty()) names.push_back(scene.name + "-stop.svg");
   if (!turning_bodies(scene).empty()) names.push_back(scene.name + "-rotation.svg");
+  if (scene.sweep) names.push_back(scene.name + "-sweep.svg");
   return names;
 }
 
@@ -206,6 +208,9 @@ PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
   if (const std::string file = scene.name + "-rotation.svg";
       !turning_bodies(scene).empty() && attempt(file, rotation_plot(results, batch, file)))
     files.rotation = file;
+  if (const std::string file = scene.name + "-sweep.svg";
+      results.sweep && attempt(file, sweep_plot(results, batch, file)))
+    files.sweep = file;
   return files;
 }
 

@@ -23,6 +23,7 @@ struct PlotFiles {
   std::string error;     ///< distance from the reference against time
   std::string stop;      ///< sliding bodies around their stop; empty when none is observed
   std::string rotation;  ///< turning bodies' angle and spin; empty when none turns
+  std::string sweep;     ///< the quantities against the swept parameter; empty without one
   std::string note;      ///< why plots are missing, when they are
 };
 

@@ -1,0 +1,225 @@
+#include "report/sweep_page.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "report/format.hpp"
+#include "report/gnuplot.hpp"
+#include "report/markdown_text.hpp"
+#include "report/table.hpp"
+
+namespace bb {
+
+namespace {
+
+/// Most values for which the page lists every one.
+constexpr std::size_t kMaxListedValues = 12;
+
+/// The backends of the sweep, the reference first, in the order the points list them.
+std::vector<std::string> sweep_backends(const SweepResults& sweep) {
+  std::vector<std::string> out;
+  for (const SweepPoint& p : sweep.points)
+    for (const RunRecord& run : p.runs)
+      if (std::find(out.begin(), out.end(), run.backend) == out.end()) out.push_back(run.backend);
+  return out;
+}
+
+const RunRecord* run_of(const SweepPoint& point, const std::string& backend) {
+  for (const RunRecord& run : point.runs)
+    if (run.backend == backend) return &run;
+  return nullptr;
+}
+
+/// The quantities the sweep shows: the case's observables, then position_max.
+std::vector<std::string> sweep_quantities(const Scene& scene) {
+  std::vector<std::string> out;
+  for (const Observe& o : scene.observes) out.push_back(o.name);
+  out.push_back("position_max");
+  return out;
+}
+
+/// `backend`'s value of `quantity` at each point (absent where it has none).
+std::vector<std::optional<double>> series_of(const SweepResults& sweep, const std::string& backend,
+                                             const std::string& quantity) {
+  std::vector<std::optional<double>> out;
+  for (const SweepPoint& p : sweep.points) {
+    const RunRecord* run = run_of(p, backend);
+    out.push_back(run ? run_quantity(*run, quantity) : std::nullopt);
+  }
+  return out;
+}
+
+/// The points where both the parameter and the value exist, for drawing.
+void add_series(TwoColumnPlot& plot, bool right, std::size_t i, const std::string& backend,
+                const SweepResults& sweep, const std::vector<std::optional<double>>& values) {
+  std::vector<double> x, y;
+  for (std::size_t k = 0; k < values.size(); ++k)
+    if (values[k] && std::isfinite(*values[k]))
+      x.push_back(sweep.points[k].value), y.push_back(*values[k]);
+  plot.add(right, i, backend, x, y);
+}
+
+/// Largest |change| between neighbouring values where both exist.
+std::optional<double> largest_step(const std::vector<std::optional<double>>& values) {
+  std::optional<double> out;
+  for (std::size_t k = 1; k < values.size(); ++k)
+    if (values[k] && values[k - 1])
+      out = std::max(out.value_or(0.0), std::abs(*values[k] - *values[k - 1]));
+  return out;
+}
+
+std::string range_text(const std::vector<std::optional<double>>& values) {
+  std::optional<double> lo, hi;
+  for (const auto& v : values)
+    if (v) lo = std::min(lo.value_or(*v), *v), hi = std::max(hi.value_or(*v), *v);
+  if (!lo) return "-";
+  return format_value(lo) + " to " + format_value(hi);
+}
+
+/// A cell for one backend at one point: its value, else its status or why it has none.
+std::string cell(const SweepPoint& point, const std::string& backend, const std::string& quantity) {
+  const RunRecord* run = run_of(point, backend);
+  if (run == nullptr) return "-";
+  if (run->status != RunStatus::Ok) return status_name(run->status);
+  if (const std::optional<double> v = run_quantity(*run, quantity)) return format_value(v);
+  // An observable the run has no value for says why.
+  for (const ObservableResult& o : run->observables)
+    if (o.name == quantity && !o.measured.note.empty()) return o.measured.note;
+  return "-";
+}
+
+std::string onset_section(const SweepResults& sweep, const Sweep& spec,
+                          const std::vector<std::string>& backends) {
+  Table t{{"backend", "first " + spec.parameter + " where " + spec.onset + " > " +
+                          short_number(spec.onset_above)},
+          {},
+          {false, true}};
+  for (const std::string& b : backends) {
+    std::string first = "never in the sweep";
+    for (const SweepPoint& p : sweep.points) {
+      const RunRecord* run = run_of(p, b);
+      const std::optional<double> v = run ? run_quantity(*run, spec.onset) : std::nullopt;
+      if (v && *v > spec.onset_above) {
+        first = short_number(p.value);
+        break;
+      }
+    }
+    t.rows.push_back({b, first});
+  }
+  return fmt::format(
+      "\n### Where it starts\n\nThe first swept value at which `{}` exceeds {}: where the "
+      "reference's and a backend's differ, the backend moves the threshold.\n\n{}",
+      markdown_text(spec.onset), short_number(spec.onset_above), render_markdown(t));
+}
+
+}  // namespace
+
+std::string sweep_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
+  if (!results.sweep) return "the case has no sweep";
+  const SweepResults& sweep = *results.sweep;
+  const Scene& scene = *results.scene;
+  const std::vector<std::string> backends = sweep_backends(sweep);
+  TwoColumnPlot plot(scene.name + ": the sweep of " + sweep.parameter + " at report_dt",
+                     sweep.parameter);
+  for (const Observe& o : scene.observes) {
+    const auto reference = series_of(sweep, "reference", o.name);
+    for (std::size_t i = 0; i < backends.size(); ++i) {
+      const auto values = series_of(sweep, backends[i], o.name);
+      std::vector<std::optional<double>> off(values.size());
+      for (std::size_t k = 0; k < values.size(); ++k)
+        if (values[k] && reference[k]) off[k] = *values[k] - *reference[k];
+      add_series(plot, false, i, backends[i], sweep, values);
+      add_series(plot, true, i, backends[i], sweep, off);
+    }
+    plot.end_row(o.name, o.name + " minus the reference's");
+  }
+  for (std::size_t i = 0; i < backends.size(); ++i) {
+    add_series(plot, false, i, backends[i], sweep, series_of(sweep, backends[i], "position_max"));
+    add_series(plot, true, i, backends[i], sweep, series_of(sweep, backends[i], "energy_max"));
+  }
+  plot.end_row("position_max (m)", "energy_max");
+  return plot.draw_into(batch, name);
+}
+
+std::string sweep_markdown(const CaseResults& results, const std::string& plot) {
+  if (!results.sweep || !results.scene->sweep) return "";
+  const SweepResults& sweep = *results.sweep;
+  const Scene& scene = *results.scene;
+  const Sweep& spec = *scene.sweep;
+  const std::vector<std::string> backends = sweep_backends(sweep);
+  std::string out = fmt::format("\n## Sweep of `{}`\n\n", markdown_text(sweep.parameter));
+  if (!spec.published.empty())
+    out += "**What the published study found.** " + markdown_text(spec.published) + "\n\n";
+  const auto no_reference =
+      std::count_if(sweep.points.begin(), sweep.points.end(), [](const SweepPoint& p) {
+        const RunRecord* r = run_of(p, "reference");
+        return r == nullptr || r->status != RunStatus::Ok;
+      });
+  out += fmt::format(
+      "The whole case run again at each of {} values of `{}` (from {} to {}), every backend at "
+      "report_dt = {} s. Each value's errors are against the reference at that value{}.{}\n\n",
+      sweep.points.size(), markdown_text(sweep.parameter), short_number(spec.values.front()),
+      short_number(spec.values.back()), format_dt(scene.report_dt),
+      no_reference > 0 ? fmt::format(" (the reference has no answer at {} of them: there a "
+                                     "backend has no errors, only its observables)",
+                                     no_reference)
+                       : "",
+      sweep.parameter == "ground.normal"
+          ? " `ground.normal` is the ground's tilt from level in degrees; the bodies on it "
+            "are tilted with it."
+          : "");
+  if (!plot.empty())
+    out +=
+        "Left: each quantity against the parameter, the reference thick and black; right: "
+        "its difference from the reference's at the same value (last row: the error "
+        "metrics).\n\n![sweep](" +
+        plot + ")\n";
+  if (!spec.onset.empty()) out += onset_section(sweep, spec, backends);
+
+  // Predictability: how far a result moves from one value to the next.
+  const std::vector<std::string> quantities = sweep_quantities(scene);
+  Table t{{"backend"}, {}, {false}};
+  for (const std::string& q : quantities) {
+    t.headers.push_back(q + ": range");
+    t.headers.push_back(q + ": largest step");
+    t.right_aligned.push_back(true);
+    t.right_aligned.push_back(true);
+  }
+  for (const std::string& b : backends) {
+    std::vector<std::string> row{b};
+    for (const std::string& q : quantities) {
+      const auto values = series_of(sweep, b, q);
+      row.push_back(range_text(values));
+      row.push_back(format_value(largest_step(values)));
+    }
+    t.rows.push_back(row);
+  }
+  out += fmt::format(
+      "\n### Predictability\n\nHow far each result moves over the sweep, and its largest change "
+      "between neighbouring values: a small change of the parameter should give a small change "
+      "of the result (Chung and Pollard 2016); a largest step well above the reference's is a "
+      "jump.\n\n{}",
+      render_markdown(t));
+
+  if (sweep.points.size() <= kMaxListedValues) {
+    out += "\n### Every value\n";
+    for (const std::string& q : quantities) {
+      Table v{{"backend"}, {}, {false}};
+      for (const SweepPoint& p : sweep.points) {
+        v.headers.push_back(sweep.parameter + " = " + short_number(p.value));
+        v.right_aligned.push_back(true);
+      }
+      for (const std::string& b : backends) {
+        std::vector<std::string> row{b};
+        for (const SweepPoint& p : sweep.points) row.push_back(cell(p, b, q));
+        v.rows.push_back(row);
+      }
+      out += fmt::format("\n`{}`:\n\n{}", markdown_text(q), render_markdown(v));
+    }
+  }
+  return out;
+}
+
+}  // namespace bb
