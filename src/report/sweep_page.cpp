@@ -92,7 +92,7 @@ std::string cell(const SweepPoint& point, const std::string& backend, const std:
 
 std::string onset_section(const SweepResults& sweep, const Sweep& spec,
                           const std::vector<std::string>& backends) {
-  Table t{{"backend", "first " + spec.parameter + " where " + spec.onset + " > " +
+  Table t{{"backend", "first " + spec.parameter + " where " + spec.onset + " above " +
                           short_number(spec.onset_above)},
           {},
           {false, true}};
