@@ -39,9 +39,11 @@ std::optional<double> side_value(const CaseResults& results, const ClaimSide& si
 
 ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::string& backend) {
   ClaimVerdict v{backend, "", std::nullopt, std::nullopt};
-  std::vector<double> holding, failing;  // the dts, largest first
+  std::vector<double> holding, failing, diverged;  // the dts, largest first
   bool any = false;
   for (const RunRecord* run : runs_of(results, backend)) {
+    // A run that blew up has no numbers: the verdict says where, rather than skip it.
+    if (run->status == RunStatus::Diverged) diverged.push_back(run->dt.value_or(0.0));
     const std::optional<double> l = side_value(results, claim.left, backend, run->dt);
     const std::optional<double> r = side_value(results, claim.right, backend, run->dt);
     const bool at_report = !run->dt || *run->dt == results.scene->report_dt;
@@ -51,8 +53,15 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
     (claim_holds(claim.op, *l, *r, claim.tolerance) ? holding : failing)
         .push_back(run->dt.value_or(0.0));
   }
+  const auto listed = [](const std::vector<double>& dts) {
+    std::string list;
+    for (double dt : dts) list += (list.empty() ? "" : ", ") + format_dt(dt);
+    return list;
+  };
+  const std::string blew_up = diverged.empty() ? "" : "diverged at dt " + listed(diverged) + " s";
   if (!any) {
-    v.verdict = "not measured (" + backend + " has no value for it)";
+    v.verdict =
+        "not measured (" + (blew_up.empty() ? backend + " has no value for it" : blew_up) + ")";
     return v;
   }
   if (failing.empty()) {
@@ -64,10 +73,9 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
     v.verdict =
         "holds for dt <= " + format_dt(*std::max_element(holding.begin(), holding.end())) + " s";
   } else {
-    std::string list;
-    for (double dt : holding) list += (list.empty() ? "" : ", ") + format_dt(dt);
-    v.verdict = "holds at dt " + list + " s only";
+    v.verdict = "holds at dt " + listed(holding) + " s only";
   }
+  if (!blew_up.empty()) v.verdict += "; " + blew_up;
   return v;
 }
 

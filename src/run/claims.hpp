@@ -16,7 +16,8 @@ namespace bb {
 struct ClaimVerdict {
   std::string backend;
   /// "holds", "fails", "holds for dt <= <X>", "holds at dt <list> only", or
-  /// "not measured (<why>)".
+  /// "not measured (<why>)"; with "; diverged at dt <list> s" where runs blew up (they
+  /// have no numbers to judge).
   std::string verdict;
   std::optional<double> left, right;  ///< the two numbers at report_dt (the reference: its own)
 };

@@ -100,6 +100,38 @@ tolerance = 1.0
   EXPECT_EQ(verdict(claims[1], "course/semi-implicit-euler").verdict, "holds");
 }
 
+TEST(Claims, ARunThatDivergedIsNamedInTheVerdictNotSkipped) {
+  static Scene scene;
+  scene = test::scene_from(fall_case() + R"(
+[[claim]]
+text = "explicit Euler stays close"
+left = "course/explicit-euler:position_max"
+op = "<"
+right = 0.5
+)");
+  CaseResults results;
+  results.scene = &scene;
+  // Blown up at the two large steps, measured (and close) at the two small ones.
+  for (double dt : {0.1, 0.05, 0.025, 0.0125}) {
+    RunRecord run;
+    run.backend = "course/explicit-euler";
+    run.dt = dt;
+    if (dt > 0.03) {
+      run.status = RunStatus::Diverged;
+    } else {
+      run.errors = ErrorMetrics{};
+      run.errors->position_max = 0.1;
+    }
+    results.runs.push_back(run);
+  }
+  ClaimVerdict v = judge_claims(results)[0].verdicts[0];
+  EXPECT_EQ(v.verdict, "holds; diverged at dt 1/10, 1/20 s");
+  // Blown up everywhere: nothing to judge, and the verdict says why.
+  for (RunRecord& run : results.runs) run.status = RunStatus::Diverged;
+  v = judge_claims(results)[0].verdicts[0];
+  EXPECT_EQ(v.verdict, "not measured (diverged at dt 1/10, 1/20, 1/40, 1/80 s)");
+}
+
 TEST(Claims, AClaimNamingAMissingQuantityIsALoadErrorWithItsLine) {
   try {
     test::scene_from(fall_case() + R"(
