@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include "report/format.hpp"
-#include "report/markdown_text.hpp"
 #include "report/table.hpp"
 #include "run/claims.hpp"
 
@@ -36,8 +35,8 @@ std::string claims_page(const std::vector<CaseResults>& all) {
       }
       failing += fails;
       ++count;
-      t.rows.push_back({markdown_text(c.claim->text),
-                        c.claim->seed.empty() ? "-" : markdown_text(c.claim->seed),
+      // render_markdown escapes every cell's text once.
+      t.rows.push_back({c.claim->text, c.claim->seed.empty() ? "-" : c.claim->seed,
                         fmt::format("[{0}]({0}.md)", r.scene->name), cell});
     }
   std::string page =
