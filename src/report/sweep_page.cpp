@@ -70,6 +70,21 @@ std::optional<double> largest_step(const std::vector<std::optional<double>>& val
   return out;
 }
 
+/// Which way a result goes as the parameter grows, where it has values: "rises", "falls",
+/// "flat", or "up and down" (a result that should follow the parameter and does not).
+std::string trend(const std::vector<std::optional<double>>& values) {
+  bool up = false, down = false;
+  std::optional<double> last;
+  for (const auto& v : values) {
+    if (!v) continue;
+    if (last && *v > *last) up = true;
+    if (last && *v < *last) down = true;
+    last = v;
+  }
+  if (!last) return "-";
+  return up && down ? "up and down" : up ? "rises" : down ? "falls" : "flat";
+}
+
 std::string range_text(const std::vector<std::optional<double>>& values) {
   std::optional<double> lo, hi;
   for (const auto& v : values)
@@ -182,8 +197,10 @@ std::string sweep_markdown(const CaseResults& results, const std::string& plot) 
   const std::vector<std::string> quantities = sweep_quantities(scene);
   Table t{{"backend"}, {}, {false}};
   for (const std::string& q : quantities) {
+    t.headers.push_back(q + ": trend");
     t.headers.push_back(q + ": range");
     t.headers.push_back(q + ": largest step");
+    t.right_aligned.push_back(false);
     t.right_aligned.push_back(true);
     t.right_aligned.push_back(true);
   }
@@ -191,16 +208,18 @@ std::string sweep_markdown(const CaseResults& results, const std::string& plot) 
     std::vector<std::string> row{b};
     for (const std::string& q : quantities) {
       const auto values = series_of(sweep, b, q);
+      row.push_back(trend(values));
       row.push_back(range_text(values));
       row.push_back(format_value(largest_step(values)));
     }
     t.rows.push_back(row);
   }
   out += fmt::format(
-      "\n### Predictability\n\nHow far each result moves over the sweep, and its largest change "
-      "between neighbouring values: a small change of the parameter should give a small change "
-      "of the result (Chung and Pollard 2016); a largest step well above the reference's is a "
-      "jump.\n\n{}",
+      "\n### Predictability\n\nWhich way each result goes as the parameter grows (rises, falls, "
+      "flat, or up and down), how far it moves over the sweep, "
+      "and its largest change between neighbouring values: a small change of the parameter "
+      "should give a small change of the result (Chung and Pollard 2016); a largest step well "
+      "above the reference's is a jump.\n\n{}",
       render_markdown(t));
 
   if (sweep.points.size() <= kMaxListedValues) {
