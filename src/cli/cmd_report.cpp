@@ -9,6 +9,7 @@
 #include "report/atomic_file.hpp"
 #include "report/claims_page.hpp"
 #include "report/format.hpp"
+#include "report/markdown_text.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/table.hpp"
 #include "run/interrupt.hpp"
@@ -74,13 +75,25 @@ std::string index_page(const std::vector<CaseResults>& all) {
         "z and angular velocity (2D), or the tilt of its spin axis and its spin about it "
         "(3D), every backend at report_dt over the reference, as on the case's page.\n\n" +
         rotation;
+  // The cases with a [[sweep]]: the published benchmarks rerun, predictability.
+  std::string sweeps;
+  for (const CaseResults& r : all)
+    if (r.sweep)
+      sweeps +=
+          fmt::format("- [{0}]({0}.md): `{1}` over {2} values; {3}\n", r.scene->name,
+                      r.sweep->parameter, r.sweep->points.size(), markdown_text(r.scene->title));
+  if (!sweeps.empty())
+    sweeps =
+        "**Sweeps** (one parameter varied, every backend at each value; the published "
+        "benchmarks rerun):\n\n" +
+        sweeps + "\n";
   return "# beachball report\n\nThe bundled suite, one page per case: the scene, every backend's "
          "error against the GSL reference and its cost, the whole dt sweep with work-precision "
          "diagrams, trajectories and energy, the stability search, the gates and the engine "
          "settings used. Regenerate with `scripts/report`; only cost figures change.\n\n"
          "**[Claims ledger](claims.md)**: the course text's sentences, each with its verdict "
          "per backend and the numbers behind it.\n\n" +
-         render_markdown(titles) +
+         sweeps + render_markdown(titles) +
          "\n## At report_dt\n\nEach cell: position_max against the reference at the case's "
          "report_dt, the observed order of convergence p over the sweep, the median cost of one "
          "step, and ✓ or ✗ where a gate covers the backend.\n\n" +

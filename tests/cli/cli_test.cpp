@@ -203,6 +203,32 @@ TEST(Cli, TheClaimsLedgerIsLinkedFirstAndJudgesEveryBackend) {
   EXPECT_EQ(j["claims"][0]["verdicts"]["reference"]["verdict"], "holds");
 }
 
+// A case with a [[sweep]]: the index lists it, its page has the sweep section with what the
+// published study found, and its JSON carries every point.
+TEST(Cli, ASweepCaseIsListedInTheIndexAndItsPageShowsTheSweep) {
+  const std::string out = fresh_dir("report_sweep");
+  ASSERT_EQ(beachball("report " + test::source_path("cases/pal_restitution.toml") + " --out " +
+                      out + " --no-cost")
+                .exit_code,
+            0);
+  std::ifstream index(out + "/README.md");
+  const std::string text((std::istreambuf_iterator<char>(index)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("[pal_restitution](pal_restitution.md): `ground.restitution` over 3 values"),
+            std::string::npos)
+      << text;
+  std::ifstream page(out + "/pal_restitution.md");
+  const std::string md((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("## Sweep of `ground.restitution`"), std::string::npos);
+  EXPECT_NE(md.find("What the published study found"), std::string::npos);
+  EXPECT_NE(md.find("ground.restitution = 0.9"), std::string::npos);
+  const auto j = nlohmann::json::parse(std::ifstream(out + "/pal_restitution.json"));
+  ASSERT_EQ(j["sweep"]["points"].size(), 3u);
+  // The reference's first apex at e = 0.9: r + e^2 h = 0.5 + 0.81 m.
+  EXPECT_NEAR(j["sweep"]["points"][2]["runs"][0]["observables"]["bounce_apex/ball/1"]["value"]
+                  .get<double>(),
+              1.31, 1e-9);
+}
+
 // A case whose bodies turn has its rotation plot on its page, and the index shows it too.
 TEST(Cli, TheIndexGathersTheRotationPlots) {
   const std::string out = fresh_dir("report_rotation");
