@@ -19,11 +19,6 @@ namespace bb {
 
 namespace {
 
-bool wanted(const RunOptions& options, const std::string& name) {
-  return options.backends.empty() || std::find(options.backends.begin(), options.backends.end(),
-                                               name) != options.backends.end();
-}
-
 /// The case's steps that the options select, largest first.
 std::vector<double> selected_dts(const Scene& scene, const RunOptions& options) {
   if (options.dts.empty()) return scene.dt;
@@ -120,6 +115,11 @@ std::string reference_method(const RunRecord& reference) {
 
 }  // namespace
 
+bool backend_wanted(const RunOptions& options, const std::string& name) {
+  return options.backends.empty() || std::find(options.backends.begin(), options.backends.end(),
+                                               name) != options.backends.end();
+}
+
 double time_limit(const Scene& scene, double dt, double timeout) {
   if (timeout > 0.0) return timeout;
   const double steps = std::ceil(scene.duration / dt);
@@ -133,7 +133,8 @@ void check_run_options(const Scene& scene, const RunOptions& options) {
 
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options) {
   int backends = 0;
-  for (const Backend* b : backends_for(scene, registry).all) backends += wanted(options, b->name());
+  for (const Backend* b : backends_for(scene, registry).all)
+    backends += backend_wanted(options, b->name());
   const int dts = options.dts.empty() ? static_cast<int>(scene.dt.size())
                                       : static_cast<int>(options.dts.size());
   const int sweep = scene.sweep && options.sweep ? static_cast<int>(scene.sweep->values.size()) : 0;
@@ -154,7 +155,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   const BackendSet set = backends_for(scene, registry);
   std::vector<AccuracyJob> jobs;
   for (const Backend* b : set.all) {
-    if (!wanted(options, b->name())) continue;
+    if (!backend_wanted(options, b->name())) continue;
     if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
     for (double dt : dts) jobs.push_back({b, dt});
   }
@@ -188,7 +189,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   for (const Registry::Missing& missing : registry.missing_engines()) {
     const std::string& name = missing.name;
     const std::string& why = missing.why;
-    const bool asked = !options.backends.empty() && wanted(options, name);
+    const bool asked = !options.backends.empty() && backend_wanted(options, name);
     if (!asked && (!missing.shown_unasked || !options.backends.empty())) continue;
     if (!missing.needs.missing_from(scene.features()).empty()) continue;
     for (double dt : dts) {

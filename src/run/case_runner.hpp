@@ -28,6 +28,9 @@ struct RunOptions {
   std::function<void(const std::string&)> on_progress;
 };
 
+/// Whether `options` select the backend called `name` (no --backends: every one).
+bool backend_wanted(const RunOptions& options, const std::string& name);
+
 /// Seconds an accuracy run of `scene` at `dt` may take: `timeout` when given, else 10 s
 /// plus 20 microseconds per step per body and spring.
 double time_limit(const Scene& scene, double dt, double timeout);

@@ -1,7 +1,5 @@
 #include "run/sweep_runner.hpp"
 
-#include <algorithm>
-
 #include "run/child_pool.hpp"
 #include "run/wire.hpp"
 #include "scene/sweep_parameter.hpp"
@@ -18,9 +16,7 @@ std::vector<RunRecord> lost_point(const Scene& point, const Registry& registry,
   for (const Backend* b : backends_for(point, registry).all) names.push_back(b->name());
   std::vector<RunRecord> rows;
   for (const std::string& name : names) {
-    if (name != "reference" && !options.backends.empty() &&
-        std::find(options.backends.begin(), options.backends.end(), name) == options.backends.end())
-      continue;
+    if (name != "reference" && !backend_wanted(options, name)) continue;
     RunRecord r;
     r.backend = name;
     if (name != "reference") r.dt = point.report_dt;
