@@ -116,6 +116,12 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "beachball: {}\n", e.what());
     return bb::cli::kExitBadInput;
   } catch (const std::exception& e) {
+    // Printing to a reader that went away fails after SIGPIPE: that is the signal's stop.
+    if (bb::interrupt_signal() != 0) {
+      fmt::print(stderr, "\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(),
+                 e.what());
+      return 128 + bb::interrupt_signal();
+    }
     fmt::print(stderr, "beachball: error: {}\n", e.what());
     return bb::cli::kExitBadInput;
   }

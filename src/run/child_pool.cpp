@@ -72,10 +72,7 @@ long address_space_bytes() {
 
 /// Runs in the child: the work, its bytes to `result_fd`, then out without cleanup.
 [[noreturn]] void child_main(const ChildPool::Work& work, int result_fd, int console_fd) {
-  struct sigaction action {};
-  action.sa_handler = SIG_DFL;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  restore_default_signal_handlers();
   dup2(console_fd, STDOUT_FILENO);
   dup2(console_fd, STDERR_FILENO);
   close(console_fd);

@@ -31,7 +31,7 @@ class ChildPool {
   using Done = std::function<void(const ChildOutcome&)>;
   /// `label` names the piece if it must be stopped; `timeout` is in seconds.
   void submit(std::string label, Work work, double timeout, Done done);
-  /// Runs until every piece is done; throws Interrupted on SIGINT or SIGTERM.
+  /// Runs until every piece is done; throws Interrupted on a stop signal (interrupt.hpp).
   void run();
 
  private:

@@ -1,5 +1,5 @@
-// Ctrl-C and SIGTERM stop a long command cleanly: work stops between steps of the pool,
-// children are killed, and nothing half-written is left behind.
+// Ctrl-C, SIGTERM, SIGHUP and SIGPIPE stop a long command cleanly: work stops between steps of the
+// pool, children are killed, and nothing half-written is left behind.
 #pragma once
 
 #include <stdexcept>
@@ -17,12 +17,15 @@ struct Interrupted : std::runtime_error {
 /// during writes): the write was finished, and the program stops there.
 void stop_if_interrupted_after(const std::string& written);
 
-/// Routes SIGINT and SIGTERM to a flag instead of ending the process.
+/// Routes SIGINT, SIGTERM, SIGHUP and SIGPIPE to a flag instead of ending the process: the
+/// command finishes or rolls back what it is writing, says so, and exits 128 + the signal.
 void install_interrupt_handlers();
+/// Gives those signals their default action again (in a child process).
+void restore_default_signal_handlers();
 /// The signal that arrived, or 0.
 int interrupt_signal();
 
-/// While alive, SIGINT and SIGTERM wait: used around writing outputs, so a report is
+/// While alive, those signals wait: used around writing outputs, so a report is
 /// either the old one or the whole new one.
 class DeferSignals {
  public:
