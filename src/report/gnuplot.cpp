@@ -10,6 +10,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -90,21 +91,8 @@ std::string run_gnuplot(const std::string& script, const std::string& log) {
 
 std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
                  const std::string& name, int height) {
-  // gnuplot's script and data sit beside the SVG under a temporary name: if this process
-  // is killed, the next run removes them with the other temporaries of dead processes.
-  const fs::path temp = batch.folder() + "/" + name + ".plot" + temporary_suffix();
-  std::error_code ec;
-  fs::remove_all(temp, ec);
-  if (!fs::create_directory(temp, ec))
-    throw WriteError(temp.string(), ec ? ec.message() : std::string("it exists"));
-  // The temporary folder goes, whatever happens.
-  struct Cleanup {
-    fs::path path;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(path, ec);
-    }
-  } cleanup{temp};
+  // gnuplot's script and data sit in the batch's own temporary folder, gone with it.
+  const fs::path temp = batch.work_folder(name + ".plot");
   const std::string output = batch.path_for(name);
   write_whole_file((temp / "data.txt").string(), data);
   write_whole_file((temp / "plot.gp").string(),
@@ -143,9 +131,17 @@ std::string series_line(std::size_t i, int block, const std::string& title) {
 }
 
 std::string series_rows(const std::vector<double>& times, const std::vector<double>& values) {
+  // gnuplot cannot draw an infinity or a NaN (a panel of nothing else ends its plot): such
+  // points are left out, and a series of nothing else is empty.
+  std::vector<double> t, v;
+  for (std::size_t j = 0; j < times.size() && j < values.size(); ++j)
+    if (std::isfinite(times[j]) && std::isfinite(values[j])) {
+      t.push_back(times[j]);
+      v.push_back(values[j]);
+    }
   std::string rows;
-  for (std::size_t j : thinned(values, kMaxPlotPoints))
-    rows += fmt::format("{:.9g} {:.9g}\n", times[j], values[j]);
+  for (std::size_t j : thinned(v, kMaxPlotPoints))
+    rows += fmt::format("{:.9g} {:.9g}\n", t[j], v[j]);
   return rows;
 }
 
@@ -176,8 +172,9 @@ std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t 
 
 void TwoColumnPlot::add(bool right, std::size_t i, const std::string& backend,
                         const std::vector<double>& times, const std::vector<double>& values) {
-  if (times.empty()) return;
-  data_ += "# " + backend + "\n" + series_rows(times, values) + "\n\n";
+  const std::string rows = series_rows(times, values);
+  if (rows.empty()) return;
+  data_ += "# " + backend + "\n" + rows + "\n\n";
   std::string& plot = right ? right_ : left_;
   plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block_++, backend);
 }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "report/gnuplot.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/stop_plot.hpp"
@@ -30,7 +32,8 @@ std::string work_precision_plot(const CaseResults& results, const std::string& m
   for (std::size_t i = 0; i < series.size(); ++i) {
     std::string rows;
     for (const WorkPoint& p : series[i].points)
-      if (p.error > 0.0) rows += fmt::format("{:.17g} {:.17g}\n", timed ? *p.cost : p.dt, p.error);
+      if (p.error > 0.0 && std::isfinite(p.error))
+        rows += fmt::format("{:.17g} {:.17g}\n", timed ? *p.cost : p.dt, p.error);
     if (rows.empty()) continue;
     data += "# " + series[i].backend + "\n" + rows + "\n\n";
     plot += fmt::format(
@@ -72,13 +75,8 @@ std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const 
   const Scene& scene = *results.scene;
   const auto runs = report_runs(results);
   const std::size_t shown = std::min(scene.bodies.size(), kPlottedBodies);
-  // One legend, beside the first panel; every panel keeps the same right margin to line up.
-  std::string data,
-      script = fmt::format(
-          "set multiplot layout {},1 title {}\nset grid\nset rmargin at screen 0.70\n"
-          "set key at screen 0.99, screen 0.92 right top maxrows 20 samplen 2 font \",10\"\n",
-          shown, quote(scene.name + ": main coordinate of each body at report_dt"));
-  int block = 0;
+  std::string data, script;
+  int block = 0, panels = 0;
   for (std::size_t b = 0; b < shown; ++b) {
     // The reference decides the axis; without one, the first run that has states.
     const Trajectory* guide = &results.reference_run.trajectory;
@@ -91,19 +89,29 @@ std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const 
       const Trajectory& t = runs[i]->trajectory;
       // A run without states (a reference with no answer) draws nothing.
       if (t.states.empty()) continue;
-      data += "# " + runs[i]->backend + "\n";
       std::vector<double> coordinate;
       for (const State& s : t.states)
         coordinate.push_back(axis == 0   ? s[b].position.x()
                              : axis == 1 ? s[b].position.y()
                                          : s[b].position.z());
-      data += series_rows(t.times, coordinate) + "\n\n";
+      const std::string rows = series_rows(t.times, coordinate);
+      if (rows.empty()) continue;
+      data += "# " + runs[i]->backend + "\n" + rows + "\n\n";
       plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
     }
+    // A body no run has a finite position for leaves its panel empty.
+    if (plot.empty()) continue;
+    ++panels;
     script += fmt::format("set xlabel \"t (s)\"\nset ylabel {}\n{}\nunset key\n",
                           quote(scene.bodies[b].name + " " + axis_name + " (m)"), plot);
   }
-  return draw(script + "unset multiplot\n", data, batch, name, 80 + 240 * static_cast<int>(shown));
+  if (panels == 0) return "no run has a finite position to draw";
+  // One legend, beside the first panel; every panel keeps the same right margin to line up.
+  const std::string layout = fmt::format(
+      "set multiplot layout {},1 title {}\nset grid\nset rmargin at screen 0.70\n"
+      "set key at screen 0.99, screen 0.92 right top maxrows 20 samplen 2 font \",10\"\n",
+      panels, quote(scene.name + ": main coordinate of each body at report_dt"));
+  return draw(layout + script + "unset multiplot\n", data, batch, name, 80 + 240 * panels);
 }
 
 std::string energy_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
@@ -114,10 +122,12 @@ std::string energy_plot(const CaseResults& results, FileBatch& batch, const std:
   for (std::size_t i = 0; i < runs.size(); ++i) {
     // Each run's energy at every sample, measured where the run was (run_summary.hpp).
     const RunRecord& run = *runs[i];
-    if (run.energy.empty()) continue;
-    data += "# " + run.backend + "\n" + series_rows(run.trajectory.times, run.energy) + "\n\n";
+    const std::string rows = series_rows(run.trajectory.times, run.energy);
+    if (rows.empty()) continue;
+    data += "# " + run.backend + "\n" + rows + "\n\n";
     plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, run.backend);
   }
+  if (plot.empty()) return "no run has a finite energy to draw";
   const std::string script = fmt::format(
       "set grid\nset key outside right top\nset xlabel \"t (s)\"\n"
       "set ylabel \"total energy (J): kinetic + rotational + gravitational\"\nset title {}\n{}\n",
@@ -140,7 +150,7 @@ std::string error_plot(const CaseResults& results, FileBatch& batch, const std::
     std::vector<double> times, distance;
     for (std::size_t j = 0; j < run.distance.size() && j < run.trajectory.times.size(); ++j) {
       // A log axis cannot show 0: such points are left out.
-      if (run.distance[j] <= 0.0) continue;
+      if (!(run.distance[j] > 0.0) || !std::isfinite(run.distance[j])) continue;
       times.push_back(run.trajectory.times[j]);
       distance.push_back(run.distance[j]);
     }
