@@ -8,8 +8,7 @@
 
 namespace bb::cli {
 
-void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options,
-                       const std::string& out) {
+void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options) {
   for (const Scene& scene : scenes) {
     check_run_options(scene, options);
     check_output_names(scene);
@@ -23,9 +22,6 @@ void check_before_work(const std::vector<Scene>& scenes, const RunOptions& optio
                  "gates at report_dt will be empty\n",
                  scene.name, format_dt(scene.report_dt));
   }
-  if (out.empty()) return;
-  check_writable(out);
-  remove_stale_temporaries(out);
 }
 
 }  // namespace bb::cli

@@ -4,8 +4,7 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
-#include "cli/output_folder.hpp"
-#include "report/atomic_file.hpp"
+#include "files/atomic_file.hpp"
 #include "report/format.hpp"
 
 namespace bb::cli {
@@ -76,11 +75,8 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
   for (const Scene& scene : scenes) check_run_options(scene, options);
-  // The JUnit file's folder is probed before the runs, not found unwritable after them.
-  if (!junit.empty()) {
-    const std::string folder = std::filesystem::path(junit).parent_path().string();
-    check_writable(folder.empty() ? "." : folder);
-  }
+  // The JUnit file is checked before the runs, not found unwritable after them.
+  if (!junit.empty()) check_output_file(junit);
   // Column widths from every gate of every case, known before any run.
   std::size_t case_width = 4, backend_width = 7, metric_width = 6;
   for (const Scene& scene : scenes)
@@ -100,7 +96,9 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
                  format_value(g.value), format_value(g.gate.max), g.note);
     }
   }
-  if (!junit.empty()) write_file_atomically(junit, junit_xml(all));
+  // A regular file is replaced whole; a pipe or a device (/dev/stdout) is written as it is.
+  std::fflush(stdout);
+  if (!junit.empty()) write_output_file(junit, junit_xml(all));
   fmt::print("{}\n", failed ? "gates failed" : "all gates pass");
   return failed ? kExitGateFailed : kExitOk;
 }

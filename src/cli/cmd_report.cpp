@@ -3,10 +3,9 @@
 #include <map>
 
 #include "cli/commands.hpp"
-#include "cli/folder_lock.hpp"
 #include "cli/output_folder.hpp"
 #include "cli/progress.hpp"
-#include "report/atomic_file.hpp"
+#include "files/file_batch.hpp"
 #include "report/claims_page.hpp"
 #include "report/format.hpp"
 #include "report/markdown_text.hpp"
@@ -33,7 +32,8 @@ std::string index_cell(const CaseResults& r, const RunRecord& run) {
   return cell;
 }
 
-std::string index_page(const std::vector<CaseResults>& all) {
+std::string index_page(const std::vector<CaseResults>& all,
+                       const std::vector<std::string>& rotation_plots) {
   // Columns: every backend that appears in any case, in first-seen order.
   std::vector<std::string> backends;
   for (const CaseResults& r : all)
@@ -63,12 +63,15 @@ std::string index_page(const std::vector<CaseResults>& all) {
   for (const CaseResults& r : all)
     titles.rows.push_back({fmt::format("[{0}]({0}.md)", r.scene->name), r.scene->title,
                            r.scene->seed.empty() ? "-" : r.scene->seed});
-  // The cases whose bodies turn: each page's rotation plot, gathered here.
+  // The cases whose bodies turn: each page's rotation plot, gathered here (where drawn).
   std::string rotation;
-  for (const CaseResults& r : all)
-    if (!turning_bodies(*r.scene).empty())
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!turning_bodies(*all[i].scene).empty())
       rotation +=
-          fmt::format("### [{0}]({0}.md)\n\n![{0}: rotation]({0}-rotation.svg)\n\n", r.scene->name);
+          fmt::format("### [{0}]({0}.md)\n\n", all[i].scene->name) +
+          (rotation_plots[i].empty()
+               ? std::string("No rotation plot was drawn; the case's page says why.\n\n")
+               : fmt::format("![{0}: rotation]({1})\n\n", all[i].scene->name, rotation_plots[i]));
   if (!rotation.empty())
     rotation =
         "\n## Rotation\n\nThe cases whose bodies turn: each turning body's angle about "
@@ -106,10 +109,11 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
                    const RunOptions& options) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
-  check_before_work(scenes, options, out);
-  const FolderLock lock(out);
-  // The new report is built beside the old one and switched in whole.
-  ReportFolder folder(out);
+  check_before_work(scenes, options);
+  const OutputFolder folder(out);
+  // The new report is built beside the old one (or inside it) and switched in whole; a
+  // folder that holds anything beachball did not write is refused here, before any run.
+  ReportFolder report(folder);
   int units = 0;
   for (const Scene& scene : scenes)
     units += progress_units(scene, registry, options) +
@@ -128,14 +132,21 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
   // Pages are written only when every case has run, and a signal waits until all are.
   {
     const DeferSignals writing;
-    FileBatch batch(folder.staging());
-    for (const CaseResults& r : all) write_case_outputs(r, batch);
-    batch.write("README.md", index_page(all));
+    FileBatch batch(report.target());
+    std::vector<std::string> rotation_plots;
+    for (const CaseResults& r : all)
+      rotation_plots.push_back(write_case_outputs(r, batch).rotation);
+    batch.write("README.md", index_page(all, rotation_plots));
     batch.write("claims.md", claims_page(all));
+    report.drop_old_report(batch);
     batch.commit();
-    folder.commit();
+    report.commit();
   }
+  if (!report.by_files_because().empty())
+    fmt::print("note: the report was switched in file by file, not as one folder, because {}\n",
+               report.by_files_because());
   fmt::print("written: {}/README.md and one page per case\n", out);
+  std::fflush(stdout);
   stop_if_interrupted_after("the report in " + out);
   return kExitOk;
 }

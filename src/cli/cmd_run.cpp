@@ -1,7 +1,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/folder_lock.hpp"
+#include "cli/output_folder.hpp"
 #include "cli/progress.hpp"
 #include "report/format.hpp"
 #include "report/summary_tables.hpp"
@@ -14,25 +14,29 @@ int run_command(const std::vector<std::string>& paths, const std::string& out,
   // Every case is loaded and checked before anything runs or is written.
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
-  check_before_work(scenes, options, out);
-  const FolderLock lock(out);
+  check_before_work(scenes, options);
+  const OutputFolder folder(out);
+  // A file in the way that beachball did not write stops the command now, not after the runs.
+  for (const Scene& scene : scenes) check_outputs_are_ours(folder.path(), case_output_names(scene));
   for (const Scene& scene : scenes) {
     Progress progress(progress_units(scene, registry, options));
     RunOptions with_progress = options;
     with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
     const CaseResults results = run_case(scene, registry, with_progress);
-    // A case's files are renamed into place together, once all are written; a signal
+    // A case's files replace its earlier set as one unit, once all are written; a signal
     // waits for that and then stops the program.
     {
       const DeferSignals writing;
-      FileBatch batch(out);
+      FileBatch batch(folder.path());
       write_case_outputs(results, batch);
+      for (const std::string& old : recorded_case_files(folder.path(), scene.name)) batch.drop(old);
       batch.commit();
     }
     fmt::print("{} - {}  (report_dt = {} s)\n\n{}", scene.name, scene.title,
                format_dt(scene.report_dt), render_text(summary_table(results, scene.report_dt)));
     for (const std::string& note : run_notes(results, scene.report_dt)) fmt::print("  {}\n", note);
     fmt::print("\nwritten: {}/{}.json, .csv, .md\n\n", out, scene.name);
+    std::fflush(stdout);
     stop_if_interrupted_after(out + "/" + scene.name + ".json, .csv, .md and plots");
   }
   return kExitOk;

@@ -1,11 +1,12 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/folder_lock.hpp"
+#include "cli/output_folder.hpp"
 #include "cli/progress.hpp"
-#include "report/atomic_file.hpp"
 #include "report/json_writer.hpp"
+#include "report/markdown_text.hpp"
 #include "report/summary_tables.hpp"
+#include "report/table.hpp"
 #include "run/interrupt.hpp"
 #include "run/stability.hpp"
 #include "scene/backend_names.hpp"
@@ -13,6 +14,25 @@
 #include "scene/text.hpp"
 
 namespace bb::cli {
+
+namespace {
+
+/// The stability search's own files, named apart from a `run`'s <case>.json, .csv and .md
+/// so that both can share a folder.
+std::vector<std::string> stability_file_names(const Scene& scene) {
+  return {scene.name + "-stability.json", scene.name + "-stability.md"};
+}
+
+std::string stability_page(const CaseResults& results) {
+  const Scene& scene = *results.scene;
+  return fmt::format(
+      "# {} - {}: largest stable step\n\nEvery backend searched from dt {:g} s to {:g} s; the "
+      "results JSON beside this page has the same numbers (`stability`).\n\n{}",
+      scene.name, markdown_text(scene.title), scene.stability.dt_min, scene.stability.dt_max,
+      render_markdown(stability_table(results)));
+}
+
+}  // namespace
 
 int stability_command(const std::vector<std::string>& paths, const std::string& out,
                       const RunOptions& options) {
@@ -27,8 +47,10 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
                         "--backends names '" + b + "'; the stability search runs: " +
                             joined(known) + " (not the adaptive reference)");
   }
-  check_before_work(scenes, {}, out);
-  const FolderLock lock(out);
+  check_before_work(scenes, {});
+  const OutputFolder folder(out);
+  for (const Scene& scene : scenes)
+    check_outputs_are_ours(folder.path(), stability_file_names(scene));
   for (const Scene& scene : scenes) {
     Progress progress(static_cast<int>(backends_for(scene, registry).all.size()));
     CaseResults results;
@@ -37,15 +59,20 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
         scene, registry, backends, options.jobs,
         [&](const std::string& b) { progress.advance(scene.name + ": " + b); }, options.isolation,
         options.timeout);
+    const std::vector<std::string> names = stability_file_names(scene);
     {
       const DeferSignals writing;
-      write_file_atomically(out + "/" + scene.name + ".json", results_json(results).dump(2) + "\n");
+      FileBatch batch(folder.path());
+      batch.write(names[0], results_json(results).dump(2) + "\n");
+      batch.write(names[1], stability_page(results));
+      batch.commit();
     }
-    stop_if_interrupted_after(out + "/" + scene.name + ".json");
     fmt::print(
-        "{} - {}: largest stable step, dt from {:g} s to {:g} s\n\n{}\nwritten: {}/{}.json\n\n",
+        "{} - {}: largest stable step, dt from {:g} s to {:g} s\n\n{}\nwritten: {}/{} and .md\n\n",
         scene.name, scene.title, scene.stability.dt_min, scene.stability.dt_max,
-        render_text(stability_table(results)), out, scene.name);
+        render_text(stability_table(results)), out, names[0]);
+    std::fflush(stdout);
+    stop_if_interrupted_after(out + "/" + names[0]);
   }
   return kExitOk;
 }

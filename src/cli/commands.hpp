@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "report/atomic_file.hpp"
+#include "files/file_batch.hpp"
+#include "report/plots.hpp"
 #include "run/case_runner.hpp"
 
 namespace bb::cli {
@@ -20,15 +21,16 @@ std::vector<Scene> load_cases(const std::vector<std::string>& paths);
 /// The bundled suite's folder.
 std::string bundled_cases_folder();
 
-/// Writes <case>.json, .csv, .md and the plots into `batch` (renamed into place only when
-/// the batch is committed).
-void write_case_outputs(const CaseResults& results, FileBatch& batch);
+/// Writes <case>.json, .csv, .md and the plots into `batch` (moved into place only when
+/// the batch is committed); returns the plots drawn.
+PlotFiles write_case_outputs(const CaseResults& results, FileBatch& batch);
 
-/// Every check that can fail before work starts, for every scene: --dt and --backends
-/// name what the case has, every output name fits; then the output folder is created (when
-/// `out` is not empty), probed for writing and cleared of dead runs' temporaries.
-void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options,
-                       const std::string& out);
+/// The files `run` writes for `scene`: <case>.json, .csv, .md and its plots.
+std::vector<std::string> case_output_names(const Scene& scene);
+
+/// Every check of the cases that can fail before work starts: --dt and --backends name
+/// what each case has, every output name fits.
+void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options);
 
 int list_command(const std::vector<std::string>& paths);
 int run_command(const std::vector<std::string>& paths, const std::string& out,

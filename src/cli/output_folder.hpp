@@ -1,19 +1,19 @@
-// Where a command's outputs go, checked before any work starts: the folder can be written,
-// every output name fits, and the temporaries a killed run left behind are cleared. A
-// report folder is replaced as a whole: the new report is built in a sibling folder and
-// exchanged with the old one in one rename, so a kill at any moment leaves one or the other.
+// Where a command's outputs go. Everything that can refuse a folder is checked before any
+// run starts; the folder is locked before anything in it is touched; and beachball only
+// ever replaces or removes what it can prove it wrote (the folder's record, or a temporary
+// folder holding its marker), never a file because of the shape of its name.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "cli/folder_lock.hpp"
+#include "files/file_batch.hpp"
+#include "files/owned_temporary.hpp"
 #include "scene/scene.hpp"
 
 namespace bb::cli {
-
-/// Removes `*.tmp.<pid>` files in `folder` and `<folder>.tmp.<pid>` folders beside it whose
-/// process is gone.
-void remove_stale_temporaries(const std::string& folder);
 
 /// Throws CaseError (exit 2) naming the case file and its `name` line when an output file
 /// of `scene` would have a name longer than the file system allows.
@@ -22,24 +22,57 @@ void check_output_names(const Scene& scene);
 /// Throws CaseError with the OS's reason when `folder` cannot be created or written.
 void check_writable(const std::string& folder);
 
-/// A report folder rebuilt beside itself and switched in by commit().
+/// The output folder of `run`, `report` or `stability`: `--out` with its symbolic links
+/// followed (the folder a link points to is written, and the link stays), created when
+/// missing, locked against a second beachball, and then cleared of what killed runs left
+/// in it (their half-done switches finished, their temporary folders removed).
+class OutputFolder {
+ public:
+  explicit OutputFolder(const std::string& given);
+  /// The folder as the user named it, for messages.
+  const std::string& given() const { return given_; }
+  /// The real folder written.
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string given_;
+  std::string path_;
+  std::unique_ptr<FolderLock> lock_;
+};
+
+/// Throws CaseError before any work when one of `names` exists in `folder` and is not a
+/// plain file beachball wrote there (its record lists it).
+void check_outputs_are_ours(const std::string& folder, const std::vector<std::string>& names);
+
+/// The files of `folder` that an earlier output of case `name` wrote and its record lists:
+/// <name>.json, .csv, .md and its plots <name>-*.svg (for `run`, which replaces a case's set).
+std::vector<std::string> recorded_case_files(const std::string& folder, const std::string& name);
+
+/// A report replaces its whole folder. When the folder can be renamed, the new report is
+/// built in a temporary folder beside it and the two are exchanged in one rename, so a
+/// reader sees the old report or the new one. When it cannot (a mount point, the current
+/// folder or one above it, a parent that cannot be written), the new report is built inside
+/// it and switched in file by file, all or nothing (FileBatch).
 class ReportFolder {
  public:
-  /// Refuses (CaseError) a folder that holds anything a report does not write; creates the
-  /// staging folder `<out>.tmp.<pid>`.
-  explicit ReportFolder(std::string out);
+  /// Refuses (CaseError) a folder that holds anything beachball did not write there.
+  explicit ReportFolder(const OutputFolder& out);
   ~ReportFolder();
   ReportFolder(const ReportFolder&) = delete;
   ReportFolder& operator=(const ReportFolder&) = delete;
-  /// Where the new report is written.
-  const std::string& staging() const { return staging_; }
-  /// Exchanges the staging folder with the report folder and removes the old report.
+  /// The folder a FileBatch for the new report writes into.
+  const std::string& target() const;
+  /// Adds to `batch` the removal of the old report's files (switched file by file only).
+  void drop_old_report(FileBatch& batch) const;
+  /// Once the batch is committed: puts the new report in place of the old one.
   void commit();
+  /// Whether the report is switched in file by file, and why (empty when exchanged whole).
+  const std::string& by_files_because() const { return by_files_because_; }
 
  private:
   std::string out_;
-  std::string staging_;
-  bool committed_ = false;
+  std::string by_files_because_;
+  std::unique_ptr<OwnedTemporary> beside_;
 };
 
 }  // namespace bb::cli

@@ -1,17 +1,23 @@
 #include "cli/commands.hpp"
-#include "report/atomic_file.hpp"
 #include "report/csv_writer.hpp"
 #include "report/json_writer.hpp"
 #include "report/markdown_writer.hpp"
 
 namespace bb::cli {
 
-void write_case_outputs(const CaseResults& results, FileBatch& batch) {
+PlotFiles write_case_outputs(const CaseResults& results, FileBatch& batch) {
   const std::string name = results.scene->name;
   batch.write(name + ".json", results_json(results).dump(2) + "\n");
   batch.write(name + ".csv", results_csv(results));
   const PlotFiles plots = write_plots(results, batch);
   batch.write(name + ".md", results_markdown(results, plots));
+  return plots;
+}
+
+std::vector<std::string> case_output_names(const Scene& scene) {
+  std::vector<std::string> names = plot_file_names(scene);
+  for (const char* ext : {".json", ".csv", ".md"}) names.push_back(scene.name + ext);
+  return names;
 }
 
 }  // namespace bb::cli

@@ -1,10 +1,9 @@
 // Outputs appear whole or not at all. Every byte goes through a checked write (write,
-// fsync, close, each with the OS's reason on failure) into a temporary name, and only
-// complete files are renamed into place.
+// fsync, close, each with the OS's reason on failure); a file that replaces another is
+// written unnamed (O_TMPFILE) and only linked into place when complete.
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "scene/case_error.hpp"
 
@@ -20,32 +19,15 @@ struct WriteError : CaseError {
 /// file system; throws WriteError with the OS's reason, leaving no partial file behind.
 void write_whole_file(const std::string& path, const std::string& text);
 
-/// Writes `text` to `path` through a temporary file in the same folder, then renames it.
-void write_file_atomically(const std::string& path, const std::string& text);
+/// Writes `text` to the output file `path` the user named. A regular file (or a path that
+/// does not exist yet) is replaced whole, at the end of any symbolic links, in one rename:
+/// readers see the old file or the new one. Anything else (a FIFO, a character device such
+/// as /dev/stdout or /dev/null, a path under /dev or /proc) is written directly and stays
+/// what it is.
+void write_output_file(const std::string& path, const std::string& text);
 
-/// The suffix of this process's temporary files, ".tmp.<pid>".
-std::string temporary_suffix();
-
-/// Files of one output written side by side under temporary names and renamed into place
-/// together by commit(); destroyed uncommitted, it removes what it wrote.
-class FileBatch {
- public:
-  explicit FileBatch(std::string folder) : folder_(std::move(folder)) {}
-  ~FileBatch();
-  FileBatch(const FileBatch&) = delete;
-  FileBatch& operator=(const FileBatch&) = delete;
-  /// The temporary path to write `name` to now; it becomes folder/name at commit().
-  std::string path_for(const std::string& name);
-  /// Writes `text` as `name`.
-  void write(const std::string& name, const std::string& text);
-  /// Renames every file into place.
-  void commit();
-  const std::string& folder() const { return folder_; }
-
- private:
-  std::string folder_;
-  std::vector<std::string> names_;
-  bool committed_ = false;
-};
+/// Throws CaseError, before any work, when `path` cannot take an output file: it is a
+/// folder, a dangling link, or its folder cannot be written.
+void check_output_file(const std::string& path);
 
 }  // namespace bb

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "report/atomic_file.hpp"
+#include "files/file_batch.hpp"
 #include "run/results.hpp"
 
 namespace bb {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "report/atomic_file.hpp"
+#include "files/file_batch.hpp"
 #include "report/gnuplot.hpp"
 #include "run/results.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "report/atomic_file.hpp"
+#include "files/file_batch.hpp"
 #include "run/results.hpp"
 
 namespace bb {

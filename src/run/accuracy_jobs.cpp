@@ -5,9 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <stdexcept>
 #include <system_error>
 
+#include "files/atomic_file.hpp"
+#include "files/owned_temporary.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
 #include "run/run_summary.hpp"
@@ -18,38 +21,43 @@ namespace bb {
 
 namespace {
 
-/// A private temporary folder, created on first use and removed with everything in it
-/// when the case is done (or interrupted: the destructor runs as the exception unwinds).
+/// The prefix of the scratch folders in $TMPDIR.
+constexpr const char* kScratchPrefix = "beachball-scratch-";
+
+/// A private temporary folder in $TMPDIR, created on first use (after removing what killed
+/// runs left there, provably beachball's: owned_temporary.hpp) and removed with everything in
+/// it when the case is done (or interrupted: the destructor runs as the exception unwinds).
 class ScratchFolder {
  public:
-  ScratchFolder() = default;
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  ~ScratchFolder() {
-    std::error_code ignored;
-    if (!path_.empty()) std::filesystem::remove_all(path_, ignored);
-  }
-  /// The path of a file called `name` in the folder.
+  /// The path of a file called `name` in the folder; "" when no folder can be made.
   std::string file(const std::string& name) {
-    if (path_.empty()) {
-      std::string pattern = (std::filesystem::temp_directory_path() / "beachball-XXXXXX").string();
-      if (mkdtemp(pattern.data()) == nullptr)
-        throw std::runtime_error("cannot create a temporary folder in " +
-                                 std::filesystem::temp_directory_path().string());
-      path_ = pattern;
+    if (!folder_) {
+      std::error_code ec;
+      const std::string tmp = std::filesystem::temp_directory_path(ec).string();
+      if (ec) return "";
+      remove_abandoned_temporaries(tmp, kScratchPrefix);
+      try {
+        folder_ = std::make_unique<OwnedTemporary>(tmp, kScratchPrefix);
+      } catch (const WriteError&) {
+        return "";
+      }
     }
-    return path_ + "/" + name;
+    return folder_->path() + "/" + name;
   }
 
  private:
-  std::string path_;
+  std::unique_ptr<OwnedTemporary> folder_;
 };
 
-void write_run(const std::string& path, const RunRecord& run) {
-  std::ofstream out(path, std::ios::binary);
-  const std::string bytes = wire::encode(run);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!out.flush()) throw std::runtime_error("cannot write the finest run to " + path);
+/// Writes `run` whole to `path`; false (and no file) when it cannot, a full disk say.
+bool write_run(const std::string& path, const RunRecord& run) {
+  if (path.empty()) return false;
+  try {
+    write_whole_file(path, wire::encode(run));
+    return true;
+  } catch (const WriteError&) {
+    return false;
+  }
 }
 
 RunRecord read_run(const std::string& path) {
@@ -134,14 +142,17 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       if (!finest_job(i)) continue;
       const std::string file = scratch.file("finest-" + std::to_string(i));
+      // The backend's other runs read the finest from the file in their children. Where it
+      // cannot be written (no room in $TMPDIR), it comes back whole instead, and so do they,
+      // for the caller to measure against it: the same numbers, measured in the parent.
       const Finish finest = [&scene, file](RunRecord& run) {
-        if (run.status == RunStatus::Ok) write_run(file, run);
+        if (run.status == RunStatus::Ok && !write_run(file, run)) return;
         summarise_in_child(scene, run, run);
       };
       job(i, finest, [&, i, file] {
-        const bool ok = out.runs[i].status == RunStatus::Ok;
-        // The backend's other runs read it in their children; without it they come back
-        // whole, for the caller to compare with whatever finer run did finish.
+        const bool ok = out.runs[i].status == RunStatus::Ok && out.runs[i].summarised;
+        // Without it they come back whole, for the caller to compare with whatever finer
+        // run did finish (case_runner.cpp says which dt that was).
         const Finish against_finest = [&scene, file](RunRecord& run) {
           const RunRecord finest = read_run(file);
           summarise_in_child(scene, run, finest);

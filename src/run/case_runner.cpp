@@ -206,11 +206,18 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   // its finest dt (DESIGN.md's fallback), and reference.method says so.
   const bool fallback = out.reference_run.status != RunStatus::Ok;
   const std::map<std::string, const RunRecord*> finest = finest_runs(out.runs);
-  if (fallback && !finest.empty())
+  if (fallback && !finest.empty()) {
     out.reference.method = "none: the reference is " + status_name(out.reference_run.status) +
                            " (" + out.reference_run.reason +
                            "); each backend's errors are against its own run at the finest dt "
                            "of the sweep (self-consistency: convergence, not accuracy)";
+    // Where a backend's finest run failed, its errors are against a coarser one: named.
+    const double finest_dt = *std::min_element(dts.begin(), dts.end());
+    for (const auto& [name, run] : finest)
+      if (*run->dt != finest_dt)
+        out.reference.method += "; " + name + " against its run at dt " + format_dt(*run->dt) +
+                                " (its run at " + format_dt(finest_dt) + " is not ok)";
+  }
   for (RunRecord& run : out.runs) {
     if (run.summarised) continue;
     const auto own = finest.find(run.backend);

@@ -265,7 +265,10 @@ TEST(Cli, StabilityWritesTheStabilitySection) {
   const Outcome o = beachball("stability " + test::source_path("cases/drag_fall.toml") +
                               " --backends course/rk4,ode --out " + out);
   ASSERT_EQ(o.exit_code, 0) << o.out;
-  const auto j = nlohmann::json::parse(std::ifstream(out + "/drag_fall.json"));
+  // Named apart from a run's drag_fall.json, .csv and .md, so both can share a folder.
+  const auto j = nlohmann::json::parse(std::ifstream(out + "/drag_fall-stability.json"));
+  EXPECT_TRUE(fs::exists(out + "/drag_fall-stability.md"));
+  EXPECT_FALSE(fs::exists(out + "/drag_fall.json"));
   EXPECT_EQ(j["schema"], "beachball-results/1");
   EXPECT_EQ(j["stability"].size(), 2u);
   for (const char* b : {"course/rk4", "ode"}) {

@@ -39,7 +39,7 @@ void fill(const std::string& path, std::size_t left) {
 
 bool has_temporaries(const std::string& folder) {
   for (const auto& entry : fs::recursive_directory_iterator(folder))
-    if (entry.path().filename().string().find(".tmp.") != std::string::npos) return true;
+    if (test::beachball_temporary(entry.path().filename().string())) return true;
   return false;
 }
 

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/program.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -38,7 +39,7 @@ TEST(Interrupt, SigtermDuringReportLeavesThePreviousReportUntouched) {
   fs::remove_all(out);
   fs::create_directories(out);
   // A previous report, as far as this test cares.
-  std::ofstream(out + "/README.md") << "# the previous report\n";
+  std::ofstream(out + "/README.md") << "# beachball report\nthe previous one\n";
   std::ofstream(out + "/drag_fall.json") << "{\"previous\": true}\n";
   const std::string log = ::testing::TempDir() + "/interrupted_report.log";
   const pid_t pid = start_report(out, log);
@@ -51,11 +52,11 @@ TEST(Interrupt, SigtermDuringReportLeavesThePreviousReportUntouched) {
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << bytes(log);
   EXPECT_NE(bytes(log).find("interrupted by signal 15"), std::string::npos) << bytes(log);
   EXPECT_NE(bytes(log).find("stopped during"), std::string::npos) << bytes(log);
-  EXPECT_EQ(bytes(out + "/README.md"), "# the previous report\n");
+  EXPECT_EQ(bytes(out + "/README.md"), "# beachball report\nthe previous one\n");
   EXPECT_EQ(bytes(out + "/drag_fall.json"), "{\"previous\": true}\n");
   int files = 0;
   for (const auto& entry : fs::directory_iterator(out)) {
-    EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos) << entry.path();
+    EXPECT_FALSE(test::beachball_temporary(entry.path().filename().string())) << entry.path();
     ++files;
   }
   EXPECT_EQ(files, 2);

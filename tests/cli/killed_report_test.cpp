@@ -1,7 +1,7 @@
 // A report SIGKILLed at any moment, the write phase included, leaves either the previous
-// report byte for byte or the complete new one, never a mix: the new report is built in
-// `<out>.tmp.<pid>` and exchanged with the old in one renameat2. Whatever the killed
-// report left behind goes at the next run.
+// report byte for byte or the complete new one, never a mix: the new report is built in a
+// folder of beachball's own beside the old one and exchanged with it in one renameat2.
+// Whatever the killed report left behind goes at the next run, and only that.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -11,9 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <thread>
 
+#include "files/file_batch.hpp"
+#include "files/folder_manifest.hpp"
 #include "support/program.hpp"
+#include "support/temporaries.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -28,35 +32,40 @@ bool ended(pid_t pid) {
   return waitid(P_PID, pid, &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid;
 }
 
-/// Whether report `pid` has begun to write: a file in its staging folder `<out>.tmp.<pid>`,
-/// or a temporary of its own in `out` itself.
-bool writing(pid_t pid, const fs::path& out) {
-  const std::string suffix = ".tmp." + std::to_string(pid);
+/// Whether a report writing under `dir` has begun to write: a file waiting in the "new"
+/// folder of one of its batches.
+bool writing(const fs::path& dir) {
   std::error_code ec;
-  if (!fs::is_empty(out.string() + suffix, ec) && !ec) return true;
-  for (const auto& entry : fs::directory_iterator(out, ec))
-    if (entry.path().filename().string().ends_with(suffix)) return true;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::end(it);
+       it.increment(ec))
+    if (it->path().parent_path().filename() == "new" &&
+        test::beachball_temporary(it->path().parent_path().parent_path().filename().string()))
+      return true;
   return false;
 }
 
-/// Waits until report `pid` begins to write; false when it ended first or did not begin
-/// within 10 s.
-bool wait_for_writing(pid_t pid, const fs::path& out) {
+/// Waits until report `pid` begins to write under `dir`; false when it ended first or did
+/// not begin within 10 s.
+bool wait_for_writing(pid_t pid, const fs::path& dir) {
   for (const Clock::time_point give_up = Clock::now() + std::chrono::seconds(10);
        Clock::now() < give_up && !ended(pid);) {
-    if (writing(pid, out)) return true;
+    if (writing(dir)) return true;
     std::this_thread::sleep_for(std::chrono::microseconds(500));
   }
   return false;
 }
 
 /// An old report as a report folder may hold it: the pages of a case "gone" and, under the
-/// names the new report writes, other bytes.
+/// names the new report writes, other bytes; and its record of them.
 void write_old_report(const fs::path& folder, const std::map<std::string, std::string>& fresh) {
   fs::create_directories(folder);
-  for (const auto& [name, bytes] : fresh) std::ofstream(folder / name) << "old " << name << "\n";
+  std::set<std::string> names;
+  for (const auto& [name, bytes] : fresh)
+    if (name != kManifestName) names.insert(name);
   for (const char* name : {"gone.md", "gone.json", "gone.csv", "gone-energy.svg"})
-    std::ofstream(folder / name) << "old " << name << "\n";
+    names.insert(name);
+  for (const std::string& name : names) std::ofstream(folder / name) << "old " << name << "\n";
+  std::ofstream(folder / kManifestName) << manifest_text(names);
 }
 
 TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClearsUp) {
@@ -68,7 +77,7 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
   };
   // One report unkilled: the new report, and how long its write phase takes.
   const pid_t first = report(dir / "new");
-  ASSERT_TRUE(wait_for_writing(first, dir / "new")) << test::file_bytes(log);
+  ASSERT_TRUE(wait_for_writing(first, dir)) << test::file_bytes(log);
   const Clock::time_point writing = Clock::now();
   ASSERT_EQ(test::wait_for(first), 0) << test::file_bytes(log);
   const Clock::duration write_phase = Clock::now() - writing;
@@ -101,7 +110,7 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
     fs::remove_all(out);
     fs::copy(dir / "old", out);
     const pid_t pid = report(out);
-    wait_for_writing(pid, out);
+    wait_for_writing(pid, dir);
     std::this_thread::sleep_for(write_phase * quarter / 4);
     kill_and_look(pid, std::to_string(quarter) + " quarters into writing");
   }
@@ -110,33 +119,40 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
   EXPECT_GT(new_seen, 0);
   EXPECT_GT(left_temporaries, 0);
 
-  // One more run clears what dead processes left, inside and beside the folder (pid
-  // 999999999 is above any pid_max, so its process is surely gone).
-  std::ofstream(out / "kept.md.tmp.999999999") << "left by a dead report";
-  fs::create_directories(out / "kept-energy.svg.plot.tmp.999999999");
+  // One more run clears what dead processes left, inside and beside the folder, and
+  // nothing else: a folder beside it whose name only looks like a temporary is the user's.
+  const std::string dead_staging = test::abandoned_temporary(out.string(), kStagingPrefix);
+  const std::string dead_beside = test::abandoned_temporary(dir.string(), ".beachball-report-");
+  ASSERT_TRUE(fs::exists(dead_staging) && fs::exists(dead_beside));
   fs::create_directories(dir / "out.tmp.999999999");
-  std::ofstream(dir / "out.tmp.999999999" / "kept.md") << "a dead report's staging folder";
+  std::ofstream(dir / "out.tmp.999999999" / "kept.md") << "the user's own folder";
   ASSERT_EQ(test::wait_for(report(out)), 0) << test::file_bytes(log);
   EXPECT_EQ(test::snapshot(out), new_report);
   EXPECT_EQ(test::temporaries_in(dir), "");
   EXPECT_EQ(test::temporaries_in(out), "");
+  EXPECT_TRUE(fs::exists(dir / "out.tmp.999999999" / "kept.md"));
 }
 
-// Only the temporaries of dead processes go: a living process may still be writing its own.
-TEST(KilledReport, TheNextRunKeepsTheTemporariesOfLivingProcesses) {
+// Only what beachball can prove is an abandoned temporary of its own goes: a living
+// process's temporaries stay (it may be writing them), and so does every file of the
+// user's, whatever its name looks like.
+TEST(KilledReport, TheNextRunKeepsTheTemporariesOfLivingProcessesAndTheUsersFiles) {
   const fs::path dir = test::fresh_dir("living_temporaries");
   const std::string kept = test::write_case(dir, "kept.toml", test::minimal_case("kept"));
   const fs::path out = dir / "out";
-  fs::create_directories(out);
-  const std::string living = ".tmp." + std::to_string(getpid());
-  std::ofstream(out / ("kept.md" + living)) << "being written";
-  fs::create_directories(dir / ("out" + living));
-  std::ofstream(out / "kept.md.tmp.999999999") << "left by a dead run";
+  fs::create_directories(out / "mydata.tmp.3999999");
+  std::ofstream(out / "mydata.tmp.3999999" / "file.txt") << "the user's data";
+  std::ofstream(out / "notes.tmp.77777") << "the user's notes";
+  std::ofstream(out / "kept.md.tmp.999999999") << "the user's file";
+  const OwnedTemporary living(out.string(), kStagingPrefix);
+  const std::string dead = test::abandoned_temporary(out.string(), kStagingPrefix);
   const test::Outcome o = test::beachball("run " + kept + " --no-cost --out " + out.string());
   ASSERT_EQ(o.exit_code, 0) << o.out;
-  EXPECT_TRUE(fs::exists(out / ("kept.md" + living)));
-  EXPECT_TRUE(fs::exists(dir / ("out" + living)));
-  EXPECT_FALSE(fs::exists(out / "kept.md.tmp.999999999"));
+  EXPECT_TRUE(fs::exists(living.path()));
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_EQ(test::file_bytes(out / "mydata.tmp.3999999" / "file.txt"), "the user's data");
+  EXPECT_EQ(test::file_bytes(out / "notes.tmp.77777"), "the user's notes");
+  EXPECT_EQ(test::file_bytes(out / "kept.md.tmp.999999999"), "the user's file");
   EXPECT_TRUE(fs::exists(out / "kept.md"));
 }
 

@@ -91,11 +91,18 @@ inline std::map<std::string, std::string> snapshot(const std::filesystem::path& 
   return out;
 }
 
-/// Names in `folder` that are temporaries or staging folders (".tmp." in them), one string.
+/// Whether `name` is one of beachball's temporaries: a staging folder, a report built
+/// beside its folder, a scratch folder, a marker, a file being replaced. Its record of
+/// what it wrote (.beachball-manifest) is not a temporary.
+inline bool beachball_temporary(const std::string& name) {
+  return name.find("beachball-") != std::string::npos && name != ".beachball-manifest";
+}
+
+/// Names in `folder` that are beachball's temporaries, one string.
 inline std::string temporaries_in(const std::filesystem::path& folder) {
   std::string found;
   for (const auto& entry : std::filesystem::directory_iterator(folder))
-    if (entry.path().filename().string().find(".tmp.") != std::string::npos)
+    if (beachball_temporary(entry.path().filename().string()))
       found += entry.path().filename().string() + " ";
   return found;
 }
