@@ -32,7 +32,13 @@ std::string quoted(const std::string& key) {
   return "'" + key + "'";
 }
 
+TomlReader::KeyObserver key_observer = nullptr;
+
 }  // namespace
+
+void TomlReader::observe_keys(KeyObserver observer) {
+  key_observer = observer;
+}
 
 int node_line(const toml::node& node, int fallback) {
   const auto line = static_cast<int>(node.source().begin.line);
@@ -40,7 +46,11 @@ int node_line(const toml::node& node, int fallback) {
 }
 
 TomlReader::TomlReader(const toml::table& table, std::string file, std::string where, int line)
-    : table_(table), file_(std::move(file)), where_(std::move(where)), line_(line) {}
+    : table_(table),
+      file_(std::move(file)),
+      where_(std::move(where)),
+      table_name_(where_),
+      line_(line) {}
 
 void TomlReader::fail(int line, const std::string& problem) const {
   throw CaseError(file_, line, problem);
@@ -48,6 +58,7 @@ void TomlReader::fail(int line, const std::string& problem) const {
 
 const toml::node* TomlReader::find(const std::string& key) {
   read_.insert(key);
+  if (key_observer != nullptr) key_observer(table_name_, key);
   return table_.get(key);
 }
 

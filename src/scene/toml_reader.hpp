@@ -16,6 +16,12 @@ namespace bb {
 
 class TomlReader {
  public:
+  /// Told of every key the loader asks any reader for, with the table it belongs to as the
+  /// reader was first named ("the case", "[air]", "[[body]]", "[engines.ode]"): the keys a
+  /// case file may hold, for the documentation's coverage test. Null (the default): off.
+  using KeyObserver = void (*)(const std::string& table, const std::string& key);
+  static void observe_keys(KeyObserver observer);
+
   /// `where` names the table in messages, e.g. "[air]" or "[[body]] 'ball'".
   TomlReader(const toml::table& table, std::string file, std::string where, int line);
 
@@ -63,6 +69,7 @@ class TomlReader {
   const toml::table& table_;
   std::string file_;
   std::string where_;
+  std::string table_name_;  ///< `where` as first given, for the key observer
   int line_;
   std::set<std::string> read_;
 };
