@@ -16,20 +16,15 @@
 #include <filesystem>
 #include <fstream>
 
+#include "report/backend_style.hpp"
+
 namespace bb {
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const char* kColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                          "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
-
 }  // namespace
-
-std::string colour(std::size_t i) {
-  return kColours[i % (sizeof(kColours) / sizeof(kColours[0]))];
-}
 
 std::string quote(const std::string& s) {
   std::string out = "\"";
@@ -120,14 +115,17 @@ std::vector<const RunRecord*> report_runs(const CaseResults& results) {
   return out;
 }
 
-std::string series_line(std::size_t i, int block, const std::string& title) {
-  // The reference is drawn thick and black under the backends.
-  if (i == 0)
+std::string series_line(std::size_t i, int block, const std::string& backend) {
+  // One colour per backend on every plot of the report; the reference thick and black,
+  // the course methods solid, the engines dashed (backend_style.hpp).
+  const BackendStyle style = backend_style(backend);
+  if (style.kind == LineKind::Reference)
     return fmt::format("data index {} using 1:2 with lines lw 4 lc rgb \"black\" title {}", block,
-                       quote(title));
+                       quote(backend));
   return fmt::format(
-      "data index {} using 1:2 with linespoints lw 1.5 pt {} ps 0.6 pi 6 lc rgb \"{}\" title {}",
-      block, i % 13, colour(i - 1), quote(title));
+      "data index {} using 1:2 with linespoints lw 1.5 dt {} pt {} ps 0.6 pi 6 lc rgb \"{}\" "
+      "title {}",
+      block, style.kind == LineKind::Engine ? 2 : 1, i % 13, style.colour, quote(backend));
 }
 
 std::string series_rows(const std::vector<double>& times, const std::vector<double>& values) {

@@ -15,8 +15,6 @@ namespace bb {
 /// Most points a series keeps when drawn.
 inline constexpr std::size_t kMaxPlotPoints = 2000;
 
-/// A fixed colour per series position, so a backend keeps its colour across plots.
-std::string colour(std::size_t i);
 /// `s` as a gnuplot string literal.
 std::string quote(const std::string& s);
 /// Whether gnuplot can be run.
@@ -28,8 +26,9 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
                  const std::string& name, int height = 600);
 /// Runs at report_dt that produced samples, the reference first.
 std::vector<const RunRecord*> report_runs(const CaseResults& results);
-/// The plot clause of series `i` (0: the reference, thick and black) in data block `block`.
-std::string series_line(std::size_t i, int block, const std::string& title);
+/// The plot clause of series `i` of `backend` in data block `block`, drawn in the backend's
+/// own style (backend_style.hpp).
+std::string series_line(std::size_t i, int block, const std::string& backend);
 /// The rows "t value" of one series, thinned for drawing.
 std::string series_rows(const std::vector<double>& times, const std::vector<double>& values);
 /// Indices of the points of `values` to draw: all of them up to `max_points`, else per

@@ -84,6 +84,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
                               counts.second, counts.first + counts.second);
   out += left_out;
 
+  if (!plots.motion.empty()) {
+    out += fmt::format("\n## The motion at report_dt = {} s\n\n", format_dt(scene.report_dt));
+    out +=
+        "Every backend's bodies over the reference's (filled grey), playing in a loop; the "
+        "[still](" +
+        plots.still + ") shows four instants for print.\n\n![the motion](" + plots.motion + ")\n";
+  }
   if (!plots.trajectory.empty() || !plots.energy.empty()) {
     out += fmt::format("\n## Trajectories and energy at report_dt = {} s\n\n",
                        format_dt(scene.report_dt));

@@ -4,11 +4,14 @@
 
 #include <cmath>
 
+#include "report/backend_style.hpp"
 #include "report/gnuplot.hpp"
+#include "report/motion_view.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/stop_plot.hpp"
 #include "report/sweep_page.hpp"
 #include "report/work_precision.hpp"
+#include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
 
 namespace bb {
@@ -36,10 +39,11 @@ std::string work_precision_plot(const CaseResults& results, const std::string& m
         rows += fmt::format("{:.17g} {:.17g}\n", timed ? *p.cost : p.dt, p.error);
     if (rows.empty()) continue;
     data += "# " + series[i].backend + "\n" + rows + "\n\n";
+    const BackendStyle style = backend_style(series[i].backend);
     plot += fmt::format(
-        "{}data index {} using 1:2 with linespoints lw 2 pt {} ps 1.2 lc rgb \"{}\" title {}",
-        plot.empty() ? "plot " : ", \\\n     ", block++, 1 + i % 13, colour(i),
-        quote(series[i].backend));
+        "{}data index {} using 1:2 with linespoints lw 2 dt {} pt {} ps 1.2 lc rgb \"{}\" title {}",
+        plot.empty() ? "plot " : ", \\\n     ", block++, style.kind == LineKind::Engine ? 2 : 1,
+        1 + i % 13, style.colour, quote(series[i].backend));
   }
   if (plot.empty()) return "no run has a value for " + metric;
   if (const auto floor = metric_floor(results, metric); floor && *floor > 0.0)
@@ -58,43 +62,74 @@ std::string work_precision_plot(const CaseResults& results, const std::string& m
   return draw(script, data, batch, name);
 }
 
-/// The axis (0, 1, 2) along which the reference moves `body` the most.
-int main_axis(const Trajectory& reference, std::size_t body) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (const State& s : reference.states) {
-    const double v[3] = {s[body].position.x(), s[body].position.y(), s[body].position.z()};
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], v[a]), hi[a] = std::max(hi[a], v[a]);
+/// How far the guide moves the body at `slot` along each axis (max - min).
+Vec3 motion_range(const Trajectory& guide, std::size_t slot) {
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const State& s : guide.states)
+    if (slot < s.size() && s[slot].position.allFinite())
+      lo = lo.cwiseMin(s[slot].position), hi = hi.cwiseMax(s[slot].position);
+  return (hi - lo).cwiseMax(0.0);
+}
+
+/// The bodies the trajectory plot shows, as slots of the kept states: those that move,
+/// ranked by how far the guide moves them plus how far the runs part from the guide, at
+/// most kPlottedBodies, in the scene's order. A fixed or anchored body never gets a panel.
+std::vector<std::size_t> plotted_slots(const Scene& scene, const std::vector<int>& drawn,
+                                       const std::vector<const RunRecord*>& runs,
+                                       const Trajectory& guide) {
+  std::vector<std::pair<double, std::size_t>> ranked;
+  for (std::size_t k = 0; k < drawn.size(); ++k) {
+    if (scene.bodies[drawn[k]].fixed) continue;
+    double apart = 0.0;
+    for (const RunRecord* r : runs)
+      for (std::size_t j = 0; j < r->trajectory.states.size() && j < guide.states.size(); ++j)
+        if (k < r->trajectory.states[j].size()) {
+          const double d =
+              (r->trajectory.states[j][k].position - guide.states[j][k].position).norm();
+          if (std::isfinite(d)) apart = std::max(apart, d);
+        }
+    const double score = motion_range(guide, k).maxCoeff() + apart;
+    if (score > 0.0) ranked.push_back({score, k});
   }
-  int best = 1;
-  for (int a = 0; a < 3; ++a)
-    if (hi[a] - lo[a] > hi[best] - lo[best] + 1e-12) best = a;
-  return best;
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < ranked.size() && i < kPlottedBodies; ++i)
+    out.push_back(ranked[i].second);
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
   const Scene& scene = *results.scene;
   const auto runs = report_runs(results);
-  const std::size_t shown = std::min(scene.bodies.size(), kPlottedBodies);
+  // The reference decides what is drawn; without one, the first run that has states.
+  const Trajectory* guide = &results.reference_run.trajectory;
+  for (const RunRecord* r : runs)
+    if (guide->states.empty()) guide = &r->trajectory;
+  const std::vector<int> drawn = drawn_bodies(scene);
   std::string data, script;
   int block = 0, panels = 0;
-  for (std::size_t b = 0; b < shown; ++b) {
-    // The reference decides the axis; without one, the first run that has states.
-    const Trajectory* guide = &results.reference_run.trajectory;
-    for (const RunRecord* r : runs)
-      if (guide->states.empty()) guide = &r->trajectory;
-    const int axis = main_axis(*guide, b);
+  for (std::size_t k : plotted_slots(scene, drawn, runs, *guide)) {
+    const Vec3 range = motion_range(*guide, k);
+    // Motion in the plane that goes both ways (a bounce along a floor) is drawn as its path,
+    // y against x; anything else as the coordinate that moves most against time.
+    const bool path = scene.dims == 2 && std::min(range.x(), range.y()) > 0.05 * range.maxCoeff();
+    Eigen::Index axis = 1;
+    range.maxCoeff(&axis);
     const char* axis_name = axis == 0 ? "x" : axis == 1 ? "y" : "z";
     std::string plot;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Trajectory& t = runs[i]->trajectory;
       // A run without states (a reference with no answer) draws nothing.
       if (t.states.empty()) continue;
-      std::vector<double> coordinate;
-      for (const State& s : t.states)
-        coordinate.push_back(axis == 0   ? s[b].position.x()
-                             : axis == 1 ? s[b].position.y()
-                                         : s[b].position.z());
-      const std::string rows = series_rows(t.times, coordinate);
+      std::vector<double> across, value;
+      for (std::size_t j = 0; j < t.states.size(); ++j) {
+        const Vec3& p = t.states[j][k].position;
+        across.push_back(path ? p.x() : t.times[j]);
+        value.push_back(path ? p.y() : p[axis]);
+      }
+      const std::string rows = series_rows(across, value);
       if (rows.empty()) continue;
       data += "# " + runs[i]->backend + "\n" + rows + "\n\n";
       plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
@@ -102,15 +137,20 @@ std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const 
     // A body no run has a finite position for leaves its panel empty.
     if (plot.empty()) continue;
     ++panels;
-    script += fmt::format("set xlabel \"t (s)\"\nset ylabel {}\n{}\nunset key\n",
-                          quote(scene.bodies[b].name + " " + axis_name + " (m)"), plot);
+    const std::string& who = scene.bodies[drawn[k]].name;
+    script += path ? fmt::format("set xlabel {}\nset ylabel {}\n{}\nunset key\n",
+                                 quote(who + " x (m)"), quote(who + " y (m)"), plot)
+                   : fmt::format("set xlabel \"t (s)\"\nset ylabel {}\n{}\nunset key\n",
+                                 quote(who + " " + axis_name + " (m)"), plot);
   }
   if (panels == 0) return "no run has a finite position to draw";
   // One legend, beside the first panel; every panel keeps the same right margin to line up.
   const std::string layout = fmt::format(
       "set multiplot layout {},1 title {}\nset grid\nset rmargin at screen 0.70\n"
       "set key at screen 0.99, screen 0.92 right top maxrows 20 samplen 2 font \",10\"\n",
-      panels, quote(scene.name + ": main coordinate of each body at report_dt"));
+      panels,
+      quote(scene.name + ": the bodies that move, at report_dt (a path y against x where "
+                         "the motion goes both ways in the plane)"));
   return draw(layout + script + "unset multiplot\n", data, batch, name, 80 + 240 * panels);
 }
 
@@ -185,13 +225,31 @@ std::vector<std::string> plot_file_names(const Scene& scene) {
   if (!stopping_bodies(scene).empty()) names.push_back(scene.name + "-stop.svg");
   if (!turning_bodies(scene).empty()) names.push_back(scene.name + "-rotation.svg");
   if (scene.sweep) names.push_back(scene.name + "-sweep.svg");
+  for (const char* kind : {"-motion.svg", "-motion-still.svg"}) names.push_back(scene.name + kind);
   return names;
+}
+
+/// The motion view and its still, which need no gnuplot: written by the program itself.
+void write_motion(const CaseResults& results, FileBatch& batch, PlotFiles& files) {
+  const Scene& scene = *results.scene;
+  const std::vector<int> drawn = drawn_bodies(scene);
+  const std::string motion = motion_svg(results, drawn);
+  if (motion.empty()) {
+    files.note += std::string(files.note.empty() ? "" : "; ") + "no motion view: no run has states";
+    return;
+  }
+  files.motion = scene.name + "-motion.svg";
+  batch.write(files.motion, motion);
+  files.still = scene.name + "-motion-still.svg";
+  batch.write(files.still, motion_still_svg(results, drawn, still_instants(scene)));
 }
 
 PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
   PlotFiles files;
+  write_motion(results, batch, files);
   if (!gnuplot_available()) {
-    files.note = "plots skipped: gnuplot was not found (install gnuplot-nox)";
+    files.note += std::string(files.note.empty() ? "" : "; ") +
+                  "plots skipped: gnuplot was not found (install gnuplot-nox)";
     return files;
   }
   const Scene& scene = *results.scene;

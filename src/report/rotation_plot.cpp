@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "report/gnuplot.hpp"
+#include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
 
 namespace bb {
@@ -19,16 +20,17 @@ int spin_axis(const Body& body) {
   return static_cast<int>(axis);
 }
 
-/// The two series of `body` in one run: angle (degrees) and angular velocity (rad/s).
-void series(const Scene& scene, int body, const Trajectory& t, std::vector<double>& angle,
-            std::vector<double>& rate) {
+/// The two series of `body` in one run, whose states hold it at `slot`: angle (degrees)
+/// and angular velocity (rad/s).
+void series(const Scene& scene, int body, std::size_t slot, const Trajectory& t,
+            std::vector<double>& angle, std::vector<double>& rate) {
   const int axis = spin_axis(scene.bodies[body]);
   Vec3 unit = Vec3::Zero();
   unit[axis] = 1.0;
-  const Vec3 start = t.states.front()[body].orientation * unit;
+  const Vec3 start = t.states.front()[slot].orientation * unit;
   double last = 0.0, turns = 0.0;
   for (const State& s : t.states) {
-    const BodyState& b = s[body];
+    const BodyState& b = s[slot];
     if (scene.dims == 2) {
       // Unwrapped: a jump of more than half a turn between samples is a wrap.
       const double a = angle_about_z(b.orientation) * 180.0 / std::numbers::pi;
@@ -72,12 +74,16 @@ std::string rotation_plot(const CaseResults& results, FileBatch& batch, const st
   if (bodies.empty()) return "no body turns";
   const auto runs = report_runs(results);
   TwoColumnPlot plot(scene.name + ": angle and angular velocity at report_dt");
+  const std::vector<int> drawn = drawn_bodies(scene);
   for (int b : bodies) {
+    // Where the body sits in the kept states (drawn_bodies.hpp).
+    const std::optional<std::size_t> slot = drawn_slot(drawn, b);
+    if (!slot) continue;
     for (std::size_t i = 0; i < runs.size(); ++i) {
       const Trajectory& t = runs[i]->trajectory;
       if (t.states.empty()) continue;
       std::vector<double> angle, rate;
-      series(scene, b, t, angle, rate);
+      series(scene, b, *slot, t, angle, rate);
       plot.add(false, i, runs[i]->backend, t.times, angle);
       plot.add(true, i, runs[i]->backend, t.times, rate);
     }

@@ -4,6 +4,7 @@
 
 #include "metrics/stop_observables.hpp"
 #include "report/gnuplot.hpp"
+#include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
 
 namespace bb {
@@ -41,7 +42,11 @@ std::string stop_plot(const CaseResults& results, FileBatch& batch, const std::s
   TwoColumnPlot plot(scene.name +
                      ": slid distance and velocity along the slide, around the reference's "
                      "stop, at report_dt");
+  const std::vector<int> drawn = drawn_bodies(scene);
   for (int b : bodies) {
+    // Where the body sits in the kept states (drawn_bodies.hpp).
+    const std::optional<std::size_t> slot = drawn_slot(drawn, b);
+    if (!slot) continue;
     const Vec3 along = sliding_direction(scene, b);
     const double from = window_start(results, b);
     for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -51,8 +56,9 @@ std::string stop_plot(const CaseResults& results, FileBatch& batch, const std::s
       for (std::size_t j = 0; j < t.states.size(); ++j) {
         if (t.times[j] < from) continue;
         times.push_back(t.times[j]);
-        slid.push_back((t.states[j][b].position - t.states.front()[b].position).dot(along));
-        speed.push_back(t.states[j][b].velocity.dot(along));
+        const BodyState& now = t.states[j][*slot];
+        slid.push_back((now.position - t.states.front()[*slot].position).dot(along));
+        speed.push_back(now.velocity.dot(along));
       }
       plot.add(false, i, runs[i]->backend, times, slid);
       plot.add(true, i, runs[i]->backend, times, speed);

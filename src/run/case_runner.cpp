@@ -267,6 +267,8 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   // The fallback's whole trajectories are done with: keep what the page draws.
   if (fallback)
     for (RunRecord& run : out.runs) keep_plotted_states(scene, run);
+  // The reference's states too: from here on every state holds the drawn bodies.
+  keep_drawn_states(scene, out.reference_run);
 
   out.gates = evaluate_gates(scene, out);
   if (scene.sweep && options.sweep) out.sweep = run_sweep(scene, registry, options, progress);

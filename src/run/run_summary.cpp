@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "metrics/order.hpp"
+#include "run/drawn_bodies.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -50,6 +51,17 @@ void add_series(const Scene& scene, RunRecord& run, const Trajectory* reference)
   }
 }
 
+void keep_drawn_states(const Scene& scene, RunRecord& run) {
+  const std::vector<int> drawn = drawn_bodies(scene);
+  for (State& s : run.trajectory.states) {
+    if (s.size() != scene.bodies.size()) continue;  // already cut
+    State kept;
+    kept.reserve(drawn.size());
+    for (int b : drawn) kept.push_back(s[b]);
+    s = std::move(kept);
+  }
+}
+
 void keep_plotted_states(const Scene& scene, RunRecord& run) {
   std::vector<State>& states = run.trajectory.states;
   if (!run.dt || *run.dt != scene.report_dt) {
@@ -57,11 +69,7 @@ void keep_plotted_states(const Scene& scene, RunRecord& run) {
     states.shrink_to_fit();
     return;
   }
-  for (State& s : states)
-    if (s.size() > kPlottedBodies) {
-      s.resize(kPlottedBodies);
-      s.shrink_to_fit();
-    }
+  keep_drawn_states(scene, run);
 }
 
 void record_position_scale(RunRecord& run) {

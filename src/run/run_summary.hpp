@@ -10,7 +10,7 @@
 
 namespace bb {
 
-/// The page's trajectory plot shows the first this many bodies.
+/// The page's trajectory plot shows at most this many bodies.
 inline constexpr std::size_t kPlottedBodies = 6;
 
 /// Each observable of the scene on `run`, with its reference value: the formula's where
@@ -21,9 +21,11 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& agains
 /// run.distance (largest position distance from it over the bodies, at every sample).
 void add_series(const Scene& scene, RunRecord& run, const Trajectory* reference);
 
-/// Keeps of run.trajectory only what the page draws: at report_dt the states of the first
-/// kPlottedBodies bodies, elsewhere none. Times and events stay.
+/// Keeps of run.trajectory only what the page draws: at report_dt the states of the drawn
+/// bodies (drawn_bodies.hpp), elsewhere none. Times and events stay.
 void keep_plotted_states(const Scene& scene, RunRecord& run);
+/// Keeps of every state of `run` the drawn bodies, whatever its dt (the reference's).
+void keep_drawn_states(const Scene& scene, RunRecord& run);
 
 /// run.position_scale from the run's states: the order fit's rounding floor needs it.
 void record_position_scale(RunRecord& run);

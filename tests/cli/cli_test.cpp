@@ -169,7 +169,8 @@ TEST(Cli, ReportWritesAnIndexPagesPlotsAndStability) {
       ++images;
       EXPECT_TRUE(fs::exists(out + "/" + file)) << file;
     }
-    EXPECT_EQ(images, 4) << name;  // work precision, trajectory, energy, error over time
+    // The motion view and its still, work precision, trajectory, energy, error over time.
+    EXPECT_EQ(images, 6) << name;
     for (const char* section :
          {"## Stability", "## Work precision", "## Gates", "## Engine settings"})
       EXPECT_NE(md.find(section), std::string::npos) << name << " lacks " << section;

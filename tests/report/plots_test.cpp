@@ -86,5 +86,53 @@ TEST(Plots, ACaseWithoutAReferenceStillGetsItsPageAndPlots) {
   EXPECT_NE(page.find("finest dt"), std::string::npos);
 }
 
+// The trajectory plot shows the bodies that move: never a fixed body or a grid's anchored
+// row (the cloth drew six flat lines of its anchored particles); a motion in the plane that
+// goes both ways is drawn as its path, y against x.
+TEST(Plots, TheTrajectoryPanelsShowTheBodiesThatMove) {
+  const std::string dir = test::fresh_dir("moving_panels");
+  const std::string path = test::write_case(dir, "hang.toml", R"(name = "hang"
+dims = 2
+duration = 1.0
+sample = 0.02
+dt = [0.02, 0.01]
+report_dt = 0.01
+[[body]]
+name = "wall"
+shape = "box"
+half_extents = [0.2, 1.0, 0.5]
+position = [-3.0, 8.0, 0.0]
+fixed = true
+[[body]]
+name = "thrown"
+radius = 0.2
+mass = 1.0
+position = [-5.0, 5.0, 0.0]
+velocity = [3.0, 4.0, 0.0]
+[grid]
+size = [3, 2]
+spacing = 1.0
+mass = 0.1
+neighbours = 4
+stiffness = 50.0
+damping = 0.2
+origin = [0.0, 10.0, 0.0]
+anchored = "top-row"
+)");
+  const test::Outcome o = test::beachball(
+      "run " + path + " --no-cost --backends reference,course/rk4 --out " + dir + "/out");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  std::ifstream in(dir + "/out/hang-trajectory.svg");
+  const std::string svg(std::istreambuf_iterator<char>(in), {});
+  ASSERT_FALSE(svg.empty());
+  for (const char* still : {"wall ", "p0_0 ", "p1_0 ", "p2_0 "})
+    EXPECT_EQ(svg.find(still), std::string::npos) << still << "has a panel";
+  for (const char* moving : {"p0_1 y (m)", "p1_1 y (m)", "p2_1 y (m)"})
+    EXPECT_NE(svg.find(moving), std::string::npos) << moving;
+  // The thrown ball's path: its x against its y.
+  EXPECT_NE(svg.find("thrown x (m)"), std::string::npos);
+  EXPECT_NE(svg.find("thrown y (m)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace bb

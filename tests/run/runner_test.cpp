@@ -8,6 +8,7 @@
 #include "report/summary_tables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
+#include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
 #include "scene/case_error.hpp"
 #include "scene/motion.hpp"
@@ -348,7 +349,7 @@ TEST(Runner, EachChildMeasuresItsRunAndBringsBackOnlyWhatThePagePlots) {
     EXPECT_EQ(run.trajectory.times.size(), samples);
     if (*run.dt == scene.report_dt) {
       ASSERT_EQ(run.trajectory.states.size(), samples);
-      EXPECT_EQ(run.trajectory.states.back().size(), kPlottedBodies);
+      EXPECT_EQ(run.trajectory.states.back().size(), drawn_bodies(scene).size());
       EXPECT_EQ(run.trajectory.states.back()[0].position,
                 whole.trajectory.states.back()[0].position);
     } else {

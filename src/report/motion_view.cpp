@@ -1,0 +1,465 @@
+#include "report/motion_view.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "report/backend_style.hpp"
+#include "report/gnuplot.hpp"
+#include "report/motion_geometry.hpp"
+#include "scene/text.hpp"
+
+namespace bb {
+
+namespace {
+
+using motion::Canvas;
+using motion::num;
+
+constexpr double kCanvasWidth = 760.0;  // pixels of one scene drawn at full size
+constexpr double kMargin = 10.0;
+constexpr double kGap = 12.0;  // between small panels
+constexpr double kLegendWidth = 300.0;
+constexpr double kTitleHeight = 34.0;
+constexpr double kPanelTitle = 18.0;
+constexpr double kTimeBarHeight = 46.0;
+constexpr double kMinCanvasHeight = 240.0;
+constexpr double kMaxCanvasHeight = 640.0;
+/// Numbers the animated values may hold in all: about 40 % of the size limit.
+constexpr double kNumberBudget = 0.4 * kMotionViewBytes / 6.5;
+/// Frames of an animation: at least, and at most.
+constexpr std::size_t kMinFrames = 20, kMaxFrames = 300;
+/// More moving bodies than this, and each backend gets a panel of its own over the
+/// reference's ghost: an overlay of every backend's grid is unreadable.
+constexpr int kOverlayBodies = 4;
+constexpr int kColumns = 3;
+
+using Springs = std::vector<std::pair<std::size_t, std::size_t>>;
+
+/// Stroke and fill of a run: the reference filled grey under the others, the course
+/// methods in solid lines, the engines dashed; `thick` scales the lines (small panels).
+std::string paint(const std::string& backend, double thick) {
+  const BackendStyle s = backend_style(backend);
+  if (s.kind == LineKind::Reference)
+    return fmt::format(
+        "fill=\"#cfcfcf\" fill-opacity=\"0.85\" stroke=\"#000000\" stroke-width=\"{:.1f}\"",
+        1.5 * thick);
+  return fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}", s.colour, 2.0 * thick,
+                     s.kind == LineKind::Engine
+                         ? fmt::format(" stroke-dasharray=\"{:.0f} {:.0f}\"", 6 * thick, 3 * thick)
+                         : "");
+}
+
+std::string spring_colour(const std::string& backend) {
+  const BackendStyle s = backend_style(backend);
+  return s.kind == LineKind::Reference ? "#555555" : s.colour;
+}
+
+/// Whether the scene's bodies turn, so that a ball gets a mark that shows it.
+bool turns(const Scene& scene) {
+  return scene.features().has(Feature::Rotation);
+}
+
+int moving_bodies(const Scene& scene, const std::vector<int>& drawn) {
+  int n = 0;
+  for (int b : drawn) n += !scene.bodies[b].fixed;
+  return n;
+}
+
+/// How many numbers one frame of one run's bodies costs.
+double numbers_per_frame(const Scene& scene, const std::vector<int>& drawn) {
+  double n = 0.0;
+  for (int b : drawn) {
+    const Body& body = scene.bodies[b];
+    if (body.fixed) continue;
+    n += body.shape == Shape::Box ? (scene.dims == 2 ? 8 : 48) : (turns(scene) ? 6 : 2);
+  }
+  return n;
+}
+
+/// The sample indices drawn as frames: evenly spread, the first and last included.
+std::vector<std::size_t> frame_samples(std::size_t samples, std::size_t frames) {
+  std::vector<std::size_t> out;
+  if (samples == 0) return out;
+  frames = std::clamp<std::size_t>(frames, 2, std::max<std::size_t>(samples, 2));
+  for (std::size_t f = 0; f < frames; ++f) {
+    const std::size_t j = samples == 1 ? 0 : f * (samples - 1) / (frames - 1);
+    if (out.empty() || j != out.back()) out.push_back(j);
+  }
+  return out;
+}
+
+std::string escape_xml(const std::string& s) {
+  std::string out;
+  for (char ch : s) {
+    if (ch == '&')
+      out += "&amp;";
+    else if (ch == '<')
+      out += "&lt;";
+    else if (ch == '>')
+      out += "&gt;";
+    else if (ch == '"')
+      out += "&quot;";
+    else
+      out += ch;
+  }
+  return out;
+}
+
+std::string run_label(const RunRecord& run) {
+  return escape_xml(run.backend +
+                    (run.status == RunStatus::Ok ? "" : " (" + status_name(run.status) + ")"));
+}
+
+/// A legend entry per run.
+std::string legend_svg(const std::vector<const RunRecord*>& runs, double x, double y) {
+  std::string out = fmt::format(
+      "<text x=\"{}\" y=\"{}\" font-weight=\"bold\">at report_dt</text>\n", num(x), num(y));
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const double row = y + 20.0 * (i + 1);
+    out += fmt::format(
+        "<circle cx=\"{}\" cy=\"{}\" r=\"6\" {}/>\n<text x=\"{}\" y=\"{}\">{}</text>\n", num(x + 7),
+        num(row - 4), paint(runs[i]->backend, 1.0), num(x + 20), num(row), run_label(*runs[i]));
+  }
+  return out;
+}
+
+/// The runs with states at report_dt, the reference first.
+std::vector<const RunRecord*> drawable_runs(const CaseResults& results) {
+  std::vector<const RunRecord*> out;
+  for (const RunRecord* r : report_runs(results))
+    if (!r->trajectory.states.empty()) out.push_back(r);
+  return out;
+}
+
+/// The run that frames the view: the reference when it ran to the end, else the longest.
+const Trajectory& guide_of(const std::vector<const RunRecord*>& runs) {
+  const RunRecord* longest = runs.front();
+  for (const RunRecord* r : runs)
+    if (r->trajectory.states.size() > longest->trajectory.states.size()) longest = r;
+  return runs.front()->trajectory.states.size() == longest->trajectory.states.size()
+             ? runs.front()->trajectory
+             : longest->trajectory;
+}
+
+/// Where a panel sits on the page and how wide it is; the canvas fills it, scaled.
+struct Panel {
+  double x = 0.0, y = 0.0, width = 0.0;
+  std::string title;
+};
+
+/// A panel's title and the opening of its scaled, clipping viewport (closed by "</svg>").
+std::string open_panel(const Panel& p, const Canvas& c) {
+  const double top = p.title.empty() ? p.y : p.y + kPanelTitle;
+  std::string out;
+  if (!p.title.empty())
+    out += fmt::format("<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>\n", num(p.x),
+                       num(p.y + 13.0), p.title);
+  return out + fmt::format(
+                   "<svg x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
+                   "overflow=\"hidden\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\" "
+                   "stroke=\"#dddddd\"/>\n",
+                   num(p.x), num(top), num(p.width), num(c.height * p.width / c.width),
+                   num(c.width), num(c.height));
+}
+
+double panel_height(const Panel& p, const Canvas& c) {
+  return (p.title.empty() ? 0.0 : kPanelTitle) + c.height * p.width / c.width;
+}
+
+/// Panels for `count` runs: one at full size, or small ones in columns.
+std::vector<Panel> layout(std::size_t count, bool multiples, const Canvas& c, double columns,
+                          double top) {
+  std::vector<Panel> out;
+  if (!multiples) {
+    out.push_back({kMargin, top, kCanvasWidth, ""});
+    return out;
+  }
+  const double width = (kCanvasWidth - (columns - 1) * kGap) / columns;
+  const double height = kPanelTitle + c.height * width / c.width + kGap;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t col = i % static_cast<std::size_t>(columns);
+    const std::size_t row = i / static_cast<std::size_t>(columns);
+    out.push_back({kMargin + col * (width + kGap), top + row * height, width, ""});
+  }
+  return out;
+}
+
+/// One run's bodies (and springs) moving over `samples`; the paint is the group's.
+std::string animated_run(const Scene& scene, const RunRecord& run, const std::vector<int>& drawn,
+                         const std::vector<std::size_t>& samples, const Canvas& c,
+                         const Springs& springs, double total, double play, double thick) {
+  const std::vector<State>& states = run.trajectory.states;
+  const std::string timing = fmt::format("dur=\"{:.3f}s\" repeatCount=\"indefinite\"", play);
+  std::string out = "<g " + paint(run.backend, thick) + ">\n";
+  // A run that stopped early (it diverged) holds its last state and fades.
+  const std::size_t last = states.size() - 1;
+  if (last < samples.back())
+    out += fmt::format(
+        "<animate attributeName=\"opacity\" values=\"1;0.3\" keyTimes=\"0;{:.5f}\" "
+        "calcMode=\"discrete\" {}/>\n",
+        std::min(1.0, run.trajectory.times[last] / total), timing);
+  if (!springs.empty()) {
+    std::string values;
+    for (std::size_t j : samples)
+      values += (values.empty() ? "" : ";") +
+                motion::springs_path(scene, states[std::min(j, last)], springs, c);
+    out += fmt::format(
+        "<path fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\" stroke-dasharray=\"none\" "
+        "opacity=\"0.6\"><animate attributeName=\"d\" values=\"{}\" {}/></path>\n",
+        spring_colour(run.backend), 0.8 * thick, values, timing);
+  }
+  const bool mark = turns(scene);
+  for (std::size_t k = 0; k < drawn.size() && k < states.front().size(); ++k) {
+    const Body& body = scene.bodies[drawn[k]];
+    if (body.fixed) continue;
+    std::string cx, cy, d, marks;
+    motion::Outline first;
+    for (std::size_t f = 0; f < samples.size(); ++f) {
+      const motion::Outline o =
+          motion::outline(scene, body, states[std::min(samples[f], last)][k], c, mark);
+      if (f == 0) first = o;
+      const char* sep = f ? ";" : "";
+      if (o.circle) {
+        cx += sep + num(o.centre.x), cy += sep + num(o.centre.y);
+        if (!o.path.empty()) marks += sep + o.path;
+      } else {
+        d += sep + o.path;
+      }
+    }
+    if (first.circle) {
+      out += fmt::format(
+          "<circle r=\"{}\"><animate attributeName=\"cx\" values=\"{}\" {}/><animate "
+          "attributeName=\"cy\" values=\"{}\" {}/></circle>\n",
+          num(first.radius), cx, timing, cy, timing);
+      if (!marks.empty())
+        out += fmt::format(
+            "<path fill=\"none\"><animate attributeName=\"d\" values=\"{}\" {}/></path>\n", marks,
+            timing);
+    } else {
+      out +=
+          fmt::format("<path><animate attributeName=\"d\" values=\"{}\" {}/></path>\n", d, timing);
+    }
+  }
+  return out + "</g>\n";
+}
+
+/// One run's bodies (and springs) at one state.
+std::string still_run(const Scene& scene, const std::string& backend, const State& s,
+                      const std::vector<int>& drawn, const Canvas& c, const Springs& springs,
+                      double thick) {
+  std::string out = "<g " + paint(backend, thick) + ">\n";
+  if (!springs.empty())
+    out += fmt::format(
+        "<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\" "
+        "stroke-dasharray=\"none\" opacity=\"0.6\"/>\n",
+        motion::springs_path(scene, s, springs, c), spring_colour(backend), 0.8 * thick);
+  for (std::size_t k = 0; k < drawn.size() && k < s.size(); ++k) {
+    const Body& body = scene.bodies[drawn[k]];
+    if (body.fixed) continue;
+    const motion::Outline o = motion::outline(scene, body, s[k], c, turns(scene));
+    if (o.circle) {
+      out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>\n", num(o.centre.x),
+                         num(o.centre.y), num(o.radius));
+      if (!o.path.empty()) out += fmt::format("<path d=\"{}\" fill=\"none\"/>\n", o.path);
+    } else {
+      out += fmt::format("<path d=\"{}\"/>\n", o.path);
+    }
+  }
+  return out + "</g>\n";
+}
+
+/// The state of `t` at the sample nearest `instant`, or its last when it ended before.
+const State& state_at(const Trajectory& t, double instant) {
+  std::size_t j = 0;
+  while (j + 1 < t.times.size() && j + 1 < t.states.size() && t.times[j + 1] <= instant + 1e-9) ++j;
+  return t.states[j];
+}
+
+/// What the title says of the reference: drawn filled grey, or absent with no answer.
+std::string reference_note(const std::vector<const RunRecord*>& runs, bool multiples) {
+  if (runs.front()->backend != "reference")
+    return "the reference has no answer here: every backend on its own";
+  return multiples ? "the reference filled grey, under each backend" : "the reference filled grey";
+}
+
+std::string header(double width, double height, const std::string& title) {
+  return fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
+      "width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" "
+      "font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<text "
+      "x=\"{2}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{3}</text>\n",
+      num(width), num(height), num(kMargin), title);
+}
+
+}  // namespace
+
+std::vector<double> still_instants(const Scene& scene) {
+  return {0.0, scene.duration / 3.0, 2.0 * scene.duration / 3.0, scene.duration};
+}
+
+std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn) {
+  const Scene& scene = *results.scene;
+  const std::vector<const RunRecord*> runs = drawable_runs(results);
+  if (runs.empty()) return "";
+  const Trajectory& guide = guide_of(runs);
+  const Canvas c =
+      motion::fit(scene, guide, drawn, kCanvasWidth, kMinCanvasHeight, kMaxCanvasHeight);
+  const bool multiples = moving_bodies(scene, drawn) > kOverlayBodies;
+
+  // Frames within the size limit; springs for every run if they fit, else for the
+  // reference only, else none.
+  const Springs all_springs = motion::drawn_springs(scene, drawn);
+  const double bodies_each = numbers_per_frame(scene, drawn);
+  const double springs_each = 4.0 * all_springs.size();
+  const double n_runs = static_cast<double>(runs.size());
+  std::size_t spring_runs = 0;
+  if ((bodies_each + springs_each) * n_runs * kMinFrames <= kNumberBudget)
+    spring_runs = runs.size();
+  else if ((bodies_each * n_runs + springs_each) * kMinFrames <= kNumberBudget)
+    spring_runs = 1;
+  const double per_frame = std::max(1.0, bodies_each * n_runs + springs_each * spring_runs);
+  const std::size_t frames = std::clamp<std::size_t>(
+      static_cast<std::size_t>(kNumberBudget / per_frame), kMinFrames, kMaxFrames);
+  // The frames are evenly spread over the samples, so the values need no key times.
+  const std::vector<std::size_t> samples = frame_samples(guide.states.size(), frames);
+  const double total = guide.times[samples.back()] > 0.0 ? guide.times[samples.back()] : 1.0;
+  // Real time, but never shorter than 2 s nor longer than 40 s a loop.
+  const double play = std::clamp(total, 2.0, 40.0);
+
+  std::vector<Panel> panels = layout(runs.size(), multiples, c, kColumns, kTitleHeight);
+  const double thick = multiples ? c.width / panels.front().width : 1.0;
+  double bottom = 0.0;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    if (multiples) panels[i].title = run_label(*runs[i]);
+    bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
+  }
+  const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
+  const double height = bottom + kTimeBarHeight;
+  const std::string speed =
+      play == total ? "real time" : fmt::format("{:.2g} x real time", total / play);
+  std::string svg =
+      header(width, height,
+             fmt::format("{}: the motion at report_dt = {} s ({}; {})", escape_xml(scene.name),
+                         format_dt(scene.report_dt), speed, reference_note(runs, multiples)));
+  // In small panels, the reference (when it has an answer) is drawn once, under each.
+  const bool ghost = runs.front()->backend == "reference";
+  const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
+  const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c);
+  if (!multiples) {
+    svg += open_panel(panels.front(), c) + backdrop;
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      svg += animated_run(scene, *runs[r], drawn, samples, c, springs_of(r), total, play, thick);
+    svg += "</svg>\n" + legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
+  } else {
+    if (ghost)
+      svg +=
+          "<defs>\n<g id=\"reference\">\n" +
+          animated_run(scene, *runs.front(), drawn, samples, c, springs_of(0), total, play, thick) +
+          "</g>\n</defs>\n";
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      svg += open_panel(panels[r], c) + backdrop;
+      if (ghost) svg += "<use xlink:href=\"#reference\"/>\n";
+      if (r > 0 || !ghost)
+        svg += animated_run(scene, *runs[r], drawn, samples, c, springs_of(r), total, play, thick);
+      svg += "</svg>\n";
+    }
+  }
+
+  // The time readout: a bar that fills over the run, and the time in tenths of it.
+  const double bar_y = bottom + 12.0;
+  svg += fmt::format(
+      "<rect x=\"{0}\" y=\"{1}\" width=\"{2}\" height=\"8\" fill=\"#eeeeee\"/>\n<rect x=\"{0}\" "
+      "y=\"{1}\" width=\"0\" height=\"8\" fill=\"#777777\"><animate attributeName=\"width\" "
+      "values=\"0;{2}\" dur=\"{3:.3f}s\" repeatCount=\"indefinite\"/></rect>\n",
+      num(kMargin), num(bar_y), num(kCanvasWidth), play);
+  for (int tenth = 0; tenth < 10; ++tenth) {
+    const double from = tenth / 10.0, to = (tenth + 1) / 10.0;
+    const std::string values = tenth == 0 ? "1;0" : tenth == 9 ? "0;1" : "0;1;0";
+    const std::string times = tenth == 0   ? fmt::format("0;{:.2f}", to)
+                              : tenth == 9 ? fmt::format("0;{:.2f}", from)
+                                           : fmt::format("0;{:.2f};{:.2f}", from, to);
+    svg += fmt::format(
+        "<text x=\"{}\" y=\"{}\" opacity=\"{}\">t = {:.3g} s<animate attributeName=\"opacity\" "
+        "values=\"{}\" keyTimes=\"{}\" calcMode=\"discrete\" dur=\"{:.3f}s\" "
+        "repeatCount=\"indefinite\"/></text>\n",
+        num(kMargin), num(bar_y + 24.0), tenth == 0 ? 1 : 0, from * total, values, times, play);
+  }
+  svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{:.3g} s</text>\n</svg>\n",
+                     num(kMargin + kCanvasWidth), num(bar_y + 24.0), total);
+  return svg;
+}
+
+std::string motion_still_svg(const CaseResults& results, const std::vector<int>& drawn,
+                             const std::vector<double>& instants) {
+  const Scene& scene = *results.scene;
+  const std::vector<const RunRecord*> runs = drawable_runs(results);
+  if (runs.empty() || instants.empty()) return "";
+  const Trajectory& guide = guide_of(runs);
+  const Canvas c =
+      motion::fit(scene, guide, drawn, kCanvasWidth, kMinCanvasHeight, kMaxCanvasHeight);
+  const bool multiples = moving_bodies(scene, drawn) > kOverlayBodies;
+  const Springs all_springs = motion::drawn_springs(scene, drawn);
+  // Springs for every run while few, else the reference's only.
+  const std::size_t spring_runs = all_springs.size() * runs.size() <= 600 ? runs.size() : 1;
+  const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
+  const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c);
+
+  // Overlay: a panel per instant, every run in it. Small multiples: a row per run, named
+  // above it, a column per instant, each over the reference at that instant.
+  const std::size_t count = multiples ? runs.size() * instants.size() : instants.size();
+  const double columns = multiples ? static_cast<double>(instants.size()) : 2.0;
+  std::vector<Panel> panels = layout(count, true, c, columns, kTitleHeight);
+  const double thick = c.width / panels.front().width;
+  const double row_header = multiples ? kPanelTitle : 0.0;
+  std::string row_names;
+  double bottom = 0.0;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const std::size_t row = i / static_cast<std::size_t>(columns);
+    panels[i].y += row_header * (row + 1);
+    panels[i].title = fmt::format("t = {:.3g} s", instants[i % instants.size()]);
+    if (multiples && i % instants.size() == 0)
+      row_names +=
+          fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
+                      num(kMargin), num(panels[i].y - 4.0), run_label(*runs[row]));
+    bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
+  }
+  const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
+  std::string svg = header(
+      width, bottom + kMargin,
+      fmt::format("{}: the scene at {} instants, report_dt = {} s ({})", escape_xml(scene.name),
+                  instants.size(), format_dt(scene.report_dt), reference_note(runs, multiples)));
+  svg += row_names;
+  const bool ghost = multiples && runs.front()->backend == "reference";
+  if (ghost) {
+    svg += "<defs>\n";
+    for (std::size_t i = 0; i < instants.size(); ++i)
+      svg +=
+          fmt::format("<g id=\"reference-{}\">\n", i) +
+          still_run(scene, runs.front()->backend, state_at(runs.front()->trajectory, instants[i]),
+                    drawn, c, springs_of(0), thick) +
+          "</g>\n";
+    svg += "</defs>\n";
+  }
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const std::size_t at = i % instants.size();
+    svg += open_panel(panels[i], c) + backdrop;
+    if (multiples) {
+      const std::size_t r = i / instants.size();
+      if (ghost) svg += fmt::format("<use xlink:href=\"#reference-{}\"/>\n", at);
+      if (r > 0 || !ghost)
+        svg += still_run(scene, runs[r]->backend, state_at(runs[r]->trajectory, instants[at]),
+                         drawn, c, springs_of(r), thick);
+    } else {
+      for (std::size_t r = 0; r < runs.size(); ++r)
+        svg += still_run(scene, runs[r]->backend, state_at(runs[r]->trajectory, instants[at]),
+                         drawn, c, springs_of(r), thick);
+    }
+    svg += "</svg>\n";
+  }
+  if (!multiples) svg += legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
+  return svg + "</svg>\n";
+}
+
+}  // namespace bb
