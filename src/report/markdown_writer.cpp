@@ -53,7 +53,8 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
     out +=
         markdown_text("The reference has no answer for this case: " + results.reference_run.reason +
                       ". Each backend's errors below are against its own run at the finest "
-                      "dt of the sweep (self-consistency, DESIGN.md's fallback): they show "
+                      "dt of the sweep (self-consistency: the reference's fallback, "
+                      "docs/design.md): they show "
                       "how far a step is from converged, not how far from the truth; the "
                       "finest run has none.") +
         "\n\n";

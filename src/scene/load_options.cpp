@@ -217,7 +217,7 @@ void read_report_and_stability(TomlReader& root, Scene& scene) {
     TomlReader r = sub_reader(root, *t, "[stability]");
     if (r.has("energy_factor"))
       r.fail(r.line_of("energy_factor"),
-             "'energy_factor' is gone: stable now means bounded (DESIGN.md); 'growth_factor' "
+             "'energy_factor' is gone: stable now means bounded (docs/design.md); 'growth_factor' "
              "says how much the energy's rise may grow from the run's second quarter to its "
              "last");
     s.growth_factor = r.number_or("growth_factor", s.growth_factor);

@@ -105,8 +105,10 @@ int TomlReader::integer(const std::string& key) {
   return static_cast<int>(i->get());
 }
 
+// The *_or readers ask through find() also for an absent key: it is remembered as read and
+// the key observer hears of it, so a key left to its default is still one the case may hold.
 int TomlReader::integer_or(const std::string& key, int fallback) {
-  return table_.contains(key) ? integer(key) : (read_.insert(key), fallback);
+  return table_.contains(key) ? integer(key) : (find(key), fallback);
 }
 
 bool TomlReader::boolean_or(const std::string& key, bool fallback) {
@@ -135,7 +137,7 @@ std::string TomlReader::string(const std::string& key) {
 }
 
 std::string TomlReader::string_or(const std::string& key, const std::string& fallback) {
-  return table_.contains(key) ? string(key) : (read_.insert(key), fallback);
+  return table_.contains(key) ? string(key) : (find(key), fallback);
 }
 
 std::vector<double> TomlReader::numbers(const std::string& key, std::size_t count) {
@@ -161,7 +163,7 @@ Vec3 TomlReader::vec3(const std::string& key) {
 }
 
 Vec3 TomlReader::vec3_or(const std::string& key, const Vec3& fallback) {
-  return table_.contains(key) ? vec3(key) : (read_.insert(key), fallback);
+  return table_.contains(key) ? vec3(key) : (find(key), fallback);
 }
 
 std::vector<std::string> TomlReader::strings(const std::string& key) {
@@ -182,7 +184,7 @@ std::vector<std::string> TomlReader::strings(const std::string& key) {
 
 std::vector<std::string> TomlReader::strings_or(const std::string& key,
                                                 std::vector<std::string> fallback) {
-  return table_.contains(key) ? strings(key) : (read_.insert(key), std::move(fallback));
+  return table_.contains(key) ? strings(key) : (find(key), std::move(fallback));
 }
 
 const toml::table* TomlReader::table(const std::string& key) {
