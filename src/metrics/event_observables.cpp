@@ -35,8 +35,8 @@ std::optional<ObservableValue> measure_event(const Observe& observe, const Event
     return ObservableValue{*events.max_stretch, ""};
   }
   const bool body_kind = kind == "contact_time" || kind == "bounce_apex" ||
-                         kind == "post_velocity" || kind == "max_penetration" || kind == "period" ||
-                         kind == "fall_time";
+                         kind == "post_velocity" || kind == "post_normal_velocity" ||
+                         kind == "max_penetration" || kind == "period" || kind == "fall_time";
   if (body_kind) {
     if (observe.body < 0 || static_cast<std::size_t>(observe.body) >= events.bodies.size())
       return ObservableValue{std::nullopt, "the run has no event trace"};
@@ -50,6 +50,8 @@ std::optional<ObservableValue> measure_event(const Observe& observe, const Event
       return ObservableValue{*b.fall_time, ""};
     }
     if (!b.post_velocity) return ObservableValue{std::nullopt, "the body touched nothing"};
+    if (kind == "post_normal_velocity")
+      return ObservableValue{b.post_velocity->dot(b.post_normal.value_or(Vec3::Zero())), ""};
     return ObservableValue{(*b.post_velocity).norm(), ""};
   }
   if (kind != "momentum_change" && kind != "energy_change" && kind != "angular_momentum_change")

@@ -12,7 +12,10 @@ namespace bb {
 
 /// The value of `observe` from `events`, or nullopt when its kind is not an event kind.
 /// contact_time (s), bounce_apex (m, the centre's height above the ground), post_velocity
-/// (m/s, the speed right after the body's first contact), max_penetration (m), fall_time
+/// (m/s, the speed right after the body's first contact), post_normal_velocity (m/s, that
+/// velocity along the contact's normal, which points away from what the body touched:
+/// positive for a body that bounced back or was pushed off, negative for one that went on
+/// into where the other was), max_penetration (m), fall_time
 /// (s, the first time the centre came within kFallAllowance of lying flat: a wall down),
 /// momentum_change (N s, |change of total momentum| across the first collision between two
 /// moving bodies, gravity's impulse over the step removed), angular_momentum_change (N m s,

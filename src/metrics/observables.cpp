@@ -73,6 +73,24 @@ ObservableValue final_height(const Scene& scene, int body, const State& state) {
   return {state[body].position.dot(up), ""};
 }
 
+ObservableValue terminal_time(const Scene& scene, int body, const Trajectory& trajectory) {
+  const ObservableValue theory = terminal_speed(scene, scene.bodies[body]);
+  if (!theory.value) return theory;
+  const double target = kTerminalFraction * *theory.value;
+  const auto speed = [&](std::size_t j) {
+    return (trajectory.states[j][body].velocity - scene.air->wind).norm();
+  };
+  if (speed(0) >= target) return {trajectory.times[0], ""};
+  for (std::size_t j = 1; j < trajectory.states.size(); ++j) {
+    const double before = speed(j - 1), now = speed(j);
+    if (now < target) continue;
+    // A straight line between the two samples around the crossing.
+    const double f = (target - before) / (now - before);
+    return {trajectory.times[j - 1] + f * (trajectory.times[j] - trajectory.times[j - 1]), ""};
+  }
+  return {std::nullopt, "never reached 95 % of its terminal speed in the run"};
+}
+
 std::optional<double> formula_value(const Scene& scene, const Observe& observe) {
   if (observe.kind != "terminal_velocity") return std::nullopt;
   return terminal_speed(scene, scene.bodies[observe.body]).value;
@@ -91,6 +109,7 @@ ObservableValue measure(const Scene& scene, const Observe& observe, const Trajec
     return final_shear(scene, trajectory.states.front(), trajectory.states.back());
   if (observe.kind == "final_height")
     return final_height(scene, observe.body, trajectory.states.back());
+  if (observe.kind == "terminal_time") return terminal_time(scene, observe.body, trajectory);
   const Vec3& v = trajectory.states.back()[observe.body].velocity;
   if (observe.kind == "final_speed") return {v.norm(), ""};
   if (observe.kind == "terminal_velocity") {

@@ -19,6 +19,7 @@ struct ObservableValue {
 /// - final_speed: |v| at the end of the run (m/s);
 /// - terminal_velocity: |v - wind| at the end of the run (m/s), the speed relative to the
 ///   air that tends to the terminal speed; a note where the terminal speed does not apply;
+/// - terminal_time: when that speed first reaches 95 % of the terminal speed (s);
 /// - final_shear: the grid's largest relative change of a cell diagonal, start to end;
 /// - final_height: the centre's height along -gravity at the end of the run (m);
 /// - sag: how far the grid's last row hangs below its first at the end (m, along gravity);
@@ -46,6 +47,15 @@ ObservableValue final_height(const Scene& scene, int body, const State& state);
 /// The terminal speed of `body`, sqrt(2 m |g| / (rho Cd A)) with A = pi r^2 (m/s), or a
 /// note saying why it does not apply (no drag, no air, no gravity, or a Magnus force).
 ObservableValue terminal_speed(const Scene& scene, const Body& body);
+
+/// How close to its terminal speed a body must come for terminal_time: 95 %.
+inline constexpr double kTerminalFraction = 0.95;
+
+/// The first time `body`'s speed relative to the air reaches kTerminalFraction of its
+/// terminal speed (s), placed by a straight line between the two samples around it (every
+/// backend's samples lie on one grid, so each is measured alike); a note when it never does
+/// or when the terminal speed does not apply.
+ObservableValue terminal_time(const Scene& scene, int body, const Trajectory& trajectory);
 
 /// What every run's value of `observe` is compared with when a formula gives it from the
 /// scene alone (terminal_velocity: terminal_speed); nullopt when the comparison is with the

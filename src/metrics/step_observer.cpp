@@ -163,7 +163,10 @@ void StepObserver::observe(double t, const State& s) {
         if (body < 0) continue;
         BodyEvents& e = trace_.bodies[body];
         e.contact_times.push_back(t);
-        if (!e.post_velocity) e.post_velocity = s[body].velocity;
+        // The normal points from the second shape to the first: away from b for a.
+        if (!e.post_velocity)
+          e.post_velocity = s[body].velocity,
+          e.post_normal = body == pair.a ? Vec3(p.normal) : Vec3(-p.normal);
         bounced_[body] = true;
       }
       if (b_moves && !trace_.first_collision) {

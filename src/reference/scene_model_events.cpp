@@ -142,7 +142,10 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
     if (body < 0) continue;
     BodyEvents& e = trace_.bodies[body];
     e.contact_times.push_back(t);
-    if (!e.post_velocity) e.post_velocity = (velocity(y, body));
+    // The normal points from the second shape to the first: away from b for a.
+    if (!e.post_velocity)
+      e.post_velocity = Vector3d(velocity(y, body)),
+      e.post_normal = body == pair.a ? Vector3d(p.normal) : Vector3d(-p.normal);
     after_bounce_[body] = true;
   }
   if (b_moves && !trace_.first_collision) {
@@ -247,7 +250,8 @@ void SceneModel::land(const ContactPair& pair, double* y, double t) {
   if (!pressed_into_ground(i, y, omega)) return;
   BodyEvents& e = trace_.bodies[i];
   e.contact_times.push_back(t);
-  if (!e.post_velocity) e.post_velocity = Vector3d(velocity(y, i));
+  if (!e.post_velocity)
+    e.post_velocity = Vector3d(velocity(y, i)), e.post_normal = scene_.ground->normal;
   // Newton's restitution at the landing corner: about the axis its speed is omega r.
   const double rebound = -pair.restitution * omega;
   Vec(y + at(i) + 10) = rebound * u;

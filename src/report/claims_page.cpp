@@ -3,51 +3,90 @@
 #include <fmt/format.h>
 
 #include "report/format.hpp"
-#include "report/table.hpp"
 #include "run/claims.hpp"
 
 namespace bb {
 
 namespace {
 
-/// "holds (29.2 > 9.63)": the verdict and the two numbers at report_dt.
+/// "holds (29.2 > 9.63)": the verdict and the two numbers at report_dt, and the known
+/// cause of a verdict other than "holds".
 std::string verdict_text(const Claim& claim, const ClaimVerdict& v) {
   std::string out = v.backend + ": **" + v.verdict + "**";
   if (v.left && v.right)
     out += " (" + format_value(v.left) + " " + claim.op + " " + format_value(v.right) + ")";
+  if (!v.cause.empty()) out += ", cause: " + v.cause;
   return out;
+}
+
+/// The claim's sentence, and how its sides are read when that is not their value.
+std::string claim_cell(const Claim& claim) {
+  if (!claim.against_reference) return claim.text;
+  return claim.text + " (each side read as its distance from the reference's value)";
+}
+
+/// The course text's words with their section, or that the claim is the case's own.
+std::string source_cell(const Claim& claim) {
+  std::string quoted;
+  if (!claim.quote.empty())
+    quoted = (claim.seed.empty() ? "" : claim.seed + ": ") + "\"" + claim.quote + "\"";
+  if (!claim.own) return quoted.empty() ? "-" : quoted;
+  return "the case's own claim, not the text's" +
+         (quoted.empty() ? std::string() : "; prompted by " + quoted);
+}
+
+std::string verdicts_cell(const ClaimResult& c) {
+  std::string cell;
+  for (const ClaimVerdict& v : c.verdicts)
+    cell += (cell.empty() ? "" : "; ") + verdict_text(*c.claim, v);
+  return cell.empty() ? "-" : cell;
 }
 
 }  // namespace
 
+Table case_claims_table(const CaseResults& results) {
+  Table t;
+  t.headers = {"claim", "course text", "verdicts (numbers at report_dt)"};
+  t.right_aligned.assign(t.headers.size(), false);
+  for (const ClaimResult& c : judge_claims(results))
+    t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim), verdicts_cell(c)});
+  return t;
+}
+
 std::string claims_page(const std::vector<CaseResults>& all) {
   Table t;
-  t.headers = {"claim", "course section", "case", "verdicts (numbers at report_dt)"};
+  t.headers = {"claim", "course text", "case", "verdicts (numbers at report_dt)"};
   t.right_aligned.assign(t.headers.size(), false);
-  int count = 0, failing = 0;
+  int count = 0, own = 0, failing = 0, neither = 0;
   for (const CaseResults& r : all)
     for (const ClaimResult& c : judge_claims(r)) {
-      std::string cell;
-      bool fails = false;
-      for (const ClaimVerdict& v : c.verdicts) {
-        cell += (cell.empty() ? "" : "; ") + verdict_text(*c.claim, v);
-        fails = fails || v.verdict != "holds";
-      }
-      failing += fails;
+      const ClaimStanding standing = claim_standing(c);
+      failing += standing == ClaimStanding::Fails;
+      neither += standing == ClaimStanding::Neither;
+      own += c.claim->own;
       ++count;
       // render_markdown escapes every cell's text once.
-      t.rows.push_back({c.claim->text, c.claim->seed.empty() ? "-" : c.claim->seed,
-                        fmt::format("[{0}]({0}.md)", r.scene->name), cell});
+      t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim),
+                        fmt::format("[{0}]({0}.md)", r.scene->name), verdicts_cell(c)});
     }
   std::string page =
-      "# Claims ledger\n\nSentences of the course text, each checked by numbers from the case "
-      "it names ([[claim]] in the case file): for each backend the verdict over its whole dt "
-      "sweep (holds, fails, or holds only below some dt), and the two numbers compared at "
-      "report_dt. Computed by the program from the case files; nothing here is written by "
-      "hand.\n\n";
+      "# Claims ledger\n\nSentences of the course text, each quoted beside the claim that "
+      "checks it by numbers from the case it names ([[claim]] in the case file); a claim the "
+      "text does not make is marked as the case's own. For each backend the verdict over its "
+      "whole dt sweep: holds, fails, holds for dt <= X (only at the small steps), holds for "
+      "dt >= X (only at the large ones, as a claim that a method goes wrong at a game's step "
+      "should), holds at some dts only, or not measured (with why). Runs that diverged are named; "
+      "where the claim says so, a divergence counts as evidence for it (a claim that "
+      "something explodes) or against it. The two numbers are those compared at report_dt, "
+      "and a known cause of a verdict other than holds is named. Computed by the program "
+      "from the case files; nothing here is written by hand.\n\n";
   if (count == 0) return page + "No case of this suite has a claim yet.\n";
-  page += fmt::format("{} claims; {} of them fail or hold only in part for some backend.\n\n",
-                      count, failing);
+  page += fmt::format(
+      "{} claims ({} from the course text, {} the cases' own); {} of them fail or hold only in "
+      "part for some backend; of the others, {} have a backend that diverged at some dt "
+      "without bearing on the claim, or that could not be measured (neither holds nor fails "
+      "there: counted apart).\n\n",
+      count, count - own, own, failing, neither);
   return page + render_markdown(t);
 }
 

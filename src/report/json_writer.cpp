@@ -93,9 +93,13 @@ Json results_json(const CaseResults& results) {
     for (const ClaimVerdict& v : c.verdicts)
       verdicts[v.backend] = {{"verdict", v.verdict},
                              {"left", optional_json(v.left)},
-                             {"right", optional_json(v.right)}};
-    j["claims"].push_back(
-        {{"text", c.claim->text}, {"seed", c.claim->seed}, {"verdicts", verdicts}});
+                             {"right", optional_json(v.right)},
+                             {"cause", v.cause}};
+    j["claims"].push_back({{"text", c.claim->text},
+                           {"seed", c.claim->seed},
+                           {"quote", c.claim->quote},
+                           {"own", c.claim->own},
+                           {"verdicts", verdicts}});
   }
   j["stability"] = Json::object();
   for (const StabilityResult& r : results.stability)

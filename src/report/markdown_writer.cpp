@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "report/claims_page.hpp"
 #include "report/format.hpp"
 #include "report/markdown_text.hpp"
 #include "report/scene_description.hpp"
@@ -135,6 +136,15 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
                  "each flip), every backend over the reference.\n\n";
     out += "![rotation](" + plots.rotation + ")\n";
   }
+
+  const Table claims = case_claims_table(results);
+  if (!claims.rows.empty())
+    out +=
+        "\n## Claims\n\nThe sentences of the course text this case checks, each with the "
+        "words it quotes (or marked as the case's own), and every backend's verdict over the dt "
+        "sweep with the two numbers compared at report_dt; a report's claims ledger has every "
+        "case's.\n\n" +
+        render_markdown(claims);
 
   out += sweep_markdown(results, plots.sweep);
 

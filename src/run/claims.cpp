@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "run/claim_causes.hpp"
+#include "scene/metric_names.hpp"
 #include "scene/text.hpp"
 
 namespace bb {
@@ -26,57 +28,87 @@ const RunRecord* run_at(const CaseResults& results, const std::string& backend,
   return nullptr;
 }
 
-/// The value of one side of a claim, for the backend being judged at `dt`.
-std::optional<double> side_value(const CaseResults& results, const ClaimSide& side,
-                                 const std::string& judged, std::optional<double> dt) {
+/// The value of one side of a claim, for the backend being judged at `dt`: the quantity,
+/// or with compare = "error" its distance from the reference's.
+std::optional<double> side_value(const CaseResults& results, const Claim& claim,
+                                 const ClaimSide& side, const std::string& judged,
+                                 std::optional<double> dt) {
   if (side.is_number()) return side.number;
   const std::string backend = side.backend == "*" ? judged : side.backend;
   const RunRecord* run = run_at(results, backend, dt);
   // A named engine or course variant without this dt is read at report_dt.
   if (run == nullptr) run = run_at(results, backend, results.scene->report_dt);
-  return run ? run_quantity(*run, side.metric) : std::nullopt;
+  if (run == nullptr) return std::nullopt;
+  if (!claim.against_reference) return run_quantity(*run, side.metric);
+  return run->status == RunStatus::Ok ? metric_value(*run, side.metric) : std::nullopt;
+}
+
+std::string listed(const std::vector<double>& dts) {
+  std::string list;
+  for (double dt : dts) list += (list.empty() ? "" : ", ") + format_dt(dt);
+  return list;
+}
+
+/// "holds", "fails", or the steps it holds at, from the dts where it held and failed.
+std::pair<std::string, VerdictKind> core_verdict(const std::vector<double>& holding,
+                                                 const std::vector<double>& failing) {
+  if (failing.empty()) return {"holds", VerdictKind::Holds};
+  if (holding.empty()) return {"fails", VerdictKind::Fails};
+  const auto [hold_min, hold_max] = std::minmax_element(holding.begin(), holding.end());
+  const auto [fail_min, fail_max] = std::minmax_element(failing.begin(), failing.end());
+  if (*hold_max < *fail_min)
+    return {"holds for dt <= " + format_dt(*hold_max) + " s", VerdictKind::Partial};
+  // A claim that something goes wrong at a game's step holds at the large steps.
+  if (*hold_min > *fail_max)
+    return {"holds for dt >= " + format_dt(*hold_min) + " s", VerdictKind::Partial};
+  return {"holds at dt " + listed(holding) + " s only", VerdictKind::Partial};
 }
 
 ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::string& backend) {
-  ClaimVerdict v{backend, "", std::nullopt, std::nullopt};
-  std::vector<double> holding, failing, diverged;  // the dts, largest first
-  bool any = false;
+  ClaimVerdict v;
+  v.backend = backend;
+  std::vector<double> holding, failing;  // the dts, largest first
+  const RunRecord* at_report = nullptr;
   for (const RunRecord* run : runs_of(results, backend)) {
-    // A run that blew up has no numbers: the verdict says where, rather than skip it.
-    if (run->status == RunStatus::Diverged) diverged.push_back(run->dt.value_or(0.0));
-    const std::optional<double> l = side_value(results, claim.left, backend, run->dt);
-    const std::optional<double> r = side_value(results, claim.right, backend, run->dt);
-    const bool at_report = !run->dt || *run->dt == results.scene->report_dt;
-    if (at_report) v.left = l, v.right = r;
+    const bool report_row = !run->dt || *run->dt == results.scene->report_dt;
+    if (report_row) at_report = run;
+    if (run->status == RunStatus::Diverged) {
+      // A run that blew up has no numbers; the claim says whether that is evidence.
+      v.diverged.push_back(run->dt.value_or(0.0));
+      if (claim.diverged == DivergedCounts::Holds) holding.push_back(run->dt.value_or(0.0));
+      if (claim.diverged == DivergedCounts::Fails) failing.push_back(run->dt.value_or(0.0));
+      continue;
+    }
+    const std::optional<double> l = side_value(results, claim, claim.left, backend, run->dt);
+    const std::optional<double> r = side_value(results, claim, claim.right, backend, run->dt);
+    if (report_row) v.left = l, v.right = r;
     if (!l || !r) continue;
-    any = true;
     (claim_holds(claim.op, *l, *r, claim.tolerance) ? holding : failing)
         .push_back(run->dt.value_or(0.0));
   }
-  const auto listed = [](const std::vector<double>& dts) {
-    std::string list;
-    for (double dt : dts) list += (list.empty() ? "" : ", ") + format_dt(dt);
-    return list;
-  };
-  const std::string blew_up = diverged.empty() ? "" : "diverged at dt " + listed(diverged) + " s";
-  if (!any) {
+  v.diverged_judged = claim.diverged != DivergedCounts::Nothing && !v.diverged.empty();
+  const std::string blew_up =
+      v.diverged.empty() ? "" : "diverged at dt " + listed(v.diverged) + " s";
+  if (holding.empty() && failing.empty()) {
+    v.kind = VerdictKind::NotMeasured;
     v.verdict =
         "not measured (" + (blew_up.empty() ? backend + " has no value for it" : blew_up) + ")";
-    return v;
-  }
-  if (failing.empty()) {
-    v.verdict = "holds";
-  } else if (holding.empty()) {
-    v.verdict = "fails";
-  } else if (*std::max_element(holding.begin(), holding.end()) <
-             *std::min_element(failing.begin(), failing.end())) {
-    v.verdict =
-        "holds for dt <= " + format_dt(*std::max_element(holding.begin(), holding.end())) + " s";
   } else {
-    v.verdict = "holds at dt " + listed(holding) + " s only";
+    std::tie(v.verdict, v.kind) = core_verdict(holding, failing);
+    if (!blew_up.empty())
+      v.verdict += "; " + blew_up +
+                   (claim.diverged == DivergedCounts::Holds   ? ", counted as holding"
+                    : claim.diverged == DivergedCounts::Fails ? ", counted as failing"
+                                                              : "");
   }
-  if (!blew_up.empty()) v.verdict += "; " + blew_up;
+  if (v.kind != VerdictKind::Holds && at_report != nullptr)
+    v.cause = known_cause(*results.scene, *at_report);
   return v;
+}
+
+bool is_error_metric(const std::string& name) {
+  const auto& names = error_metric_names();
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 }  // namespace
@@ -95,7 +127,8 @@ std::vector<ClaimResult> judge_claims(const CaseResults& results) {
     ClaimResult r{&claim, {}};
     std::vector<std::string> backends;
     if (claim.left.backend == "*") {
-      if (!results.reference_run.backend.empty()) backends.push_back("reference");
+      if (!results.reference_run.backend.empty() && judges_the_reference(claim))
+        backends.push_back("reference");
       for (const RunRecord& run : results.runs)
         if (std::find(backends.begin(), backends.end(), run.backend) == backends.end())
           backends.push_back(run.backend);
@@ -106,6 +139,24 @@ std::vector<ClaimResult> judge_claims(const CaseResults& results) {
     out.push_back(std::move(r));
   }
   return out;
+}
+
+bool judges_the_reference(const Claim& claim) {
+  if (claim.left.backend != "*") return claim.left.backend == "reference";
+  // Errors are measured against the reference, and a comparison with the reference is no
+  // comparison for the reference itself: it has nothing of its own to judge.
+  return !claim.against_reference && !is_error_metric(claim.left.metric) &&
+         claim.right.backend != "reference";
+}
+
+ClaimStanding claim_standing(const ClaimResult& claim) {
+  bool neither = false;
+  for (const ClaimVerdict& v : claim.verdicts) {
+    if (v.kind == VerdictKind::Fails || v.kind == VerdictKind::Partial) return ClaimStanding::Fails;
+    neither = neither || v.kind == VerdictKind::NotMeasured ||
+              (!v.diverged.empty() && !v.diverged_judged);
+  }
+  return neither ? ClaimStanding::Neither : ClaimStanding::Holds;
 }
 
 }  // namespace bb

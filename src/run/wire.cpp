@@ -80,7 +80,7 @@ void put(Writer& w, const EventTrace& events) {
   for (const BodyEvents& b : events.bodies) {
     put(w, b.contact_times), put(w, b.apex_heights);
     w.raw<char>(b.post_velocity.has_value());
-    if (b.post_velocity) put(w, *b.post_velocity);
+    if (b.post_velocity) put(w, *b.post_velocity), put(w, b.post_normal.value_or(Vec3::Zero()));
     w.raw(b.max_penetration);
     for (const auto& crossings : b.upward_crossings) put(w, crossings);
     put(w, b.velocity_range);
@@ -103,7 +103,7 @@ EventTrace get_events(Reader& r) {
   events.bodies.resize(r.raw<std::uint64_t>());
   for (BodyEvents& b : events.bodies) {
     b.contact_times = get_values(r), b.apex_heights = get_values(r);
-    if (r.raw<char>()) b.post_velocity = get_vec(r);
+    if (r.raw<char>()) b.post_velocity = get_vec(r), b.post_normal = get_vec(r);
     b.max_penetration = r.raw<double>();
     for (auto& crossings : b.upward_crossings) crossings = get_values(r);
     b.velocity_range = get_vec(r);

@@ -17,7 +17,11 @@ struct BodyEvents {
   /// Height of the centre above the ground at each apex after a contact, metres.
   std::vector<double> apex_heights;
   std::optional<Vec3> post_velocity;  ///< m/s, right after the body's first contact
-  double max_penetration = 0.0;       ///< metres: the deepest overlap seen (0: none)
+  /// Unit normal of that first contact, pointing away from what the body touched (the
+  /// ground, or the other body): along it, post_velocity is positive for a body that
+  /// bounced back or was pushed off.
+  std::optional<Vec3> post_normal;
+  double max_penetration = 0.0;  ///< metres: the deepest overlap seen (0: none)
   /// Per axis x, y, z: the times (s) the velocity component crossed zero upwards, for a
   /// body whose period is observed.
   std::array<std::vector<double>, 3> upward_crossings;

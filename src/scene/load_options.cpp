@@ -166,6 +166,43 @@ ClaimSide read_claim_side(TomlReader& r, const Scene& scene, const std::string& 
   return side;
 }
 
+/// `quote` and `own`: the course text's words the claim tests, or a claim of the case's own.
+void read_claim_source(TomlReader& r, Claim& c) {
+  c.own = r.boolean_or("own", false);
+  c.quote = r.string_or("quote", "");
+  if (r.has("quote") && c.quote.find_first_not_of(" \t\n\r") == std::string::npos)
+    r.fail(r.line_of("quote"), "[[claim]] 'quote' must not be empty");
+  if (c.quote.empty() && !c.own)
+    r.fail(c.line,
+           "[[claim]] needs 'quote', the course text's words it tests, or 'own = true' for a "
+           "claim the text does not make (the case's own)");
+}
+
+/// `diverged` and `compare`: what a diverged run counts as, and whether each side is read
+/// as its distance from the reference.
+void read_claim_reading(TomlReader& r, Claim& c) {
+  const std::string diverged = r.string_or("diverged", "");
+  if (diverged == "holds") {
+    c.diverged = DivergedCounts::Holds;
+  } else if (diverged == "fails") {
+    c.diverged = DivergedCounts::Fails;
+  } else if (r.has("diverged")) {
+    r.fail(r.line_of("diverged"), "[[claim]] 'diverged' is '" + diverged +
+                                      "'; known: holds (a divergence is evidence for the "
+                                      "claim), fails (evidence against it)");
+  }
+  const std::string compare = r.string_or("compare", "value");
+  if (compare != "value" && compare != "error")
+    r.fail(r.line_of("compare"), "[[claim]] 'compare' is '" + compare + "'; known: value, error");
+  c.against_reference = compare == "error";
+  // The reference's distance from itself is zero by definition: nothing to compare.
+  for (const auto& [key, side] : {std::pair{"left", &c.left}, std::pair{"right", &c.right}})
+    if (c.against_reference && side->backend == "reference")
+      r.fail(r.line_of(key), std::string("[[claim]] with compare = \"error\" reads each side "
+                                         "as its distance from the reference; '") +
+                                 key + "' names the reference itself");
+}
+
 }  // namespace
 
 void read_claims(TomlReader& root, Scene& scene) {
@@ -192,6 +229,8 @@ void read_claims(TomlReader& root, Scene& scene) {
     require_range(r, "tolerance", c.tolerance, 0.0, 0.0, true);
     if (c.op == "~" && !r.has("tolerance"))
       r.fail(r.line_of("op"), "[[claim]] with '~' needs a 'tolerance'");
+    read_claim_source(r, c);
+    read_claim_reading(r, c);
     r.finish();
     scene.claims.push_back(c);
   }

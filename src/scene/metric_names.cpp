@@ -13,6 +13,7 @@ const std::vector<std::string>& error_metric_names() {
 const std::vector<std::string>& observable_kinds() {
   static const std::vector<std::string> v = {"final_speed",
                                              "terminal_velocity",
+                                             "terminal_time",
                                              "stop_time",
                                              "stop_distance",
                                              "rest_creep",
@@ -20,6 +21,7 @@ const std::vector<std::string>& observable_kinds() {
                                              "bounce_apex",
                                              "contact_time",
                                              "post_velocity",
+                                             "post_normal_velocity",
                                              "post_angular_velocity",
                                              "period",
                                              "max_penetration",

@@ -154,14 +154,30 @@ struct ClaimSide {
   bool is_number() const { return backend.empty(); }
 };
 
+/// What a run that diverged says about a claim ([[claim]] `diverged`).
+enum class DivergedCounts {
+  Nothing,  ///< named in the verdict, not judged (the default)
+  Holds,    ///< evidence that the claim holds: a claim that something grows or explodes
+  Fails,    ///< evidence against it: a claim that something stays bounded
+};
+
 /// A sentence of the course text checked by numbers ([[claim]]): left op right.
 struct Claim {
   std::string text;
   std::string seed;  ///< the section of the course text, may be empty
+  /// The course text's own words that the claim tests (line breaks and runs of spaces may
+  /// differ); for a claim of the case's own, the words that prompted it, or "".
+  std::string quote;
+  /// The case's own claim, not the text's (`own = true`).
+  bool own = false;
   ClaimSide left;
   std::string op;  ///< "<", "<=", ">", ">=", "~" (within `tolerance`)
   ClaimSide right;
   double tolerance = 0.0;  ///< absolute, in the quantities' unit; for "~"
+  DivergedCounts diverged = DivergedCounts::Nothing;
+  /// `compare = "error"`: each side is read as its distance from the reference's value,
+  /// |x - x_reference| (an error metric is one already), not as the value itself.
+  bool against_reference = false;
   int line = 0;
 };
 

@@ -198,10 +198,24 @@ TEST(Cli, TheClaimsLedgerIsLinkedFirstAndJudgesEveryBackend) {
   std::ifstream ledger(out + "/claims.md");
   const std::string md((std::istreambuf_iterator<char>(ledger)), std::istreambuf_iterator<char>());
   EXPECT_NE(md.find("The elephant falls faster than the mouse"), std::string::npos);
+  // Each claim beside the course text's words it tests, with their section.
+  EXPECT_NE(md.find("8. Wind effects: \"And, for these bowling balls, the elephant does indeed "
+                    "fall faster.\""),
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("reference: **holds**"), std::string::npos) << md;
   EXPECT_NE(md.find("ode: **holds**"), std::string::npos) << md;
   const auto j = nlohmann::json::parse(std::ifstream(out + "/drag_fall.json"));
   EXPECT_EQ(j["claims"][0]["verdicts"]["reference"]["verdict"], "holds");
+  EXPECT_EQ(j["claims"][0]["quote"],
+            "And, for these bowling balls, the elephant does indeed fall faster.");
+  EXPECT_EQ(j["claims"][0]["own"], false);
+  // The case's page shows its own claims.
+  std::ifstream page(out + "/drag_fall.md");
+  const std::string case_md((std::istreambuf_iterator<char>(page)),
+                            std::istreambuf_iterator<char>());
+  EXPECT_NE(case_md.find("## Claims"), std::string::npos);
+  EXPECT_NE(case_md.find("The larger ball reaches its final speed later"), std::string::npos);
 }
 
 // A case with a [[sweep]]: the index lists it, its page has the sweep section with what the

@@ -30,6 +30,23 @@ TEST(EventObservables, CountedKindsReadTheNthEventOrSayHowManyThereWere) {
   EXPECT_FALSE(measure_event(of("final_speed", 0), t).has_value());
 }
 
+// post_normal_velocity has a direction: along the first contact's normal, which points away
+// from what the body touched, positive for a body that bounced back or was pushed off,
+// negative for one that went on into where the other was.
+TEST(EventObservables, PostNormalVelocityIsSignedAlongTheContactNormal) {
+  EventTrace t;
+  t.bodies.resize(3);
+  t.bodies[0].post_velocity = Vec3{3.0, 4.0, 0.0};
+  t.bodies[0].post_normal = Vec3{0.0, 1.0, 0.0};
+  t.bodies[1].post_velocity = Vec3{3.0, 4.0, 0.0};
+  t.bodies[1].post_normal = Vec3{-1.0, 0.0, 0.0};
+  EXPECT_EQ(*measure_event(of("post_normal_velocity", 0), t)->value, 4.0);
+  EXPECT_EQ(*measure_event(of("post_normal_velocity", 1), t)->value, -3.0);
+  const auto none = measure_event(of("post_normal_velocity", 2), t);
+  EXPECT_FALSE(none->value);
+  EXPECT_NE(none->note.find("touched nothing"), std::string::npos);
+}
+
 TEST(EventObservables, TheFirstCollisionsBalanceBelongsToItsTwoBodies) {
   EventTrace t;
   t.bodies.resize(3);

@@ -148,6 +148,33 @@ TEST(Observables, TerminalVelocityDoesNotApplyWithoutDragOrGravity) {
   }
 }
 
+// terminal_time: the first time the speed relative to the air reaches 95 % of the terminal
+// speed, placed between the two samples around it by a straight line; a run that never
+// gets there says so, and a body the terminal speed does not apply to says why.
+TEST(Observables, TerminalTimeIsWhenTheSpeedFirstReaches95PercentOfTheTerminalSpeed) {
+  const Scene scene =
+      test::scene_from(test::kMinimalCase +
+                       std::string("\n[[observe]]\nkind = \"terminal_time\"\nbody = \"ball\"\n"));
+  const double vt = *terminal_speed(scene, scene.bodies[0]).value;
+  Trajectory trajectory;
+  trajectory.times = {0.0, 1.0, 2.0, 3.0};
+  for (double speed : {0.0, 5.0, 0.96 * vt, 0.9 * vt})
+    trajectory.states.push_back({BodyState{{0, 0, 0}, {0.0, -speed, 0.0}, {}, {}}});
+  const ObservableValue v = measure(scene, scene.observes[0], trajectory, nullptr);
+  ASSERT_TRUE(v.value.has_value()) << v.note;
+  EXPECT_NEAR(*v.value, 1.0 + (0.95 * vt - 5.0) / (0.96 * vt - 5.0), 1e-12);
+  trajectory.states[2][0].velocity.y() = -0.9 * vt;
+  const ObservableValue never = measure(scene, scene.observes[0], trajectory, nullptr);
+  EXPECT_FALSE(never.value.has_value());
+  EXPECT_NE(never.note.find("never reached 95 %"), std::string::npos) << never.note;
+  std::string no_drag = test::kMinimalCase;
+  no_drag.replace(no_drag.find("drag_coefficient = 0.47"), 23, "");
+  const Scene plain =
+      test::scene_from(no_drag + "\n[[observe]]\nkind = \"terminal_time\"\nbody = \"ball\"\n");
+  EXPECT_EQ(measure(plain, plain.observes[0], trajectory, nullptr).note,
+            "does not apply: ball has no drag");
+}
+
 // final_height is the centre's height along -gravity at the end of the run, whatever the
 // direction gravity points in; without gravity it does not apply.
 TEST(Observables, FinalHeightIsTheHeightAlongMinusGravityAtTheEnd) {

@@ -103,10 +103,15 @@ restitution = 0.5
   ASSERT_EQ(truth.contact_times.size(), 1u);
   EXPECT_NEAR(truth.contact_times[0], (5.4 - 0.05 - 0.01) / 50.0, 1e-9);
   EXPECT_NEAR(truth.post_velocity->x(), -25.0, 1e-9);
+  // The contact's normal points back from the panel at the ball: it bounced back.
+  ASSERT_TRUE(truth.post_normal.has_value());
+  EXPECT_NEAR(truth.post_normal->x(), -1.0, 1e-12);
   EXPECT_TRUE(observed(scene, scene.dt[0]).bodies[0].contact_times.empty());
   const BodyEvents fine = observed(scene, scene.dt[1]).bodies[0];
   ASSERT_EQ(fine.contact_times.size(), 1u);
   EXPECT_NEAR(fine.contact_times[0], truth.contact_times[0], 1.01 * scene.dt[1]);
+  ASSERT_TRUE(fine.post_normal.has_value());
+  EXPECT_NEAR(fine.post_normal->x(), -1.0, 1e-12);
 }
 
 // A stop seen from the steps: a velocity along the ground that turns back between two

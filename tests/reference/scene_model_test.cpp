@@ -54,8 +54,11 @@ TEST(SceneModel, ADroppedBallBouncesAtTheClosedFormsTimesAndHeights) {
     EXPECT_NEAR(events.apex_heights[n], r + (h - r) * std::pow(e, 2.0 * (n + 1)), 1e-9)
         << "apex " << n + 1;
   }
-  // Right after the first contact the ball rises at e times its impact speed.
+  // Right after the first contact the ball rises at e times its impact speed, away from
+  // the ground along the contact's normal.
   EXPECT_NEAR(events.post_velocity->y(), e * v0, 1e-9);
+  ASSERT_TRUE(events.post_normal.has_value());
+  EXPECT_NEAR(events.post_normal->y(), 1.0, 1e-12);
 }
 
 TEST(SceneModel, EverSmallerBouncesEndWithTheBallRestingOnTheGround) {

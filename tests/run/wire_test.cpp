@@ -26,6 +26,8 @@ TEST(Wire, ARunRecordComesBackWhole) {
   run.position_scale = 12.5;
   run.trajectory.events.bodies.resize(2);
   run.trajectory.events.bodies[0].contact_times = {0.05};
+  run.trajectory.events.bodies[0].post_velocity = Vec3{1.0, 2.0, 0.0};
+  run.trajectory.events.bodies[0].post_normal = Vec3{0.0, -1.0, 0.0};
   run.trajectory.events.bodies[1].stop_time = 1.25;
   run.trajectory.events.bodies[1].stop_position = {2.5, 0.5, -1.0};
   run.trajectory.events.max_stretch = 0.1;
@@ -59,6 +61,8 @@ TEST(Wire, ARunRecordComesBackWhole) {
   EXPECT_EQ(back.position_scale, 12.5);
   EXPECT_EQ(back.trajectory.events.bodies.at(0).contact_times, std::vector<double>{0.05});
   EXPECT_FALSE(back.trajectory.events.bodies.at(0).stop_time.has_value());
+  EXPECT_EQ(back.trajectory.events.bodies.at(0).post_velocity, Vec3(1.0, 2.0, 0.0));
+  EXPECT_EQ(back.trajectory.events.bodies.at(0).post_normal, Vec3(0.0, -1.0, 0.0));
   EXPECT_EQ(back.trajectory.events.bodies.at(1).stop_time, 1.25);
   EXPECT_EQ(back.trajectory.events.bodies.at(1).stop_position, Vec3(2.5, 0.5, -1.0));
   EXPECT_EQ(back.trajectory.events.max_stretch, 0.1);

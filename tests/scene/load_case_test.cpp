@@ -50,6 +50,17 @@ TEST(LoadCase, EveryKeyOfTheFormatLoads) {
   EXPECT_EQ(s.observes[0].name, "bounce_apex/a/2");
   ASSERT_EQ(s.gates.size(), 1u);
   EXPECT_EQ(s.gates[0].backend, "course/rk4+mirror");
+  // Claims: the text's words and how each side is read; the case's own, and what a
+  // divergence counts as.
+  ASSERT_EQ(s.claims.size(), 2u);
+  EXPECT_EQ(s.claims[0].quote, "This makes it much better");
+  EXPECT_FALSE(s.claims[0].own);
+  EXPECT_TRUE(s.claims[0].against_reference);
+  EXPECT_EQ(s.claims[0].diverged, DivergedCounts::Nothing);
+  EXPECT_TRUE(s.claims[1].own);
+  EXPECT_EQ(s.claims[1].quote, "");
+  EXPECT_FALSE(s.claims[1].against_reference);
+  EXPECT_EQ(s.claims[1].diverged, DivergedCounts::Fails);
 }
 
 TEST(LoadCase, CourseVariantsAreNamedOnlyByWhatVaries) {
