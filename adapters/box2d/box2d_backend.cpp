@@ -12,6 +12,7 @@
 #include "box2d_contacts.hpp"
 #include "box2d_hinges.hpp"
 #include "box2d_vectors.hpp"
+#include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -181,12 +182,8 @@ class Box2dSimulation : public Simulation {
 class Box2dBackend : public Backend {
  public:
   std::string name() const override { return BB_BACKEND_NAME; }
-  FeatureSet supports() const override {
-    return {Feature::Gravity,     Feature::Drag,    Feature::Magnus,        Feature::Wind,
-            Feature::Rotation,    Feature::Boxes,   Feature::GroundContact, Feature::BodyContact,
-            Feature::Restitution, Feature::Impulse, Feature::Springs,       Feature::Friction,
-            Feature::Hinge};
-  }
+  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
+  FeatureSet supports() const override { return catalogue_supports(name()); }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `box2d` wherever the scene has no springs: it takes part only
   /// where it has.

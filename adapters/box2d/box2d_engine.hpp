@@ -6,6 +6,14 @@
 
 namespace bb {
 
+/// Everything but 3D: Box2D is a 2D engine.
+inline FeatureSet box2d_supports() {
+  return {Feature::Gravity,     Feature::Drag,    Feature::Magnus,        Feature::Wind,
+          Feature::Rotation,    Feature::Boxes,   Feature::GroundContact, Feature::BodyContact,
+          Feature::Restitution, Feature::Impulse, Feature::Springs,       Feature::Friction,
+          Feature::Hinge};
+}
+
 inline EngineDescription box2d_engine() {
   const std::string e = "box2d";
   return {e,
@@ -21,7 +29,8 @@ inline EngineDescription box2d_engine() {
             "continuous collision between moving bodies (b2BodyDef::bullet; Box2D's default "
             "is off)"}},
           true,
-          {{"box2d/force", {Feature::Springs}}}};
+          {{"box2d/force", {Feature::Springs}}},
+          {{"box2d", box2d_supports()}, {"box2d/force", box2d_supports()}}};
 }
 
 }  // namespace bb

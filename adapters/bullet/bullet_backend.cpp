@@ -17,6 +17,7 @@
 #include "bullet_settings.hpp"
 #include "bullet_springs.hpp"
 #include "bullet_vectors.hpp"
+#include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -249,12 +250,8 @@ class BulletSimulation : public Simulation {
 class BulletBackend : public Backend {
  public:
   std::string name() const override { return BB_BULLET_NAME; }
-  FeatureSet supports() const override {
-    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
-            Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
-            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
-            Feature::Friction,    Feature::Hinge};
-  }
+  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
+  FeatureSet supports() const override { return catalogue_supports(name()); }
   FeatureSet needs() const override {
     return kSpringsByHand ? FeatureSet{Feature::Springs} : FeatureSet{};
   }

@@ -8,6 +8,14 @@
 
 namespace bb {
 
+/// Every feature: the rigid-body builds.
+inline FeatureSet bullet_rigid_supports() {
+  return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
+          Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
+          Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
+          Feature::Friction,    Feature::Hinge};
+}
+
 inline EngineDescription bullet_engine() {
   const std::string e = "bullet";
   return {e,
@@ -36,7 +44,13 @@ inline EngineDescription bullet_engine() {
             "what the step can hold (Bullet's default)"}},
           true,
           {{"bullet/force", FeatureSet{Feature::Springs}},
-           {"bullet-softbody", FeatureSet{Feature::Springs}}}};
+           {"bullet-softbody", FeatureSet{Feature::Springs}}},
+          {{"bullet", bullet_rigid_supports()},
+           {"bullet-float", bullet_rigid_supports()},
+           {"bullet/force", bullet_rigid_supports()},
+           // One soft body of point masses and springs: no shapes, no contacts, no air.
+           {"bullet-softbody",
+            FeatureSet{Feature::ThreeD, Feature::Gravity, Feature::Springs, Feature::Impulse}}}};
 }
 
 }  // namespace bb

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bullet_vectors.hpp"
+#include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
 
@@ -165,9 +166,8 @@ class SoftBodyBackend : public Backend {
  public:
   std::string name() const override { return "bullet-softbody"; }
   /// Points on springs under gravity, pushed by impulses: no contacts, no spin, no air.
-  FeatureSet supports() const override {
-    return {Feature::ThreeD, Feature::Gravity, Feature::Springs, Feature::Impulse};
-  }
+  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
+  FeatureSet supports() const override { return catalogue_supports(name()); }
   FeatureSet needs() const override { return {Feature::Springs}; }
   std::pair<std::string, std::string> library_version() const override {
     const int v = btGetVersion();

@@ -15,6 +15,7 @@
 #include "../point_body.hpp"
 #include "ode_contacts.hpp"
 #include "ode_hinges.hpp"
+#include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
@@ -317,12 +318,8 @@ class OdeSimulation : public Simulation {
 class OdeBackend : public Backend {
  public:
   std::string name() const override { return BB_BACKEND_NAME; }
-  FeatureSet supports() const override {
-    return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
-            Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
-            Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
-            Feature::Friction,    Feature::Hinge};
-  }
+  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
+  FeatureSet supports() const override { return catalogue_supports(name()); }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `ode` wherever the scene has no springs: it takes part only where
   /// it has.

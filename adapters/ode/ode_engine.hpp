@@ -6,6 +6,14 @@
 
 namespace bb {
 
+/// Every feature.
+inline FeatureSet ode_supports() {
+  return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
+          Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
+          Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
+          Feature::Friction,    Feature::Hinge};
+}
+
 inline EngineDescription ode_engine() {
   const std::string e = "ode";
   return {e,
@@ -26,7 +34,8 @@ inline EngineDescription ode_engine() {
             "depth contacts may sink before ERP pushes them out, m "
             "(dWorldSetContactSurfaceLayer; ODE's default)"}},
           true,
-          {{"ode/force", {Feature::Springs}}}};
+          {{"ode/force", {Feature::Springs}}},
+          {{"ode", ode_supports()}, {"ode/force", ode_supports()}}};
 }
 
 }  // namespace bb

@@ -32,6 +32,13 @@ std::string stability_page(const CaseResults& results) {
       render_markdown(stability_table(results)));
 }
 
+/// The backends a stability search of `scene` runs: those that run it, but the reference.
+std::vector<std::string> searched(const Scene& scene) {
+  std::vector<std::string> out = runnable_backend_names(scene);
+  std::erase(out, "reference");
+  return out;
+}
+
 }  // namespace
 
 int stability_command(const std::vector<std::string>& paths, const std::string& out,
@@ -45,7 +52,7 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
       if (b == "reference" || std::find(known.begin(), known.end(), b) == known.end())
         throw CaseError(scene.file, 0,
                         "--backends names '" + b + "'; the stability search runs: " +
-                            joined(known) + " (not the adaptive reference)");
+                            joined(searched(scene)) + " (not the adaptive reference)");
   }
   check_before_work(scenes, {});
   const OutputFolder folder(out);

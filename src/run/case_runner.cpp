@@ -40,8 +40,8 @@ void check_backend_names(const Scene& scene, const RunOptions& options) {
   for (const std::string& name : options.backends)
     if (std::find(known.begin(), known.end(), name) == known.end())
       throw CaseError(scene.file, 0,
-                      "--backends names '" + name +
-                          "', which this case does not run; it runs: " + joined(known));
+                      "--backends names '" + name + "', which this case does not run; it runs: " +
+                          joined(runnable_backend_names(scene)));
 }
 
 /// Per backend, its ok run at the smallest dt: the fallback reference of DESIGN.md.

@@ -12,11 +12,28 @@
 #include "run/divergence.hpp"
 #include "run/wire.hpp"
 #include "scene/backend_names.hpp"
+#include "scene/case_error.hpp"
+#include "scene/case_limits.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
 
+namespace {
+
+/// Why a trial at `dt` would pass the cap of steps every run keeps to, or "".
+std::string beyond_step_cap(const Scene& scene, double dt) {
+  const double steps = std::ceil(scene.duration / dt - 1e-9);
+  if (steps <= kMaxStepsPerRun) return "";
+  std::ostringstream m;
+  m << "not run: dt " << dt << " s over the " << scene.duration << " s duration is " << steps
+    << " steps, more than the " << kMaxStepsPerRun << " a run may take";
+  return m.str();
+}
+
+}  // namespace
+
 StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt) {
+  if (std::string why = beyond_step_cap(scene, dt); !why.empty()) return {false, why};
   try {
     const auto sim = backend.start(scene, dt);
     const DivergenceBounds bounds = divergence_bounds(scene);
@@ -116,7 +133,19 @@ std::optional<StabilityResult> unsupported(const Backend& backend, const Scene& 
 
 }  // namespace
 
+namespace {
+
+/// The search's smallest step must keep its trials within the cap (the loader sees to it for
+/// every case it loads); a scene built otherwise is refused before any trial.
+void require_search_within_cap(const Scene& scene) {
+  if (std::string why = beyond_step_cap(scene, scene.stability.dt_min); !why.empty())
+    throw CaseError(scene.file, 0, "the stability search's dt_min is too small: " + why);
+}
+
+}  // namespace
+
 StabilityResult find_stability(const Backend& backend, const Scene& scene) {
+  require_search_within_cap(scene);
   if (auto r = unsupported(backend, scene)) return *r;
   Bisection search(scene.stability.dt_min, scene.stability.dt_max);
   while (auto dt = search.next()) search.record(*dt, try_step(backend, scene, *dt));
@@ -130,6 +159,7 @@ std::vector<StabilityResult> find_stability_all(
     const Scene& scene, const Registry& registry, const std::vector<std::string>& backends,
     int jobs, const std::function<void(const std::string&)>& on_done, bool isolation,
     double timeout) {
+  require_search_within_cap(scene);
   const BackendSet set = backends_for(scene, registry);
   std::vector<const Backend*> chosen;
   for (const Backend* b : set.all)

@@ -1,6 +1,9 @@
 #include "scene/backend_names.hpp"
 
+#include <algorithm>
+
 #include "scene/engine_catalogue.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -69,6 +72,44 @@ std::vector<std::string> backend_names(const Scene& scene) {
   std::vector<std::string> out = {"reference"};
   for (const CourseVariant& v : course_variants(scene)) out.push_back(v.name);
   for (const std::string& e : engine_backend_names()) out.push_back(e);
+  return out;
+}
+
+}  // namespace bb
+
+namespace bb {
+
+FeatureSet catalogue_supports(const std::string& name) {
+  for (const EngineDescription& e : engine_catalogue())
+    if (const auto at = e.supports.find(name); at != e.supports.end()) return at->second;
+  return {};
+}
+
+std::string why_backend_cannot_run(const Scene& scene, const std::string& name) {
+  for (const EngineDescription& e : engine_catalogue()) {
+    if (std::find(e.backends.begin(), e.backends.end(), name) == e.backends.end()) continue;
+    if (!e.has_adapter) return "it has no adapter in this version of beachball";
+    const FeatureSet used = scene.features();
+    if (const auto need = e.needs.find(name); need != e.needs.end()) {
+      std::vector<std::string> absent;
+      for (Feature f : need->second.missing_from(used)) absent.push_back(feature_name(f));
+      if (!absent.empty())
+        return "it takes part only in scenes with " + joined(absent) + ", and this case has none";
+    }
+    std::vector<std::string> unsupported;
+    for (Feature f : used.missing_from(catalogue_supports(name)))
+      unsupported.push_back(feature_name(f));
+    if (!unsupported.empty()) return "it does not support " + joined(unsupported);
+    return "";
+  }
+  // The reference and the course variants run every scene.
+  return "";
+}
+
+std::vector<std::string> runnable_backend_names(const Scene& scene) {
+  std::vector<std::string> out;
+  for (const std::string& name : backend_names(scene))
+    if (why_backend_cannot_run(scene, name).empty()) out.push_back(name);
   return out;
 }
 

@@ -29,7 +29,18 @@ std::vector<std::string> engine_backend_names();
 
 /// Every course variant the case asks for, in a stable order.
 std::vector<CourseVariant> course_variants(const Scene& scene);
-/// Every backend name the case could run: reference, course variants, engines.
+/// Every backend name the case could be asked to run: reference, course variants, engines
+/// (those without an adapter, or that cannot run the scene, among them: asked for by name,
+/// they get a row that says why).
 std::vector<std::string> backend_names(const Scene& scene);
+
+/// Why backend `name` cannot run `scene` ("it does not support 3d", "it takes part only in
+/// scenes with springs, and this case has none", "it has no adapter in this version of
+/// beachball"), from the engines' descriptions; "" when it can. The reference and the course
+/// variants run every scene.
+std::string why_backend_cannot_run(const Scene& scene, const std::string& name);
+
+/// The backends of backend_names() that run `scene`, in the same order.
+std::vector<std::string> runnable_backend_names(const Scene& scene);
 
 }  // namespace bb

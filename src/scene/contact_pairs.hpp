@@ -21,8 +21,10 @@ struct ContactPair {
   bool ground() const { return b < 0; }
 };
 
-/// Every pair that can touch, the ground's first, in a fixed order. A pair named by several
-/// [[contact]] entries takes the first; two fixed bodies never touch.
+/// Every pair that can touch in a fixed order: the ground's first, then the pairs [[contact]]
+/// entries name one by one, then those ["*"] adds. A pair named by itself takes its own
+/// values whatever comes before or after it; two fixed bodies never touch. (The loader
+/// refuses a pair named twice.)
 std::vector<ContactPair> contact_pairs(const Scene& scene);
 
 /// Body `body`'s pair with the ground, as contact_pairs() gives it; nullopt when the scene

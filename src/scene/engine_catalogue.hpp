@@ -32,7 +32,14 @@ struct EngineDescription {
   /// Per backend name, the features a scene must use for it to take part (Backend::needs
   /// of its plugin, known here even when the plugin was not built); absent: none.
   std::map<std::string, FeatureSet> needs = {};
+  /// Per backend name, the features it can simulate (Backend::supports of its plugin, which
+  /// returns this); known here so that a case naming a backend that cannot run it is refused
+  /// at load, built or not.
+  std::map<std::string, FeatureSet> supports = {};
 };
+
+/// What backend `name` of the catalogue supports (none for a name it does not know).
+FeatureSet catalogue_supports(const std::string& name);
 
 /// Every engine the adapters describe, in the adapters' CMake order.
 const std::vector<EngineDescription>& engine_catalogue();

@@ -1,6 +1,7 @@
 // [[body]] tables of a case file.
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "scene/load_case.hpp"
 #include "scene/load_parts.hpp"
@@ -66,6 +67,18 @@ void read_orientation(TomlReader& r, const Scene& scene, Body& b) {
   if (scene.dims == 2 && (b.angular_velocity.x() != 0.0 || b.angular_velocity.y() != 0.0))
     r.fail(r.line_of("angular_velocity"),
            "a 2D body spins about z only: 'angular_velocity' must be [0, 0, wz]");
+  require_vector_range(r, "angular_velocity", b.angular_velocity, VectorKind::AngularVelocity);
+}
+
+/// A fixed body never moves: a velocity or a spin given to it would be read one way by one
+/// backend and another by the next (Box2D sends such a body off, the others hold it).
+void refuse_motion_of_fixed(const TomlReader& r, const Body& b) {
+  if (!b.fixed) return;
+  for (const auto& [key, v] : {std::pair<std::string, Vec3>{"velocity", b.velocity},
+                               {"angular_velocity", b.angular_velocity}})
+    if (!v.isZero(0.0))
+      r.fail(r.line_of(key), r.where() + " is fixed (it never moves): its '" + key +
+                                 "' must be zero, or leave 'fixed' out");
 }
 
 void read_air_coefficients(TomlReader& r, const Scene& scene, Body& b) {
@@ -79,6 +92,7 @@ void read_air_coefficients(TomlReader& r, const Scene& scene, Body& b) {
     r.fail(r.line_of("magnus"), "a point does not spin, so it feels no Magnus force");
   b.wind_force = r.vec3_or("wind_force", {});
   require_planar(r, scene, "wind_force", b.wind_force);
+  require_vector_range(r, "wind_force", b.wind_force, VectorKind::Force);
   if (b.wind_force.norm() > 0.0 && b.shape != Shape::Box)
     r.fail(r.line_of("wind_force"),
            "'wind_force' pushes a box's broad face (a panel, a wall); body '" + b.name +
@@ -111,10 +125,14 @@ void read_bodies(TomlReader& root, Scene& scene) {
     require_range(r, "mass", b.mass, 0.0, 0.0, b.fixed);
     b.position = r.vec3_or("position", {});
     require_planar(r, scene, "position", b.position);
+    require_vector_range(r, "position", b.position, VectorKind::Position);
     b.velocity = r.vec3_or("velocity", {});
     require_planar(r, scene, "velocity", b.velocity);
+    require_vector_range(r, "velocity", b.velocity, VectorKind::Velocity);
     read_orientation(r, scene, b);
+    refuse_motion_of_fixed(r, b);
     read_air_coefficients(r, scene, b);
+    refuse_ground_overlap(r, scene, b, r.line_of("position"));
     r.finish();
     scene.bodies.push_back(b);
   }

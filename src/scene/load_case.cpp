@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "scene/control_characters.hpp"
 #include "scene/load_parts.hpp"
@@ -69,6 +71,13 @@ void read_header(TomlReader& root, Scene& scene) {
     root.fail(root.line_of("name"),
               "'name' must use only a-z, 0-9 and _ (it names the output files), not '" +
                   scene.name + "'");
+  // The report's own pages sit beside the cases' (README.md on a file system that ignores
+  // case, claims.md): a case may not take their names.
+  for (const auto& [taken, page] :
+       {std::pair<const char*, const char*>{"claims", "claims.md"}, {"readme", "README.md"}})
+    if (scene.name == taken)
+      root.fail(root.line_of("name"), "'name' '" + scene.name + "' is taken by the report's " +
+                                          page + " (its page would overwrite it); rename the case");
   scene.title = root.string_or("title", scene.name);
   scene.seed = root.string_or("seed", "");
   scene.dims = root.integer("dims");
@@ -76,47 +85,56 @@ void read_header(TomlReader& root, Scene& scene) {
     root.fail(root.line_of("dims"), "'dims' must be 2 or 3, not " + std::to_string(scene.dims));
   scene.gravity = root.vec3_or("gravity", scene.gravity);
   load::require_planar(root, scene, "gravity", scene.gravity);
+  load::require_vector_range(root, "gravity", scene.gravity, VectorKind::Gravity);
 }
 
-void reject_duplicate_bodies(const TomlReader& root, const Scene& scene) {
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      if (scene.bodies[i].name == scene.bodies[j].name)
-        root.fail(scene.bodies[i].line, "body name '" + scene.bodies[i].name +
-                                            "' is used twice (first on line " +
-                                            std::to_string(scene.bodies[j].line) + ")");
-}
-
-/// Limits that protect the machine, checked before any work starts.
-void check_size(const TomlReader& root, const Scene& scene) {
-  const double bodies = static_cast<double>(scene.bodies.size());
-  const double samples = scene.duration / scene.sample;
-  if (bodies > kMaxBodies)
-    root.fail(root.line(), "the case has " + show(bodies) + " bodies; beachball runs at most " +
-                               show(kMaxBodies));
-  if (samples > kMaxSamples)
-    root.fail(root.line_of("sample"), "'duration' / 'sample' gives " + show(samples) +
-                                          " samples; at most " + show(kMaxSamples) +
-                                          " are kept per run");
-  if (samples * bodies > kMaxBodySamples)
-    root.fail(root.line_of("sample"),
-              show(samples) + " samples of " + show(bodies) + " bodies is more than the " +
-                  show(kMaxBodySamples) +
-                  " body-samples a run keeps; sample less often or shorten the run");
-  double work = 0.0;
-  for (double step : scene.dt) {
-    const double steps = scene.duration / step;
-    if (steps > kMaxStepsPerRun)
-      root.fail(root.line_of("dt"), "'dt' " + show(step) + " s over " + show(scene.duration) +
-                                        " s is " + show(steps) + " steps; a run may take at most " +
-                                        show(kMaxStepsPerRun));
-    work += steps * (bodies + static_cast<double>(scene.springs.size()));
+/// The number of points a [[sweep]] asks for, read ahead of the sweep itself: 0 without one
+/// or when its values are malformed (read_sweep names the problem).
+std::pair<double, int> sweep_points(TomlReader& root) {
+  const std::vector<const toml::table*> sweeps = root.tables("sweep");
+  if (sweeps.empty()) return {0.0, 0};
+  const toml::table& t = *sweeps.front();
+  if (const toml::array* values = t.get_as<toml::array>("values"))
+    return {values->size() <= kMaxSweepValues ? static_cast<double>(values->size()) : 0.0,
+            node_line(*values, root.line())};
+  if (const toml::array* range = t.get_as<toml::array>("range"); range && range->size() == 3) {
+    const std::optional<double> count = (*range)[2].value<double>();
+    const bool valid =
+        count && *count == std::floor(*count) && *count >= 2 && *count <= kMaxSweepValues;
+    return {valid ? *count : 0.0, node_line(*range, root.line())};
   }
-  if (work > kMaxSweepWork)
-    root.fail(root.line_of("dt"),
-              "the dt sweep would advance bodies and springs " + show(work) +
-                  " times per backend (more than " + show(kMaxSweepWork) +
-                  ", hours of work); shorten the duration, drop the finest dt or use fewer bodies");
+  return {0.0, 0};
+}
+
+/// What the case asks for, from the bodies read so far, the [grid]'s numbers and a look
+/// ahead at [[spring]], [[contact]] and [[sweep]]: nothing of the grid is built yet.
+CaseSize case_size(TomlReader& root, const Scene& scene,
+                   const std::optional<load::GridPlan>& grid) {
+  CaseSize size;
+  size.duration = scene.duration;
+  size.sample = scene.sample;
+  size.dt = scene.dt;
+  size.report_dt = scene.report_dt;
+  size.case_line = root.line();
+  size.sample_line = root.line_of("sample");
+  size.dt_line = root.line_of("dt");
+  size.bodies = static_cast<double>(scene.bodies.size());
+  for (const Body& b : scene.bodies) size.fixed_bodies += b.fixed ? 1.0 : 0.0;
+  if (grid) {
+    size.bodies += grid->counts.particles;
+    size.fixed_bodies += grid->counts.fixed;
+    size.springs += grid->counts.springs;
+  }
+  size.springs += static_cast<double>(root.tables("spring").size());
+  for (const toml::table* t : root.tables("contact")) {
+    const toml::array* bodies = t->get_as<toml::array>("bodies");
+    const bool every = bodies && bodies->size() == 1 && (*bodies)[0].value<std::string>() == "*";
+    if (every && !size.all_pairs) size.contact_line = node_line(*t, root.line());
+    size.all_pairs = size.all_pairs || every;
+    size.named_pairs += every ? 0.0 : 1.0;
+  }
+  std::tie(size.sweep_points, size.sweep_line) = sweep_points(root);
+  return size;
 }
 
 }  // namespace
@@ -140,17 +158,24 @@ Scene parse_case(std::string_view text, const std::string& file) {
   read_timing(root, scene);
   load::read_air_and_ground(root, scene);
   load::read_bodies(root, scene);
-  load::read_grid(root, scene);
+  const std::optional<load::GridPlan> grid = load::read_grid(root, scene);
+  // Every limit that numbers decide, before the grid's particles and springs are made.
+  check_case_size(file, case_size(root, scene, grid));
+  if (grid) {
+    load::expand_grid(scene, *grid);
+    for (std::size_t i = static_cast<std::size_t>(scene.grid->first_body); i < scene.bodies.size();
+         ++i)
+      load::refuse_ground_overlap(root, scene, scene.bodies[i], grid->origin_line);
+  }
   if (scene.bodies.empty()) root.fail(root.line(), "the case has no [[body]] and no [grid]");
-  reject_duplicate_bodies(root, scene);
-  load::read_contacts(root, scene);
-  load::read_springs(root, scene);
-  load::read_hinges(root, scene);
-  load::read_impulses(root, scene);
-  check_size(root, scene);
+  const load::BodyNames names(root, scene);
+  load::read_contacts(root, scene, names);
+  load::read_springs(root, scene, names);
+  load::read_hinges(root, scene, names);
+  load::read_impulses(root, scene, names);
   load::read_course(root, scene);
   load::read_engines(root, scene);
-  load::read_observes(root, scene);
+  load::read_observes(root, scene, names);
   load::read_gates(root, scene);
   load::read_claims(root, scene);
   load::read_sweep(root, scene);

@@ -1,11 +1,13 @@
 // [grid]: the spring-lattice generator of seed section 7 ("Sproing"), expanded into
 // point bodies p<i>_<j>[_<k>] and springs between lattice neighbours.
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 
 #include "scene/load_case.hpp"
 #include "scene/load_parts.hpp"
+#include "scene/text.hpp"
 
 namespace bb::load {
 
@@ -57,13 +59,42 @@ std::string particle_name(int dims, int i, int j, int k) {
   return n;
 }
 
+std::atomic<long> particles_made{0};
+
 }  // namespace
 
-void read_grid(TomlReader& root, Scene& scene) {
+}  // namespace bb::load
+
+namespace bb {
+
+GridCounts grid_counts(int dims, const std::vector<int>& size, int neighbours, bool anchored) {
+  const double nx = size[0], ny = size[1], nz = dims == 3 ? size[2] : 1;
+  GridCounts c;
+  c.particles = nx * ny * nz;
+  c.fixed = anchored ? nx * nz : 0.0;
+  for (const auto& d : load::neighbour_offsets(dims, neighbours)) {
+    const auto span = [](double n, int step) { return std::max(0.0, n - std::abs(step)); };
+    c.springs += span(nx, d[0]) * span(ny, d[1]) * span(nz, d[2]);
+    // Springs along the anchored row join two fixed particles and are left out.
+    if (anchored && d[1] == 0) c.springs -= span(nx, d[0]) * span(nz, d[2]);
+  }
+  return c;
+}
+
+long grid_particles_made() {
+  return load::particles_made.load();
+}
+
+}  // namespace bb
+
+namespace bb::load {
+
+std::optional<GridPlan> read_grid(TomlReader& root, const Scene& scene) {
   const toml::table* t = root.table("grid");
-  if (t == nullptr) return;
+  if (t == nullptr) return std::nullopt;
   TomlReader r = sub_reader(root, *t, "[grid]");
-  Grid g;
+  GridPlan plan;
+  Grid& g = plan.grid;
   g.line = r.line();
   const std::vector<double> size = r.numbers("size", static_cast<std::size_t>(scene.dims));
   long particles = 1;
@@ -93,6 +124,7 @@ void read_grid(TomlReader& root, Scene& scene) {
   require_range(r, "damping", g.damping, 0.0, 0.0);
   g.origin = r.vec3_or("origin", {});
   require_planar(r, scene, "origin", g.origin);
+  plan.origin_line = r.line_of("origin");
   g.anchored = r.string_or("anchored", "none");
   if (g.anchored != "none" && g.anchored != "top-row")
     r.fail(r.line_of("anchored"), "'anchored' must be none or top-row, not '" + g.anchored + "'");
@@ -101,9 +133,32 @@ void read_grid(TomlReader& root, Scene& scene) {
     r.fail(r.line_of("rows"), "'rows' must be down or up, not '" + g.rows + "'");
   g.jitter = r.number_or("jitter", 0.0);
   require_range(r, "jitter", g.jitter, 0.0, 0.0);
+  // The corner farthest from the origin bounds every particle's position.
+  const double row_sign = g.rows == "up" ? 1.0 : -1.0;
+  const Vec3 reach{(g.size[0] - 1) * g.spacing + g.jitter,
+                   row_sign * ((g.size[1] - 1) * g.spacing + g.jitter),
+                   scene.dims == 3 ? (g.size[2] - 1) * g.spacing + g.jitter : 0.0};
+  require_vector_range(r, "origin", g.origin, VectorKind::Position);
+  for (const double sx : {0.0, 1.0})
+    for (const double sy : {0.0, 1.0})
+      for (const double sz : {0.0, 1.0}) {
+        const Vec3 corner = g.origin + Vec3{sx * reach.x(), sy * reach.y(), sz * reach.z()};
+        if (!vector_limit_problem(VectorKind::Position, corner).empty())
+          r.fail(r.line_of("spacing"), "[grid] reaches " + short_number(corner.stableNorm()) +
+                                           " m from the origin; a position is at most " +
+                                           short_number(vector_limit(VectorKind::Position).most) +
+                                           " m");
+      }
   g.seed = static_cast<std::uint64_t>(r.integer_or("seed", 1));
   r.finish();
+  plan.counts = grid_counts(scene.dims, g.size, g.neighbours, g.anchored == "top-row");
+  return plan;
+}
 
+void expand_grid(Scene& scene, const GridPlan& plan) {
+  Grid g = plan.grid;
+  scene.bodies.reserve(scene.bodies.size() + static_cast<std::size_t>(plan.counts.particles));
+  scene.springs.reserve(scene.springs.size() + static_cast<std::size_t>(plan.counts.springs));
   // Particles: column i along +x, row j downwards from the origin (upwards with rows = "up":
   // the seed's cloth starts raised above its anchored row), layer k along +z.
   const double row_step = g.rows == "up" ? g.spacing : -g.spacing;
@@ -128,6 +183,7 @@ void read_grid(TomlReader& root, Scene& scene) {
           b.position += Vec3{jx, jy, scene.dims == 3 ? jz : 0.0} * g.jitter;
         }
         scene.bodies.push_back(b);
+        ++particles_made;
       }
   // Springs between lattice neighbours, at their undisturbed lattice distance.
   for (const auto& d : neighbour_offsets(scene.dims, g.neighbours))

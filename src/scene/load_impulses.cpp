@@ -4,16 +4,17 @@
 #include <sstream>
 
 #include "scene/load_parts.hpp"
+#include "scene/text.hpp"
 
 namespace bb::load {
 
-void read_impulses(TomlReader& root, Scene& scene) {
+void read_impulses(TomlReader& root, Scene& scene, const BodyNames& names) {
   for (const toml::table* t : root.tables("impulse")) {
     TomlReader r = sub_reader(root, *t, "[[impulse]]");
     Impulse imp;
     imp.line = r.line();
     const std::string body = r.string("body");
-    imp.body = require_body(r, scene, body, r.line_of("body"));
+    imp.body = require_body(r, names, body, r.line_of("body"));
     if (scene.bodies[imp.body].fixed)
       r.fail(r.line_of("body"), "[[impulse]] on body '" + body + "', which is fixed");
     imp.time = r.number("time");
@@ -29,9 +30,20 @@ void read_impulses(TomlReader& root, Scene& scene) {
     }
     imp.impulse = r.vec3("impulse");
     require_planar(r, scene, "impulse", imp.impulse);
+    require_vector_range(r, "impulse", imp.impulse, VectorKind::Impulse);
+    // The push must leave the body at a speed the case format allows.
+    const double mass = scene.bodies[imp.body].mass;
+    const double kick = imp.impulse.stableNorm() / mass;
+    const VectorLimit& fastest = vector_limit(VectorKind::Velocity);
+    if (kick > fastest.most)
+      r.fail(r.line_of("impulse"),
+             "'impulse' of " + short_number(imp.impulse.stableNorm()) + " N s on body '" + body +
+                 "' (" + short_number(mass) + " kg) changes its velocity by " + short_number(kick) +
+                 " m/s; " + fastest.what + " is at most " + short_number(fastest.most) + " m/s");
     if (r.has("point")) {
       imp.point = r.vec3("point");
       require_planar(r, scene, "point", *imp.point);
+      require_vector_range(r, "point", *imp.point, VectorKind::Position);
     }
     r.finish();
     scene.impulses.push_back(imp);

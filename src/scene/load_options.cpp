@@ -1,7 +1,9 @@
 // [course], [engines.*], [[observe]] and [[gate]] of a case file.
 #include <algorithm>
+#include <unordered_set>
 
 #include "scene/backend_names.hpp"
+#include "scene/case_limits.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/metric_names.hpp"
@@ -76,7 +78,7 @@ void read_engines(TomlReader& root, Scene& scene) {
   engines.finish();
 }
 
-void read_observes(TomlReader& root, Scene& scene) {
+void read_observes(TomlReader& root, Scene& scene, const BodyNames& names) {
   for (const toml::table* t : root.tables("observe")) {
     TomlReader r = sub_reader(root, *t, "[[observe]]");
     Observe o;
@@ -93,7 +95,7 @@ void read_observes(TomlReader& root, Scene& scene) {
       o.name = o.kind;
     } else {
       const std::string body = r.string("body");
-      o.body = require_body(r, scene, body, r.line_of("body"));
+      o.body = require_body(r, names, body, r.line_of("body"));
       o.name = o.kind + "/" + body;
     }
     if (observable_is_counted(o.kind)) {
@@ -108,26 +110,36 @@ void read_observes(TomlReader& root, Scene& scene) {
   }
 }
 
-/// An error metric, or the name of one of the case's observables.
-bool is_metric(const Scene& scene, const std::string& name) {
-  return contains(error_metric_names(), name) ||
-         std::any_of(scene.observes.begin(), scene.observes.end(),
-                     [&](const Observe& o) { return o.name == name; });
+MetricNames::MetricNames(const Scene& scene) {
+  for (const std::string& m : error_metric_names()) names_.insert(m);
+  for (const Observe& o : scene.observes) names_.insert(o.name);
+}
+
+/// Fail unless `backend`, named by `key` of `r` (`what` in messages), is one `scene` runs.
+void require_runnable(const TomlReader& r, const Scene& scene, const std::string& key,
+                      const std::string& what, const std::string& backend,
+                      const std::vector<std::string>& runnable) {
+  if (contains(runnable, backend)) return;
+  const std::vector<std::string> known = backend_names(scene);
+  if (!contains(known, backend))
+    r.fail(r.line_of(key), what + " names backend '" + backend +
+                               "', which this case does not run; it runs: " + joined(runnable));
+  r.fail(r.line_of(key), what + " names backend '" + backend + "', which cannot run this case: " +
+                             why_backend_cannot_run(scene, backend) +
+                             "; it runs: " + joined(runnable));
 }
 
 void read_gates(TomlReader& root, Scene& scene) {
-  const std::vector<std::string> backends = backend_names(scene);
+  const std::vector<std::string> backends = runnable_backend_names(scene);
+  const MetricNames metrics(scene);
   for (const toml::table* t : root.tables("gate")) {
     TomlReader r = sub_reader(root, *t, "[[gate]]");
     Gate g;
     g.line = r.line();
     g.backend = r.string("backend");
-    if (!contains(backends, g.backend))
-      r.fail(r.line_of("backend"),
-             "[[gate]] names backend '" + g.backend +
-                 "', which this case does not run; it runs: " + joined(backends));
+    require_runnable(r, scene, "backend", "[[gate]]", g.backend, backends);
     g.metric = r.string("metric");
-    if (!is_metric(scene, g.metric))
+    if (!metrics.contains(g.metric))
       r.fail(r.line_of("metric"),
              "[[gate]] metric '" + g.metric + "' is neither an error metric (" +
                  joined(error_metric_names()) + ") nor an [[observe]] of this case");
@@ -143,7 +155,7 @@ namespace {
 /// One side of a [[claim]], `key` "left" or "right": a number, or
 /// "<backend or *>:<metric or observable>" naming something the case has.
 ClaimSide read_claim_side(TomlReader& r, const Scene& scene, const std::string& key,
-                          const std::vector<std::string>& backends) {
+                          const std::vector<std::string>& backends, const MetricNames& metrics) {
   ClaimSide side;
   if (r.holds_number(key)) {
     side.number = r.number(key);
@@ -156,10 +168,9 @@ ClaimSide read_claim_side(TomlReader& r, const Scene& scene, const std::string& 
                                "'; write a number or '<backend or *>:<metric or observable>'");
   side.backend = text.substr(0, colon);
   side.metric = text.substr(colon + 1);
-  if (side.backend != "*" && !contains(backends, side.backend))
-    r.fail(r.line_of(key), "[[claim]] '" + key + "' names backend '" + side.backend +
-                               "', which this case does not run; it runs: " + joined(backends));
-  if (!is_metric(scene, side.metric))
+  if (side.backend != "*")
+    require_runnable(r, scene, key, "[[claim]] '" + key + "'", side.backend, backends);
+  if (!metrics.contains(side.metric))
     r.fail(r.line_of(key), "[[claim]] '" + key + "' names '" + side.metric +
                                "', which is neither an error metric (" +
                                joined(error_metric_names()) + ") nor an [[observe]] of this case");
@@ -206,7 +217,8 @@ void read_claim_reading(TomlReader& r, Claim& c) {
 }  // namespace
 
 void read_claims(TomlReader& root, Scene& scene) {
-  const std::vector<std::string> backends = backend_names(scene);
+  const std::vector<std::string> backends = runnable_backend_names(scene);
+  const MetricNames metrics(scene);
   const std::vector<std::string> ops = {"<", "<=", ">", ">=", "~"};
   for (const toml::table* t : root.tables("claim")) {
     TomlReader r = sub_reader(root, *t, "[[claim]]");
@@ -215,11 +227,11 @@ void read_claims(TomlReader& root, Scene& scene) {
     c.text = r.string("text");
     if (c.text.empty()) r.fail(r.line_of("text"), "[[claim]] 'text' must not be empty");
     c.seed = r.string_or("seed", "");
-    c.left = read_claim_side(r, scene, "left", backends);
+    c.left = read_claim_side(r, scene, "left", backends, metrics);
     c.op = r.string("op");
     if (!contains(ops, c.op))
       r.fail(r.line_of("op"), "[[claim]] 'op' is '" + c.op + "'; known: " + joined(ops));
-    c.right = read_claim_side(r, scene, "right", backends);
+    c.right = read_claim_side(r, scene, "right", backends, metrics);
     if (c.left.is_number())
       r.fail(r.line_of("left"), "[[claim]] 'left' must name a quantity, not a number");
     if (c.right.backend == "*" && c.left.backend != "*")
@@ -236,22 +248,53 @@ void read_claims(TomlReader& root, Scene& scene) {
   }
 }
 
+namespace {
+
+/// Every trial of the stability search runs the whole duration: at dt_min it takes
+/// duration / dt_min steps, which may not pass the cap of any run. A default dt_min (a
+/// quarter of the finest dt) is raised to the cap; a dt_min the case gives (line
+/// `dt_min_line`), or a dt_max (`dt_max_line`) that leaves no step within the cap, is refused.
+void refuse_endless_trials(const TomlReader& root, Scene& scene, int dt_min_line, int dt_max_line) {
+  StabilityOptions& s = scene.stability;
+  const double shortest = scene.duration / kMaxStepsPerRun;
+  if (s.dt_min >= shortest * (1.0 - 1e-12)) return;
+  const auto refuse = [&](const std::string& key, double value, int line) {
+    root.fail(line, "'" + key + "' in [stability] is " + show(value) + " s: a trial over the " +
+                        show(scene.duration) + " s duration would take " +
+                        show(scene.duration / value) + " steps; a run may take at most " +
+                        show(kMaxStepsPerRun) + " (a step of at least " + show(shortest) + " s)");
+  };
+  if (dt_min_line > 0) refuse("dt_min", s.dt_min, dt_min_line);
+  if (s.dt_max <= shortest) refuse("dt_max", s.dt_max, dt_max_line);
+  s.dt_min = shortest;
+}
+
+}  // namespace
+
 void read_report_and_stability(TomlReader& root, Scene& scene) {
   if (const toml::table* t = root.table("report")) {
     TomlReader r = sub_reader(root, *t, "[report]");
     scene.report.metrics = r.strings_or("metrics", scene.report.metrics);
     if (scene.report.metrics.empty())
       r.fail(r.line_of("metrics"), "'metrics' in [report] must not be empty");
-    for (const std::string& m : scene.report.metrics)
-      if (!is_metric(scene, m))
+    const MetricNames known(scene);
+    std::unordered_set<std::string> listed;
+    for (const std::string& m : scene.report.metrics) {
+      if (!known.contains(m))
         r.fail(r.line_of("metrics"), "[report] metric '" + m + "' is neither an error metric (" +
                                          joined(error_metric_names()) +
                                          ") nor an [[observe]] of this case");
+      // Each metric is a diagram of its own file: the same one twice would collide.
+      if (!listed.insert(m).second)
+        r.fail(r.line_of("metrics"), "'metrics' in [report] lists '" + m +
+                                         "' twice; each gets its own diagram, name it once");
+    }
     scene.report.target = r.number_or("target", scene.report.target);
     require_range(r, "target", scene.report.target, 0.0, 0.0, false);
     r.finish();
   }
   StabilityOptions& s = scene.stability;
+  int dt_min_line = 0, dt_max_line = 0;
   if (const toml::table* t = root.table("stability")) {
     TomlReader r = sub_reader(root, *t, "[stability]");
     if (r.has("energy_factor"))
@@ -264,10 +307,12 @@ void read_report_and_stability(TomlReader& root, Scene& scene) {
     // Absent bounds stay 0 and get their defaults below.
     if (r.has("dt_min")) {
       s.dt_min = r.number("dt_min");
+      dt_min_line = r.line_of("dt_min");
       require_range(r, "dt_min", s.dt_min, 0.0, 0.0, false);
     }
     if (r.has("dt_max")) {
       s.dt_max = r.number("dt_max");
+      dt_max_line = r.line_of("dt_max");
       require_range(r, "dt_max", s.dt_max, s.dt_min, 0.0, false);
       if (s.dt_max > scene.duration)
         r.fail(r.line_of("dt_max"), "'dt_max' in [stability] is longer than the duration");
@@ -278,6 +323,7 @@ void read_report_and_stability(TomlReader& root, Scene& scene) {
   if (s.dt_min == 0.0)
     s.dt_min = std::min(scene.dt.back() / 4.0, s.dt_max > 0 ? s.dt_max / 2 : 1e300);
   if (s.dt_max == 0.0) s.dt_max = std::max(scene.duration / 4.0, 2.0 * s.dt_min);
+  refuse_endless_trials(root, scene, dt_min_line, dt_max_line);
 }
 
 }  // namespace bb::load

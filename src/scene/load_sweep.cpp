@@ -2,15 +2,16 @@
 // page says beside it.
 #include <cmath>
 
+#include "scene/case_limits.hpp"
+#include "scene/contact_pairs.hpp"
+#include "scene/initial_overlap.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/sweep_parameter.hpp"
+#include "scene/text.hpp"
 
 namespace bb::load {
 
 namespace {
-
-/// Most values one sweep may take: each is a run of the whole case per backend.
-constexpr int kMaxSweepValues = 1000;
 
 std::vector<double> read_values(TomlReader& r) {
   if (r.has("values") == r.has("range"))
@@ -36,6 +37,37 @@ std::vector<double> read_values(TomlReader& r) {
   return sweep_range(range[0], range[1], static_cast<int>(count));
 }
 
+/// A sweep of a body's position or size must not move it inside the ground or inside a
+/// body it touches by a [[contact]], at any point: the first such value is refused.
+void refuse_swept_overlaps(const TomlReader& r, const Scene& scene, const Sweep& s,
+                           const std::string& key) {
+  const std::vector<std::string> p = sweep_path_parts(s.parameter);
+  if (p[0] != "body" || !(p[2] == "position" || p[2] == "radius" || p[2] == "half_extents")) return;
+  const int index = scene.body_index(p[1]);
+  // The bodies it may touch, found once.
+  std::vector<int> partners;
+  for (const ContactPair& pair : contact_pairs(scene))
+    if (!pair.ground() && (pair.a == index || pair.b == index))
+      partners.push_back(pair.a == index ? pair.b : pair.a);
+  Scene one;
+  one.bodies = {scene.bodies[index]};
+  for (double v : s.values) {
+    set_sweep_parameter(one, s.parameter, v);
+    const Body& swept = one.bodies[0];
+    const std::string at =
+        "[[sweep]] the value " + short_number(v) + " for '" + s.parameter + "' puts ";
+    if (scene.ground && !swept.fixed)
+      if (const double depth = ground_depth(swept, *scene.ground); depth > kOverlapRounding)
+        r.fail(r.line_of(key), at + "body '" + swept.name + "' " + short_number(depth) +
+                                   " m inside the ground; no backend can resolve a start inside");
+    for (int other : partners)
+      if (const double depth = overlap_depth(swept, scene.bodies[other]); depth > kOverlapRounding)
+        r.fail(r.line_of(key), at + "bodies '" + swept.name + "' and '" + scene.bodies[other].name +
+                                   "' " + short_number(depth) +
+                                   " m inside each other, and a [[contact]] makes them touch");
+  }
+}
+
 }  // namespace
 
 void read_sweep(TomlReader& root, Scene& scene) {
@@ -58,9 +90,10 @@ void read_sweep(TomlReader& root, Scene& scene) {
   for (double v : s.values)
     if (const std::string problem = sweep_value_problem(scene, s.parameter, v); !problem.empty())
       r.fail(r.line_of(key), "[[sweep]] " + problem);
+  refuse_swept_overlaps(r, scene, s, key);
   s.published = r.string_or("published", "");
   s.onset = r.string_or("onset", "");
-  if (!s.onset.empty() && !is_metric(scene, s.onset))
+  if (!s.onset.empty() && !MetricNames(scene).contains(s.onset))
     r.fail(r.line_of("onset"), "[[sweep]] 'onset' '" + s.onset +
                                    "' is neither an error metric nor an [[observe]] of this case");
   if (r.has("onset_above") && s.onset.empty())

@@ -2,18 +2,15 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <type_traits>
 
 #include "scene/text.hpp"
+#include "scene/vector_limits.hpp"
 
 namespace bb {
 
-namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
-
-/// A path split at its dots.
-std::vector<std::string> parts_of(const std::string& path) {
+std::vector<std::string> sweep_path_parts(const std::string& path) {
   std::vector<std::string> parts;
   std::string::size_type start = 0;
   while (true) {
@@ -23,6 +20,10 @@ std::vector<std::string> parts_of(const std::string& path) {
     start = dot + 1;
   }
 }
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
 
 int component(const std::string& axis) {
   if (axis == "x") return 0;
@@ -80,6 +81,30 @@ std::pair<Vec3, Vec3> tilt_frame(const Ground& g) {
   return {up, across.normalized()};
 }
 
+/// The kind of vector a path's last part is a component of, if it is one.
+std::optional<VectorKind> swept_vector_kind(const std::vector<std::string>& p) {
+  if (component(p.back()) < 0) return std::nullopt;
+  if (p[0] == "gravity") return VectorKind::Gravity;
+  if (p[0] == "air") return VectorKind::Wind;
+  if (p[0] != "body" || p.size() != 4) return std::nullopt;
+  if (p[2] == "position") return VectorKind::Position;
+  if (p[2] == "velocity") return VectorKind::Velocity;
+  if (p[2] == "angular_velocity") return VectorKind::AngularVelocity;
+  if (p[2] == "wind_force") return VectorKind::Force;
+  return std::nullopt;  // half_extents are sizes
+}
+
+/// The whole vector whose component a path names (see swept_vector_kind).
+Vec3 swept_vector(const Scene& scene, const std::vector<std::string>& p) {
+  if (p[0] == "gravity") return scene.gravity;
+  if (p[0] == "air") return scene.air->wind;
+  const Body& b = scene.bodies[scene.body_index(p[1])];
+  if (p[2] == "position") return b.position;
+  if (p[2] == "velocity") return b.velocity;
+  if (p[2] == "angular_velocity") return b.angular_velocity;
+  return b.wind_force;
+}
+
 const char* kKnownPaths =
     "body.<name>.mass|radius|drag_coefficient|magnus, "
     "body.<name>.position|velocity|angular_velocity|half_extents|wind_force.x|y|z, "
@@ -89,7 +114,7 @@ const char* kKnownPaths =
 }  // namespace
 
 std::string sweep_path_problem(const Scene& scene, const std::string& path) {
-  const std::vector<std::string> p = parts_of(path);
+  const std::vector<std::string> p = sweep_path_parts(path);
   const bool found = (p.size() == 2 && p[0] == "ground" && p[1] == "normal" && scene.ground) ||
                      target(scene, p) != nullptr;
   if (!found) {
@@ -119,7 +144,7 @@ std::string sweep_path_problem(const Scene& scene, const std::string& path) {
 }
 
 std::string sweep_value_problem(const Scene& scene, const std::string& path, double value) {
-  const std::vector<std::string> p = parts_of(path);
+  const std::vector<std::string> p = sweep_path_parts(path);
   const std::string& field = p[0] == "body" ? p[2] : p.back();
   const std::string at = "the value " + short_number(value) + " for '" + path + "'";
   if (!std::isfinite(value)) return at + " is not a finite number";
@@ -133,12 +158,26 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
     return at + " must be between 0 and 1";
   if (p[0] == "ground" && field == "normal" && std::abs(value) >= 90.0)
     return at + " is a tilt in degrees and must lie between -90 and 90";
-  (void)scene;
+  // Kinetic friction above static would push a body that stops off again.
+  if (p[0] == "ground" && (field == "friction_static" || field == "friction_kinetic")) {
+    const double mu_s = field == "friction_static" ? value : scene.ground->friction_static;
+    const double mu_k = field == "friction_kinetic" ? value : scene.ground->friction_kinetic;
+    if (mu_k > mu_s)
+      return at + " puts friction_kinetic " + short_number(mu_k) + " above friction_static " +
+             short_number(mu_s) + "; a body that stops would be pushed off again";
+  }
+  // A vector's component: the vector it makes must stay in its kind's range.
+  if (const std::optional<VectorKind> kind = swept_vector_kind(p)) {
+    Vec3 v = swept_vector(scene, p);
+    v[component(p.back())] = value;
+    if (const std::string problem = vector_limit_problem(*kind, v); !problem.empty())
+      return at + " makes a vector that " + problem;
+  }
   return "";
 }
 
 double sweep_parameter_value(const Scene& scene, const std::string& path) {
-  const std::vector<std::string> p = parts_of(path);
+  const std::vector<std::string> p = sweep_path_parts(path);
   if (p[0] == "ground" && p.size() == 2 && p[1] == "normal") {
     const auto [up, across] = tilt_frame(*scene.ground);
     return std::atan2(scene.ground->normal.dot(across), scene.ground->normal.dot(up)) / kDegree;
@@ -147,7 +186,7 @@ double sweep_parameter_value(const Scene& scene, const std::string& path) {
 }
 
 void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
-  const std::vector<std::string> p = parts_of(path);
+  const std::vector<std::string> p = sweep_path_parts(path);
   if (!(p[0] == "ground" && p.size() == 2 && p[1] == "normal")) {
     *target(scene, p) = value;
     return;

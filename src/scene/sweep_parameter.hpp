@@ -11,10 +11,15 @@
 
 namespace bb {
 
+/// A path split at its dots: "body.ball.position.y" is body, ball, position, y.
+std::vector<std::string> sweep_path_parts(const std::string& path);
+
 /// Why `path` names nothing in `scene` (with the paths it could name), or "" when it does.
 std::string sweep_path_problem(const Scene& scene, const std::string& path);
 
-/// Why `value` cannot stand at `path` (a negative mass, a restitution above 1, ...), or "".
+/// Why `value` cannot stand at `path` (a negative mass, a restitution above 1, a kinetic
+/// friction above the static one, a vector outside its range, ...), or "". Overlaps of the
+/// swept body are the loader's to find (they need the case's contacts).
 /// `path` must name something (sweep_path_problem is "").
 std::string sweep_value_problem(const Scene& scene, const std::string& path, double value);
 

@@ -118,6 +118,17 @@ TEST(Cli, UsageErrorsExitTwo) {
             2);
 }
 
+// The refusal of an unknown backend lists the backends the case runs: those that exist in
+// this build and can run it (drag_fall is 2D without springs: no mujoco, no springs by hand).
+TEST(Cli, AnUnknownBackendIsRefusedWithTheBackendsThatRunTheCase) {
+  const test::Outcome o = beachball("run " + test::source_path("cases/drag_fall.toml") +
+                                    " --backends physx --no-cost --out " + fresh_dir("usage"));
+  EXPECT_EQ(o.exit_code, 2);
+  EXPECT_NE(o.out.find("it runs: reference, course/"), std::string::npos) << o.out;
+  EXPECT_EQ(o.out.find("mujoco"), std::string::npos) << o.out;
+  EXPECT_EQ(o.out.find("ode/force"), std::string::npos) << o.out;
+}
+
 TEST(Cli, CheckFailsOnATightGateAndPassesOnALooseOne) {
   const std::string dir = fresh_dir("check");
   const auto gated = [&](double max) {

@@ -6,6 +6,7 @@
 #include "course/course_backend.hpp"
 #include "metrics/spring_modes.hpp"
 #include "metrics/stability_theory.hpp"
+#include "scene/case_error.hpp"
 #include "scene/load_case.hpp"
 #include "support/course_support.hpp"
 #include "support/test_support.hpp"
@@ -70,6 +71,65 @@ TEST(Stability, UnstableEverywhereAndStableEverywhereAreSaid) {
   const StabilityResult always = find_stability(ThresholdBackend(1e9), scene);
   EXPECT_EQ(always.status, "stable at every dt tried");
   EXPECT_EQ(*always.critical_dt, scene.stability.dt_max);
+}
+
+/// A test-only backend that counts the steps its runs take.
+class CountingBackend : public Backend {
+ public:
+  std::string name() const override { return "counting"; }
+  FeatureSet supports() const override { return {Feature::Gravity, Feature::Drag}; }
+  std::unique_ptr<Simulation> start(const Scene& scene, double) const override {
+    struct Sim : Simulation {
+      State state;
+      long* steps;
+      void step() override { ++*steps; }
+      void read(State& out) const override { out = state; }
+    };
+    auto sim = std::make_unique<Sim>();
+    sim->state.resize(scene.bodies.size());
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+      sim->state[i].position = scene.bodies[i].position;
+    sim->steps = &steps_;
+    return sim;
+  }
+  mutable long steps_ = 0;
+};
+
+// A trial keeps to the cap of steps every run keeps to (kMaxStepsPerRun): past it, it takes
+// no step and says why, and a search whose range passes it is refused before any trial.
+TEST(Stability, NoTrialPassesTheStepCapOfARun) {
+  Scene scene = searched_scene();
+  const CountingBackend counting;
+  const StabilityTrial within = try_step(counting, scene, 0.05);
+  EXPECT_TRUE(within.stable);
+  EXPECT_EQ(counting.steps_, 20);
+  counting.steps_ = 0;
+  const StabilityTrial past = try_step(counting, scene, 1e-9);
+  EXPECT_FALSE(past.stable);
+  EXPECT_NE(past.reason.find("not run"), std::string::npos) << past.reason;
+  EXPECT_EQ(counting.steps_, 0);
+  scene.stability.dt_min = 1e-9;
+  EXPECT_THROW(find_stability(counting, scene), CaseError);
+  EXPECT_EQ(counting.steps_, 0);
+}
+
+// The search's range is checked at load: a dt_min the case gives that passes the cap is
+// refused at its line (tests/bad_cases/stability_dt_min_of_billions_of_steps.toml); a
+// default one (a quarter of the finest dt) is raised to the cap.
+TEST(Stability, ADefaultSearchRangeIsRaisedToTheStepCap) {
+  const Scene scene = test::scene_from(R"(name = "long"
+dims = 2
+duration = 100.0
+sample = 0.001
+dt = [0.001, 0.00002]
+report_dt = 0.001
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+)");
+  EXPECT_NEAR(scene.stability.dt_min, 100.0 / kMaxStepsPerRun, 1e-18);
+  EXPECT_GT(scene.stability.dt_max, scene.stability.dt_min);
 }
 
 using test::course;

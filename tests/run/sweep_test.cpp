@@ -47,11 +47,13 @@ CaseResults swept(const Scene& scene, bool isolation) {
 }
 
 TEST(Sweep, AParameterThatChangesNothingGivesIdenticalPoints) {
-  // The ball falls straight down: nothing slides, so friction never acts.
-  const Scene scene = test::scene_from(drop_case("restitution = 0.5\nfriction_static = 0.4", R"(
+  // The ball falls straight down: nothing slides, so friction never acts. (Static friction
+  // is swept from the kinetic one up: below it, the loader refuses the point.)
+  const Scene scene = test::scene_from(
+      drop_case("restitution = 0.5\nfriction_static = 0.4\nfriction_kinetic = 0.4", R"(
 [[sweep]]
 parameter = "ground.friction_static"
-values = [0.0, 0.4, 0.9]
+values = [0.4, 0.6, 0.9]
 )"));
   const CaseResults results = swept(scene, true);
   ASSERT_TRUE(results.sweep);
