@@ -61,10 +61,12 @@ HybridIntegrator::HybridIntegrator(HybridModel& model, const HybridOptions& opti
   if (y_.size() != n) throw std::invalid_argument("hybrid integrator: state size mismatch");
   system_ = {call_derivatives, call_jacobian, n, &model_};
   stepper_ = gsl_odeiv2_step_alloc(options.method, n);
-  control_ = gsl_odeiv2_control_y_new(options.absolute_tolerance, options.relative_tolerance);
+  control_ = gsl_odeiv2_control_standard_new(options.absolute_tolerance, options.relative_tolerance,
+                                             1.0, options.derivative_weight);
   evolve_ = gsl_odeiv2_evolve_alloc(n);
-  refine_ = gsl_odeiv2_driver_alloc_y_new(&system_, options.method, 1e-6,
-                                          options.absolute_tolerance, options.relative_tolerance);
+  refine_ = gsl_odeiv2_driver_alloc_standard_new(
+      &system_, options.method, 1e-6, options.absolute_tolerance, options.relative_tolerance, 1.0,
+      options.derivative_weight);
   if (!stepper_ || !control_ || !evolve_ || !refine_)
     throw std::runtime_error("GSL could not allocate the hybrid integrator");
   // Multistep methods (msbdf) read their tolerances through a driver; the others ignore it.

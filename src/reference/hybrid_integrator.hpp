@@ -41,6 +41,9 @@ struct HybridOptions {
   const gsl_odeiv2_step_type* method = gsl_odeiv2_step_rk8pd;
   double absolute_tolerance = 1e-10;
   double relative_tolerance = 1e-10;
+  /// The weight of h |y'| in each value's error allowance, abs + rel (|y| + weight h |y'|)
+  /// (GSL's a_dydt); 0 keeps the error within abs + rel |y| (GSL's y control).
+  double derivative_weight = 0.0;
   /// Largest internal step, seconds; 0: no limit.
   double max_step = 0.0;
   /// Events are placed to within this many seconds.
