@@ -42,6 +42,13 @@ double spring_pair_extension(double m1, double m2, double k, double c, double x0
   return x0 * (r2 * std::exp(r1 * t) - r1 * std::exp(r2 * t)) / (r2 - r1);
 }
 
+double spring_pair_largest_extension(double m1, double m2, double k, double c, double v0) {
+  const double mu = m1 * m2 / (m1 + m2);
+  const double g = 0.5 * c / mu, w = std::sqrt(k / mu - g * g);
+  const double t = std::atan2(w, g) / w;
+  return v0 / w * std::exp(-g * t) * std::sin(w * t);
+}
+
 double spring_pair_period(double m1, double m2, double k) {
   return 2.0 * std::numbers::pi * std::sqrt(m1 * m2 / (m1 + m2) / k);
 }

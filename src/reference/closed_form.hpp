@@ -20,6 +20,12 @@ double fall_distance(double vt, double g, double t);
 /// x'' = -(k / mu) x - (c / mu) x'. Underdamped, critically damped or overdamped.
 double spring_pair_extension(double m1, double m2, double k, double c, double x0, double t);
 
+/// The largest extension (m) of two masses on a spring that start at its rest length,
+/// moving apart along it at relative speed v0 (m/s), underdamped: its first peak,
+/// v0 / w_d exp(-g t*) sin(w_d t*), g = c / (2 mu), w_d = sqrt(k / mu - g^2), at
+/// t* = atan(w_d / g) / w_d (pi / (2 w_d) undamped).
+double spring_pair_largest_extension(double m1, double m2, double k, double c, double v0);
+
 /// Period (s) of the undamped pair: 2 pi sqrt(mu / k).
 double spring_pair_period(double m1, double m2, double k);
 

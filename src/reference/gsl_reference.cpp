@@ -7,6 +7,7 @@
 
 #include "reference/air_force_jacobian.hpp"
 #include "reference/hybrid_integrator.hpp"
+#include "reference/peak_watch.hpp"
 #include "reference/scene_model.hpp"
 #include "reference/sliding_modes.hpp"
 #include "scene/text.hpp"
@@ -25,8 +26,7 @@ struct Methods {
 };
 
 Methods methods(ReferenceSolver solver) {
-  if (solver == ReferenceSolver::Check)
-    return {gsl_odeiv2_step_rkck, gsl_odeiv2_step_bsimp, 1.0};
+  if (solver == ReferenceSolver::Check) return {gsl_odeiv2_step_rkck, gsl_odeiv2_step_bsimp, 1.0};
   return {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_msbdf, 0.0};
 }
 
@@ -119,7 +119,11 @@ class ReferenceSimulation : public Simulation {
                                "again")});
     return s;
   }
-  std::optional<EventTrace> exact_events() const override { return model_->trace(); }
+  std::optional<EventTrace> exact_events() const override {
+    EventTrace trace = model_->trace();
+    if (peaks_) peaks_->fill(trace);
+    return trace;
+  }
   std::optional<long> internal_steps() const override {
     return earlier_steps_ + integrator_->steps();
   }
@@ -144,6 +148,7 @@ class ReferenceSimulation : public Simulation {
     o.absolute_tolerance = o.relative_tolerance = tolerance_;
     o.derivative_weight = methods_.derivative_weight;
     o.max_step = max_step_;
+    o.watcher = peaks_.get();
     return o;
   }
 
@@ -153,6 +158,9 @@ class ReferenceSimulation : public Simulation {
     earlier_steps_ += integrator_ ? integrator_->steps() : 0;
     integrator_.reset();
     model_ = std::make_unique<SceneModel>(scene_);
+    // The largest stretch and overlap, found between the solver's steps.
+    peaks_ = std::make_unique<PeakWatch>(scene_, model_->initial_state());
+    if (!peaks_->active()) peaks_.reset();
     integrator_ =
         std::make_unique<HybridIntegrator>(*model_, options(method), model_->initial_state());
     steps_ = 0;
@@ -209,6 +217,7 @@ class ReferenceSimulation : public Simulation {
   double max_step_;  ///< seconds, 0: none
   Methods methods_;
   std::unique_ptr<SceneModel> model_;
+  std::unique_ptr<PeakWatch> peaks_;  ///< null when no observable asks for a peak
   std::unique_ptr<HybridIntegrator> integrator_;
   bool implicit_ = false;
   std::string switch_note_;

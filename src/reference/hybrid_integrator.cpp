@@ -150,10 +150,14 @@ void HybridIntegrator::advance_to(double target) {
       if (!any || located_[k] < first) first = located_[k];
       any = true;
     }
-    if (!any) continue;
+    if (!any) {
+      if (options_.watcher) options_.watcher->span(*this, t0_, y0_.data(), t_, y_.data());
+      continue;
+    }
     // Move to the event, apply its reset map, and restart the solver from there.
     state_at(first, y_);
     t_ = first;
+    if (options_.watcher) options_.watcher->span(*this, t0_, y0_.data(), t_, y_.data());
     for (std::size_t k = 0; k < g1_.size(); ++k) {
       if (located_[k] < 0.0 || located_[k] > first + options_.event_tolerance) continue;
       model_.apply(k, t_, y_.data());
