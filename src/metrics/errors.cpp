@@ -53,4 +53,19 @@ double max_position_difference(const Trajectory& a, const Trajectory& b) {
   return worst;
 }
 
+StateDifference max_state_difference(const Trajectory& a, const Trajectory& b) {
+  StateDifference d;
+  const std::size_t n = std::min(a.states.size(), b.states.size());
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < a.states[j].size(); ++i) {
+      const BodyState &x = a.states[j][i], &y = b.states[j][i];
+      d.position = std::max(d.position, (x.position - y.position).norm());
+      d.velocity = std::max(d.velocity, (x.velocity - y.velocity).norm());
+      // q and -q are the same turn: angularDistance takes the shorter way.
+      d.orientation = std::max(d.orientation, x.orientation.angularDistance(y.orientation));
+      d.spin = std::max(d.spin, (x.angular_velocity - y.angular_velocity).norm());
+    }
+  return d;
+}
+
 }  // namespace bb

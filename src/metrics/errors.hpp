@@ -24,4 +24,14 @@ ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory
 /// Largest position difference (m) between two trajectories on the same samples.
 double max_position_difference(const Trajectory& a, const Trajectory& b);
 
+/// The largest difference of each state component between two trajectories on the same
+/// samples (the first samples of the shorter), worst body.
+struct StateDifference {
+  double position = 0.0;     ///< m
+  double velocity = 0.0;     ///< m/s
+  double orientation = 0.0;  ///< rad: the angle of the rotation from one to the other
+  double spin = 0.0;         ///< rad/s, angular velocity
+};
+StateDifference max_state_difference(const Trajectory& a, const Trajectory& b);
+
 }  // namespace bb

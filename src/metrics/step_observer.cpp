@@ -52,7 +52,12 @@ StepObserver::StepObserver(const Scene& scene)
       stopping_.push_back(o.body);
   }
   fastest_.assign(stopping_.size(), 0.0);
-  if (watch_stretch_) trace_.max_stretch = 0.0;
+  if (watch_stretch_) {
+    trace_.max_stretch = 0.0;
+    for (int k = 0; k < static_cast<int>(scene.springs.size()); ++k)
+      if (scene.springs[k].rest_length > 0.0) stretched_.push_back(k);
+    last_stretch_.resize(stretched_.size());
+  }
 }
 
 void StepObserver::observe_swings(double t, const State& s) {
@@ -110,6 +115,22 @@ void StepObserver::observe_falls(double t, const State& s) {
   }
 }
 
+void StepObserver::observe_stretch(double h, const State& s) {
+  double& largest = *trace_.max_stretch;
+  for (std::size_t k = 0; k < stretched_.size(); ++k) {
+    const Spring& spring = scene_.springs[stretched_[k]];
+    const BodyState &a = s[spring.body_a], &b = s[spring.body_b];
+    const Stretch now =
+        spring_stretch(a.position, b.position, a.velocity, b.velocity, spring.rest_length);
+    largest = std::max(largest, now.value);
+    // Turned from growing to shrinking since the last step: the peak lies between.
+    const Stretch& before = last_stretch_[k];
+    if (!first_ && before.rate > 0.0 && now.rate < 0.0)
+      largest = std::max(largest, hermite_peak(before.value, before.rate, now.value, now.rate, h));
+    last_stretch_[k] = now;
+  }
+}
+
 void StepObserver::observe(double t, const State& s) {
   if (!active()) return;
   const double dt = t - previous_t_;
@@ -124,13 +145,7 @@ void StepObserver::observe(double t, const State& s) {
     high_[k] = high_[k].cwiseMax(v);
     trace_.bodies[swinging_[k]].velocity_range = high_[k] - low_[k];
   }
-  if (watch_stretch_)
-    for (const Spring& spring : scene_.springs) {
-      if (spring.rest_length <= 0.0) continue;
-      const double length = (s[spring.body_b].position - s[spring.body_a].position).norm();
-      trace_.max_stretch =
-          std::max(*trace_.max_stretch, (length - spring.rest_length) / spring.rest_length);
-    }
+  if (watch_stretch_) observe_stretch(dt, s);
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const ContactPair& pair = pairs_[k];
     const int b = pair.ground() ? pair.a : pair.b;
@@ -204,10 +219,12 @@ void StepObserver::observe(double t, const State& s) {
       if (scene_.bodies[i].fixed) continue;
       const bool rising = s[i].velocity.dot(n) > 0.0;
       if (!first_ && rising_[i] && !rising && bounced_[i]) {
-        // The apex lies between the two steps: the higher of them is the one seen.
+        // The apex lies between the two steps: the peak of the cubic through their heights
+        // and vertical speeds (the flight's own parabola, where nothing but gravity acts).
         const double now = (s[i].position - ground).dot(n);
         const double before = (previous_[i].position - ground).dot(n);
-        trace_.bodies[i].apex_heights.push_back(std::max(now, before));
+        trace_.bodies[i].apex_heights.push_back(
+            hermite_peak(before, previous_[i].velocity.dot(n), now, s[i].velocity.dot(n), dt));
         bounced_[i] = false;
       }
       rising_[i] = rising;

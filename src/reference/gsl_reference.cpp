@@ -7,6 +7,7 @@
 
 #include "reference/air_force_jacobian.hpp"
 #include "reference/hybrid_integrator.hpp"
+#include "reference/peak_watch.hpp"
 #include "reference/scene_model.hpp"
 #include "reference/sliding_modes.hpp"
 #include "scene/text.hpp"
@@ -16,6 +17,18 @@ namespace bb {
 namespace {
 
 const char* kEvents = "contacts located as events to 1e-12 s";
+
+/// The GSL methods and step control of a ReferenceSolver.
+struct Methods {
+  const gsl_odeiv2_step_type* smooth;  ///< explicit, while the scene is not stiff
+  const gsl_odeiv2_step_type* stiff;   ///< implicit, with the Jacobian, once it is
+  double derivative_weight;            ///< GSL's a_dydt
+};
+
+Methods methods(ReferenceSolver solver) {
+  if (solver == ReferenceSolver::Check) return {gsl_odeiv2_step_rkck, gsl_odeiv2_step_bsimp, 1.0};
+  return {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_msbdf, 0.0};
+}
 
 /// The fastest rate (1/s) at which springs move a body: for each body, the bound
 /// sqrt(2 sum k / m) on the angular frequency of the stiffest mode it takes part in
@@ -56,9 +69,14 @@ double fastest_rate(const Scene& scene, const SceneModel& model, const std::vect
 /// due at a step's start are applied first, as every backend applies them.
 class ReferenceSimulation : public Simulation {
  public:
-  ReferenceSimulation(const Scene& scene, double dt, double tolerance, double max_step)
-      : scene_(scene), dt_(dt), tolerance_(tolerance), max_step_(max_step) {
-    start_over(gsl_odeiv2_step_rk8pd);
+  ReferenceSimulation(const Scene& scene, double dt, double tolerance, double max_step,
+                      ReferenceSolver solver)
+      : scene_(scene),
+        dt_(dt),
+        tolerance_(tolerance),
+        max_step_(max_step),
+        methods_(methods(solver)) {
+    start_over(methods_.smooth);
     check_stiffness();
   }
 
@@ -71,8 +89,9 @@ class ReferenceSimulation : public Simulation {
     } catch (const std::runtime_error& e) {
       if (implicit_) throw;
       // The explicit method failed: solve again from the start with the implicit one.
-      switch_note_ = "rk8pd failed (" + std::string(e.what()) + "); solved from t = 0 by msbdf";
-      start_over(gsl_odeiv2_step_msbdf);
+      switch_note_ = std::string(methods_.smooth->name) + " failed (" + e.what() +
+                     "); solved from t = 0 by " + methods_.stiff->name;
+      start_over(methods_.stiff);
       advance_to_step(target_step);
     }
     check_stiffness();
@@ -83,11 +102,11 @@ class ReferenceSimulation : public Simulation {
   Settings settings() const override {
     Settings s = {{"method", method()},
                   {"tolerance", tolerance_},
-                  {"event_tolerance", options(gsl_odeiv2_step_rk8pd).event_tolerance},
-                  {"stiffness_rule",
-                   "msbdf with the analytic Jacobian from where the fastest "
-                   "rate times the sample exceeds " +
-                       short_number(kStiffRateTimesSample)},
+                  {"event_tolerance", options(methods_.smooth).event_tolerance},
+                  {"stiffness_rule", std::string(methods_.stiff->name) +
+                                         " with the analytic Jacobian from where the fastest "
+                                         "rate times the sample exceeds " +
+                                         short_number(kStiffRateTimesSample)},
                   {"rest_rule", "a ground bounce whose flight would last less than " +
                                     short_number(model_->rest_flight_time()) +
                                     " s (1e-6 of a sample) leaves the body resting on the ground"}};
@@ -100,32 +119,48 @@ class ReferenceSimulation : public Simulation {
                                "again")});
     return s;
   }
-  std::optional<EventTrace> exact_events() const override { return model_->trace(); }
+  std::optional<EventTrace> exact_events() const override {
+    EventTrace trace = model_->trace();
+    if (peaks_) peaks_->fill(trace);
+    return trace;
+  }
   std::optional<long> internal_steps() const override {
     return earlier_steps_ + integrator_->steps();
   }
 
  private:
   std::string method() const {
-    if (!implicit_) return std::string("gsl_odeiv2 rk8pd, adaptive, with ") + kEvents;
-    return std::string("gsl_odeiv2 rk8pd, then msbdf with the analytic Jacobian: ") + switch_note_ +
-           "; " + kEvents;
+    const std::string control = methods_.derivative_weight > 0.0
+                                    ? ", error kept within abs + rel (|y| + " +
+                                          short_number(methods_.derivative_weight) + " h |y'|)"
+                                    : "";
+    const std::string steps =
+        max_step_ > 0.0 ? ", steps of at most " + short_number(max_step_) + " s" : "";
+    const std::string smooth = std::string("gsl_odeiv2 ") + methods_.smooth->name;
+    if (!implicit_) return smooth + ", adaptive" + control + steps + ", with " + kEvents;
+    return smooth + ", then " + methods_.stiff->name + " with the analytic Jacobian" + control +
+           steps + ": " + switch_note_ + "; " + kEvents;
   }
 
   HybridOptions options(const gsl_odeiv2_step_type* method) const {
     HybridOptions o;
     o.method = method;
     o.absolute_tolerance = o.relative_tolerance = tolerance_;
+    o.derivative_weight = methods_.derivative_weight;
     o.max_step = max_step_;
+    o.watcher = peaks_.get();
     return o;
   }
 
   /// A fresh model and integrator at t = 0 with `method`.
   void start_over(const gsl_odeiv2_step_type* method) {
-    implicit_ = method == gsl_odeiv2_step_msbdf;
+    implicit_ = method == methods_.stiff;
     earlier_steps_ += integrator_ ? integrator_->steps() : 0;
     integrator_.reset();
     model_ = std::make_unique<SceneModel>(scene_);
+    // The largest stretch and overlap, found between the solver's steps.
+    peaks_ = std::make_unique<PeakWatch>(scene_, model_->initial_state());
+    if (!peaks_->active()) peaks_.reset();
     integrator_ =
         std::make_unique<HybridIntegrator>(*model_, options(method), model_->initial_state());
     steps_ = 0;
@@ -149,14 +184,15 @@ class ReferenceSimulation : public Simulation {
     }
   }
 
-  /// Changes to msbdf, from the current state on, where the explicit method's steps would
-  /// be limited by stability rather than accuracy.
+  /// Changes to the implicit method, from the current state on, where the explicit one's
+  /// steps would be limited by stability rather than accuracy.
   void check_stiffness() {
     if (implicit_) return;
     const double rate = fastest_rate(scene_, *model_, integrator_->state());
     if (rate * scene_.sample <= kStiffRateTimesSample) return;
     const double t = integrator_->time();
-    // msbdf factors a dense Jacobian of the whole state: beyond some size, too slow to use.
+    // The implicit methods factor a dense Jacobian of the whole state: beyond some size, too
+    // slow to use.
     if (scene_.bodies.size() > kMaxImplicitBodies)
       throw BeyondExactAnswer("stiff (the fastest rate times the sample is " +
                               short_number(rate * scene_.sample) + ") with " +
@@ -171,15 +207,17 @@ class ReferenceSimulation : public Simulation {
     earlier_steps_ += integrator_->steps();
     std::vector<double> y = integrator_->state();
     integrator_.reset();
-    integrator_ = std::make_unique<HybridIntegrator>(*model_, options(gsl_odeiv2_step_msbdf),
-                                                     std::move(y), t);
+    integrator_ =
+        std::make_unique<HybridIntegrator>(*model_, options(methods_.stiff), std::move(y), t);
   }
 
   const Scene& scene_;
   double dt_;
   double tolerance_;
   double max_step_;  ///< seconds, 0: none
+  Methods methods_;
   std::unique_ptr<SceneModel> model_;
+  std::unique_ptr<PeakWatch> peaks_;  ///< null when no observable asks for a peak
   std::unique_ptr<HybridIntegrator> integrator_;
   bool implicit_ = false;
   std::string switch_note_;
@@ -205,7 +243,7 @@ std::unique_ptr<Simulation> ReferenceBackend::start(const Scene& scene, double d
   if (const std::string why = SceneModel::beyond_exact_answer(scene); !why.empty())
     throw BeyondExactAnswer(why);
   return std::make_unique<ReferenceSimulation>(scene, dt, tolerance_,
-                                               max_step_per_sample_ * scene.sample);
+                                               max_step_per_sample_ * scene.sample, solver_);
 }
 
 }  // namespace bb

@@ -61,10 +61,12 @@ HybridIntegrator::HybridIntegrator(HybridModel& model, const HybridOptions& opti
   if (y_.size() != n) throw std::invalid_argument("hybrid integrator: state size mismatch");
   system_ = {call_derivatives, call_jacobian, n, &model_};
   stepper_ = gsl_odeiv2_step_alloc(options.method, n);
-  control_ = gsl_odeiv2_control_y_new(options.absolute_tolerance, options.relative_tolerance);
+  control_ = gsl_odeiv2_control_standard_new(options.absolute_tolerance, options.relative_tolerance,
+                                             1.0, options.derivative_weight);
   evolve_ = gsl_odeiv2_evolve_alloc(n);
-  refine_ = gsl_odeiv2_driver_alloc_y_new(&system_, options.method, 1e-6,
-                                          options.absolute_tolerance, options.relative_tolerance);
+  refine_ = gsl_odeiv2_driver_alloc_standard_new(
+      &system_, options.method, 1e-6, options.absolute_tolerance, options.relative_tolerance, 1.0,
+      options.derivative_weight);
   if (!stepper_ || !control_ || !evolve_ || !refine_)
     throw std::runtime_error("GSL could not allocate the hybrid integrator");
   // Multistep methods (msbdf) read their tolerances through a driver; the others ignore it.
@@ -148,10 +150,14 @@ void HybridIntegrator::advance_to(double target) {
       if (!any || located_[k] < first) first = located_[k];
       any = true;
     }
-    if (!any) continue;
+    if (!any) {
+      if (options_.watcher) options_.watcher->span(*this, t0_, y0_.data(), t_, y_.data());
+      continue;
+    }
     // Move to the event, apply its reset map, and restart the solver from there.
     state_at(first, y_);
     t_ = first;
+    if (options_.watcher) options_.watcher->span(*this, t0_, y0_.data(), t_, y_.data());
     for (std::size_t k = 0; k < g1_.size(); ++k) {
       if (located_[k] < 0.0 || located_[k] > first + options_.event_tolerance) continue;
       model_.apply(k, t_, y_.data());

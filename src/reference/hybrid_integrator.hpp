@@ -36,17 +36,35 @@ class HybridModel {
   virtual void apply(std::size_t k, double t, double* y) = 0;
 };
 
+class HybridIntegrator;
+
+/// Told of each stretch of the solution the integrator crosses with no event inside, to
+/// find what happens between its steps (the peaks of a smooth quantity).
+class SpanWatcher {
+ public:
+  virtual ~SpanWatcher() = default;
+  /// The solution went smoothly from (t0, y0) to (t1, y1), just before any event at t1;
+  /// while this runs, `integrator.dense_state(t, out)` gives y at any t in [t0, t1].
+  virtual void span(HybridIntegrator& integrator, double t0, const double* y0, double t1,
+                    const double* y1) = 0;
+};
+
 /// How the smooth parts are solved and how precisely events are placed.
 struct HybridOptions {
   const gsl_odeiv2_step_type* method = gsl_odeiv2_step_rk8pd;
   double absolute_tolerance = 1e-10;
   double relative_tolerance = 1e-10;
+  /// The weight of h |y'| in each value's error allowance, abs + rel (|y| + weight h |y'|)
+  /// (GSL's a_dydt); 0 keeps the error within abs + rel |y| (GSL's y control).
+  double derivative_weight = 0.0;
   /// Largest internal step, seconds; 0: no limit.
   double max_step = 0.0;
   /// Events are placed to within this many seconds.
   double event_tolerance = 1e-12;
   /// Safety bound on events in one advance_to call; exceeding it throws.
   long max_events_per_advance = 1000000;
+  /// Told of every smooth span (not owned); null: none.
+  SpanWatcher* watcher = nullptr;
 };
 
 /// One located event.
@@ -78,6 +96,9 @@ class HybridIntegrator {
   long steps() const { return steps_; }
   /// Every event so far, in time order.
   const std::vector<EventRecord>& events() const { return events_; }
+  /// y at time t within the span a SpanWatcher is being told of, integrated afresh from the
+  /// span's start to the solver's tolerance.
+  void dense_state(double t, std::vector<double>& out) { state_at(t, out); }
 
  private:
   /// y at time `t` (t0_ <= t <= the step's end), integrated afresh from (t0_, y0_).

@@ -21,13 +21,24 @@ namespace {
 
 using namespace state_view;
 
-/// Euler's equations in the world frame, torque-free: I dw/dt = -w x (I w).
-Vector3d angular_acceleration(const Body& body, const Quaterniond& q, const Vector3d& omega) {
+/// Euler's torque-free equations in the body's own frame, where the inertia is diagonal:
+/// I dw/dt = -w x (I w). Integrated in the world frame instead (the same equations with
+/// I = R I_body R^T), the spin of a box flipping about its middle axis came out 1e4 times
+/// the tolerance off at 1e-10 (energy and momentum kept all the same): the orientation's
+/// error fed the spin's at every step, and the flips amplified it.
+Vector3d angular_acceleration(const Body& body, const Vector3d& body_omega) {
   const Vector3d principal = principal_inertia(body);
   if (principal.minCoeff() <= 0.0) return Vector3d::Zero();
-  const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
-  const Eigen::Matrix3d inertia = r * principal.asDiagonal() * r.transpose();
-  return inertia.ldlt().solve(-omega.cross(inertia * omega));
+  return (-body_omega.cross(principal.cwiseProduct(body_omega))).cwiseQuotient(principal);
+}
+
+/// d(angular_acceleration)/d(body_omega): I^-1 ([I w]x - [w]x I).
+Eigen::Matrix3d angular_acceleration_by_spin(const Body& body, const Vector3d& body_omega) {
+  const Vector3d principal = principal_inertia(body);
+  if (principal.minCoeff() <= 0.0) return Eigen::Matrix3d::Zero();
+  const Eigen::Matrix3d by_spin =
+      skew(principal.cwiseProduct(body_omega)) - skew(body_omega) * principal.asDiagonal();
+  return principal.cwiseInverse().asDiagonal() * by_spin;
 }
 
 }  // namespace
@@ -206,12 +217,11 @@ std::vector<double> SceneModel::initial_state() const {
   for (std::size_t i = 0; i < start.size(); ++i) {
     const BodyState& s = start[i];
     double* p = y.data() + at(static_cast<int>(i));
-    const double values[kPerBody] = {
-        s.position.x(),        s.position.y(),    s.position.z(),         s.velocity.x(),
-        s.velocity.y(),        s.velocity.z(),    s.orientation.w(),      s.orientation.x(),
-        s.orientation.y(),     s.orientation.z(), s.angular_velocity.x(), s.angular_velocity.y(),
-        s.angular_velocity.z()};
-    std::copy(values, values + kPerBody, p);
+    const double values[kPerBody - 3] = {
+        s.position.x(), s.position.y(),    s.position.z(),    s.velocity.x(),    s.velocity.y(),
+        s.velocity.z(), s.orientation.w(), s.orientation.x(), s.orientation.y(), s.orientation.z()};
+    std::copy(values, values + kPerBody - 3, p);
+    set_spin(y.data(), static_cast<int>(i), s.angular_velocity);
   }
   return y;
 }
@@ -277,22 +287,25 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
       std::fill(d, d + kPerBody, 0.0);
       continue;
     }
-    const Vector3d v = velocity(y, i), omega = spin(y, i);
+    const Vector3d v = velocity(y, i), own = body_spin(y, i);
     Vec{d} = v;
     Vec(d + 3) = accelerations_[i];
-    // Orientation: dq/dt = 1/2 (0, omega) q, with omega in the world frame.
+    // Orientation: dq/dt = 1/2 q (0, omega), with omega in the body frame.
     const Quaterniond q = orientation(y, i);
-    const Quaterniond dq = Quaterniond(0.0, omega.x(), omega.y(), omega.z()) * q;
+    const Quaterniond dq = q * Quaterniond(0.0, own.x(), own.y(), own.z());
     d[6] = 0.5 * dq.w(), d[7] = 0.5 * dq.x(), d[8] = 0.5 * dq.y(), d[9] = 0.5 * dq.z();
-    Vec(d + 10) = angular_acceleration(body, q, omega);
+    Vec(d + 10) = angular_acceleration(body, own);
     // On a hinge the body turns about the axis only: the forces at its centre act through
     // their torque about the axis, and the centre moves on a circle. (The Jacobian treats
-    // it as free: only msbdf uses that, and a hinged scene here is never stiff.)
+    // it as free: only msbdf uses that, and a hinged scene here is never stiff.) The world
+    // frame's angular acceleration is the body frame's turned: R^T alpha (the frame's own
+    // turn adds omega x omega = 0).
     if (hinge_[i]) {
-      const HingeAccelerations h = hinge_accelerations(body, q, position(y, i), omega,
+      const Quaterniond unit = q.normalized();
+      const HingeAccelerations h = hinge_accelerations(body, q, position(y, i), unit * own,
                                                        body.mass * accelerations_[i], *hinge_[i]);
       Vec(d + 3) = h.linear;
-      Vec(d + 10) = h.angular;
+      Vec(d + 10) = unit.conjugate() * h.angular;
     }
   }
 }
@@ -340,36 +353,38 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
     const Body& body = scene_.bodies[i];
     if (body.fixed) continue;
     const auto o = static_cast<Eigen::Index>(at(i));
-    const Vector3d v = velocity(y, i), omega = spin(y, i);
+    const Vector3d v = velocity(y, i), own = body_spin(y, i);
     const Quaterniond q = orientation(y, i);
+    const Eigen::Matrix3d turn = q.normalized().toRotationMatrix();
     // dx/dt = v.
     j.block<3, 3>(o, o + 3).setIdentity();
     // dv/dt = g + (F_springs + F_air(v, omega)) / m, projected onto the ground's plane while
-    // resting; the springs' part is added below.
-    const AirForceJacobian air = air_force_jacobian(scene_, body, v, omega);
+    // resting; the springs' part is added below. The air sees the world's spin R(q) w.
+    const AirForceJacobian air = air_force_jacobian(scene_, body, v, turn * own);
     const Eigen::Matrix3d project = resting_projection(i);
     j.block<3, 3>(o + 3, o + 3) = project * air.by_velocity / body.mass;
-    j.block<3, 3>(o + 3, o + 10) = project * air.by_spin / body.mass;
-    // dq/dt = 1/2 (0, omega) q: w' = -omega.q_v / 2, q_v' = (w omega + omega x q_v) / 2.
-    const Vector3d qv(q.x(), q.y(), q.z());
-    j.block<1, 3>(o + 6, o + 7) = -0.5 * omega.transpose();
-    j.block<1, 3>(o + 6, o + 10) = -0.5 * qv.transpose();
-    j.block<3, 1>(o + 7, o + 6) = 0.5 * omega;
-    j.block<3, 3>(o + 7, o + 7) = 0.5 * skew(omega);
-    j.block<3, 3>(o + 7, o + 10) = 0.5 * (q.w() * Eigen::Matrix3d::Identity() - skew(qv));
-    // Euler's equations by central differences: never the stiff part, and zero for spheres.
-    for (int c = 0; c < 7; ++c) {
-      double up[7] = {q.w(), q.x(), q.y(), q.z(), omega.x(), omega.y(), omega.z()};
-      double down[7];
-      std::copy(up, up + 7, down);
-      const double h = 1e-7 * std::max(1.0, std::abs(up[c]));
-      up[c] += h, down[c] -= h;
-      const Vector3d plus =
-          angular_acceleration(body, {up[0], up[1], up[2], up[3]}, {up[4], up[5], up[6]});
-      const Vector3d minus = angular_acceleration(body, {down[0], down[1], down[2], down[3]},
-                                                  {down[4], down[5], down[6]});
-      j.block<3, 1>(o + 10, o + 6 + c) = (plus - minus) / (2.0 * h);
+    j.block<3, 3>(o + 3, o + 10) = project * air.by_spin * turn / body.mass;
+    if (!air.by_spin.isZero()) {
+      // d(R(q) w)/dq by central differences (R of the normalised q).
+      for (int c = 0; c < 4; ++c) {
+        double up[4] = {q.w(), q.x(), q.y(), q.z()}, down[4] = {q.w(), q.x(), q.y(), q.z()};
+        const double h = 1e-7 * std::max(1.0, std::abs(up[c]));
+        up[c] += h, down[c] -= h;
+        const Vector3d plus = Quaterniond(up[0], up[1], up[2], up[3]).normalized() * own;
+        const Vector3d minus = Quaterniond(down[0], down[1], down[2], down[3]).normalized() * own;
+        j.block<3, 1>(o + 3, o + 6 + c) =
+            project * air.by_spin * (plus - minus) / (2.0 * h * body.mass);
+      }
     }
+    // dq/dt = 1/2 q (0, w): w' = -w.q_v / 2, q_v' = (q_w w + q_v x w) / 2.
+    const Vector3d qv(q.x(), q.y(), q.z());
+    j.block<1, 3>(o + 6, o + 7) = -0.5 * own.transpose();
+    j.block<1, 3>(o + 6, o + 10) = -0.5 * qv.transpose();
+    j.block<3, 1>(o + 7, o + 6) = 0.5 * own;
+    j.block<3, 3>(o + 7, o + 7) = -0.5 * skew(own);
+    j.block<3, 3>(o + 7, o + 10) = 0.5 * (q.w() * Eigen::Matrix3d::Identity() + skew(qv));
+    // Euler's equations in the body frame depend on the body's spin alone.
+    j.block<3, 3>(o + 10, o + 10) = angular_acceleration_by_spin(body, own);
   }
   add_spring_jacobian(y, dfdy);
 }

@@ -29,7 +29,7 @@ struct BeyondExactAnswer : UnsupportedScene {
 class SceneModel : public HybridModel {
  public:
   /// Values per body in the integrated state: position, velocity, orientation (w, x, y, z),
-  /// angular velocity (world frame).
+  /// angular velocity in the body's own frame (read() turns it into the world's).
   static constexpr std::size_t kPerBody = 13;
 
   explicit SceneModel(const Scene& scene);
@@ -40,8 +40,9 @@ class SceneModel : public HybridModel {
 
   std::size_t dimension() const override { return kPerBody * scene_.bodies.size(); }
   void derivatives(double t, const double* y, double* dydt) override;
-  /// Analytic in position, velocity (drag, Magnus, the resting projection) and orientation;
-  /// Euler's torque-free equations by central differences (never stiff, zero for spheres).
+  /// Analytic in position, velocity (drag, Magnus, the resting projection), orientation and
+  /// Euler's torque-free equations; the Magnus force's dependence on the orientation (through
+  /// the world's spin R(q) w) by central differences.
   void jacobian(double t, const double* y, double* dfdy, double* dfdt) override;
   /// A quarter of the time the fastest approach takes to cross the thinnest contact
   /// region (both bodies' thickness along the line of approach) of any pair not with the

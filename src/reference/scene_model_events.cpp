@@ -136,8 +136,8 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
   if (pair.friction_static > 0.0 || pair.friction_kinetic > 0.0)
     contact::friction_hit(a, b, p.point, p.normal, j, pair.friction_static, pair.friction_kinetic);
   Vec(y + at(pair.a) + 3) = a.velocity;
-  Vec(y + at(pair.a) + 10) = a.spin;
-  if (b_moves) Vec(y + at(pair.b) + 3) = b.velocity, Vec(y + at(pair.b) + 10) = b.spin;
+  set_spin(y, pair.a, a.spin);
+  if (b_moves) Vec(y + at(pair.b) + 3) = b.velocity, set_spin(y, pair.b, b.spin);
   for (int body : {pair.a, b_moves ? pair.b : -1}) {
     if (body < 0) continue;
     BodyEvents& e = trace_.bodies[body];
@@ -254,14 +254,14 @@ void SceneModel::land(const ContactPair& pair, double* y, double t) {
     e.post_velocity = Vector3d(velocity(y, i)), e.post_normal = scene_.ground->normal;
   // Newton's restitution at the landing corner: about the axis its speed is omega r.
   const double rebound = -pair.restitution * omega;
-  Vec(y + at(i) + 10) = rebound * u;
+  set_spin(y, i, rebound * u);
   Vec(y + at(i) + 3) = (rebound * u).cross(Vector3d(position(y, i)) - hinge_[i]->anchor);
   const double alpha = hinge_alpha(i, y);
   const bool short_rebound =
       alpha * rebound < 0.0 && 2.0 * std::abs(rebound / alpha) < rest_flight_time();
   if ((rebound == 0.0 || short_rebound) && pressed_into_ground(i, y, alpha)) {
     hinge_held_[i] = true;
-    Vec(y + at(i) + 10).setZero();
+    set_spin(y, i, Vector3d::Zero());
     Vec(y + at(i) + 3).setZero();
   }
 }
@@ -275,7 +275,7 @@ void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
   else
     contact::apply_impulse(scene_.bodies[i], impulse, position(y, i), orientation(y, i), v, w);
   Vec(y + at(i) + 3) = v;
-  Vec(y + at(i) + 10) = w;
+  set_spin(y, i, w);
   if (!resting_[i]) return;
   // Along the ground it rests on, the body stays on it and slides (or stays, if the push
   // was nothing along the ground).

@@ -27,8 +27,18 @@ inline Quaterniond orientation(const double* y, int i) {
   const double* q = y + at(i) + 6;
   return {q[0], q[1], q[2], q[3]};
 }
-inline ConstVec spin(const double* y, int i) {
+/// The angular velocity in the body's own frame, as the state holds it: Euler's equations
+/// are integrated there, where the inertia is constant and diagonal.
+inline ConstVec body_spin(const double* y, int i) {
   return ConstVec(y + at(i) + 10);
+}
+/// The angular velocity in the world frame (rad/s).
+inline Vector3d spin(const double* y, int i) {
+  return orientation(y, i).normalized() * Vector3d(body_spin(y, i));
+}
+/// Sets body i's angular velocity to `world` (rad/s, world frame).
+inline void set_spin(double* y, int i, const Vector3d& world) {
+  Eigen::Map<Vector3d>(y + at(i) + 10) = orientation(y, i).normalized().conjugate() * world;
 }
 
 /// Contact distance below which a second contact counts as simultaneous, metres.

@@ -71,10 +71,22 @@ Json results_json(const CaseResults& results) {
   j["versions"] = results.versions;
   // A stability search alone has no reference and no runs.
   const bool has_runs = !results.reference_run.backend.empty();
+  // The self-check: the largest difference of each state component from a second solve
+  // by another method (self_check: positions, m, as always; the others added beside it),
+  // null when there was none, with the reason.
+  const ReferenceInfo& ref = results.reference;
+  const auto check = [&](double StateDifference::*part) {
+    return ref.self_check ? Json((*ref.self_check).*part) : Json(nullptr);
+  };
   if (has_runs)
-    j["reference"] = {{"method", results.reference.method},
-                      {"tolerance", results.reference.tolerance},
-                      {"self_check", results.reference.self_check}};
+    j["reference"] = {{"method", ref.method},
+                      {"tolerance", ref.tolerance},
+                      {"self_check", check(&StateDifference::position)},
+                      {"self_check_velocity", check(&StateDifference::velocity)},
+                      {"self_check_orientation", check(&StateDifference::orientation)},
+                      {"self_check_spin", check(&StateDifference::spin)},
+                      {"self_check_method", ref.self_check_method},
+                      {"self_check_note", ref.self_check_note}};
   else
     j["reference"] = nullptr;
   j["runs"] = Json::array();

@@ -189,12 +189,19 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   out += render_markdown(sweep_table(results));
   if (!results.gates.empty()) out += "\n## Gates\n\n" + render_markdown(gate_table(results));
 
+  const ReferenceInfo& ref = results.reference;
   out += fmt::format(
-      "\n## Reference and cost\n\n- reference: {}, absolute and relative tolerance {:g}; solved "
-      "again 100 times tighter with smaller steps forced, the largest position change was "
-      "{:.3g} m (self-check)\n",
-      markdown_text(results.reference.method), results.reference.tolerance,
-      results.reference.self_check);
+      "\n## Reference and cost\n\n- reference: {}, absolute and relative tolerance {:g}\n",
+      markdown_text(ref.method), ref.tolerance);
+  if (ref.self_check)
+    out += fmt::format(
+        "- self-check: solved again 100 times tighter by another method ({}); the largest "
+        "differences from the reference were {:.3g} m in position, {:.3g} m/s in velocity, "
+        "{:.3g} rad in orientation and {:.3g} rad/s in spin\n",
+        markdown_text(ref.self_check_method), ref.self_check->position, ref.self_check->velocity,
+        ref.self_check->orientation, ref.self_check->spin);
+  else
+    out += "- self-check: none (" + markdown_text(ref.self_check_note) + ")\n";
   out +=
       "- cost: time spent in step() only, in a serial pass after the accuracy runs; each run "
       "is repeated until the timed total reaches a minimum and the median is reported\n";

@@ -160,17 +160,25 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     for (double dt : dts) jobs.push_back({b, dt});
   }
 
-  // Accuracy runs, each in its own child process: the reference, its self-check (100 times
-  // tighter with smaller steps forced) to measure the reference's own error, then every job,
-  // measured in its child (accuracy_jobs.hpp).
+  // Accuracy runs, each in its own child process: the reference, its self-check (another
+  // method, 100 times tighter, smaller steps forced) to measure the reference's own error,
+  // then every job, measured in its child (accuracy_jobs.hpp).
   const ReferenceBackend& reference = registry.reference();
   AccuracyRuns accuracy = run_accuracy_jobs(scene, reference, jobs, options, progress);
   out.reference_run = std::move(accuracy.reference);
   out.runs = std::move(accuracy.runs);
   const RunRecord& tight = accuracy.tight;
 
-  out.reference = {reference_method(out.reference_run), reference.tolerance(),
-                   max_position_difference(out.reference_run.trajectory, tight.trajectory)};
+  out.reference.method = reference_method(out.reference_run);
+  out.reference.tolerance = reference.tolerance();
+  out.reference.self_check_method = reference_method(tight);
+  if (out.reference_run.status != RunStatus::Ok)
+    out.reference.self_check_note = "no reference to check";
+  else if (tight.status != RunStatus::Ok)
+    out.reference.self_check_note =
+        "the second solve is " + status_name(tight.status) + ": " + tight.reason;
+  else
+    out.reference.self_check = max_state_difference(out.reference_run.trajectory, tight.trajectory);
   if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
     out.reference_floor = compare(scene, out.reference_run.trajectory, tight.trajectory);
     for (const Observe& o : scene.observes) {
@@ -255,8 +263,9 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     const auto own = finest.find(run.backend);
     const double scale = fallback && own != finest.end() ? own->second->position_scale
                                                          : out.reference_run.position_scale;
-    points[run.backend].push_back({*run.dt, run.errors->position_max,
-                                   error_floor(scale, out.reference.self_check, run.steps)});
+    points[run.backend].push_back(
+        {*run.dt, run.errors->position_max,
+         error_floor(scale, out.reference.self_check_position(), run.steps)});
   }
   for (const auto& [name, series] : points) {
     const OrderFit fit = fit_order(series);

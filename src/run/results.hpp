@@ -57,7 +57,14 @@ struct RunRecord {
 struct ReferenceInfo {
   std::string method;
   double tolerance = 0.0;
-  double self_check = 0.0;  ///< metres: largest position change at a 100x tighter tolerance
+  /// The self-check: the largest difference of each state component from a second solve
+  /// by another method (self_check_method), 100 times tighter; nullopt when there was
+  /// none to compare (self_check_note says why).
+  std::optional<StateDifference> self_check;
+  std::string self_check_method;
+  std::string self_check_note;
+  /// Metres: the self-check's position difference, 0 without one.
+  double self_check_position() const { return self_check ? self_check->position : 0.0; }
 };
 
 struct GateResult {

@@ -40,8 +40,12 @@ TEST(Cli, RunWritesTheContractAndPrintsEveryBackend) {
   EXPECT_EQ(j["case"], "drag_fall");
   for (const char* lib : {"beachball", "gsl", "bullet", "box2d", "ode"})
     EXPECT_TRUE(j["versions"].contains(lib)) << lib;
-  for (const char* key : {"method", "tolerance", "self_check"})
+  for (const char* key : {"method", "tolerance", "self_check", "self_check_method"})
     EXPECT_TRUE(j["reference"].contains(key)) << key;
+  // The self-check compares every state component, each a number where it was measured.
+  for (const char* key :
+       {"self_check", "self_check_velocity", "self_check_orientation", "self_check_spin"})
+    EXPECT_TRUE(j["reference"][key].is_number()) << key;
   EXPECT_TRUE(j["order"].is_object());
   EXPECT_TRUE(j["stability"].is_object());
   ASSERT_GE(j["runs"].size(), 1u + 8u * 6u);

@@ -9,6 +9,7 @@
 #include "course/course_backend.hpp"
 #include "metrics/observables.hpp"
 #include "reference/closed_form.hpp"
+#include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "scene/motion.hpp"
 #include "support/course_support.hpp"
@@ -108,6 +109,75 @@ TEST(CourseSprings, ADamperKeepsExplicitEulerUsable) {
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
   const double e0 = total_energy(scene, run.trajectory.states.front());
   EXPECT_LT(total_energy(scene, run.trajectory.states.back()), 1e-6 * e0);
+}
+
+}  // namespace
+}  // namespace bb
+
+namespace bb {
+namespace {
+
+// A damped chain of three masses, one end pushed across the chain: its largest stretch is
+// a peak that falls between the steps. RK4 measured at every step (and between them, on
+// the cubic through its steps' values and rates) converges on the reference's at RK4's
+// own order: each halving of dt divides the error by 2^4, within a factor 2^0.5. Read at
+// the samples instead, the reference's value was low by a fixed amount and the error
+// stopped shrinking.
+TEST(CourseSprings, Rk4sLargestStretchConvergesAtOrderFour) {
+  const Scene scene = test::scene_from(R"(name = "chain"
+dims = 2
+duration = 2.0
+sample = 0.1
+dt = [0.05, 0.025, 0.0125, 0.00625]
+report_dt = 0.025
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "a"
+shape = "point"
+mass = 1.0
+position = [0.0, 0.0, 0.0]
+[[body]]
+name = "b"
+shape = "point"
+mass = 1.0
+position = [1.0, 0.0, 0.0]
+[[body]]
+name = "c"
+shape = "point"
+mass = 1.0
+position = [2.0, 0.0, 0.0]
+velocity = [1.5, 0.7, 0.0]
+[[spring]]
+bodies = ["a", "b"]
+stiffness = 30.0
+damping = 0.5
+[[spring]]
+bodies = ["b", "c"]
+stiffness = 30.0
+damping = 0.5
+[[observe]]
+kind = "max_stretch"
+)");
+  const RunRecord reference = run_accuracy(ReferenceBackend(), scene, scene.sample);
+  ASSERT_EQ(reference.status, RunStatus::Ok) << reference.reason;
+  const auto value = [&](const RunRecord& run) {
+    const ObservableValue v = measure(scene, scene.observes[0], run.trajectory, nullptr);
+    EXPECT_TRUE(v.value.has_value()) << v.note;
+    return v.value.value_or(0.0);
+  };
+  const double truth = value(reference);
+  std::vector<double> errors;
+  for (double dt : scene.dt) {
+    const RunRecord run = run_accuracy(course("rk4"), scene, dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+    errors.push_back(std::abs(value(run) - truth));
+    std::printf("dt %g: max_stretch %.12g, error %.3g\n", dt, value(run), errors.back());
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i) {
+    // Ten times the reference's own error (1e-10) or more: the slope is the method's.
+    ASSERT_GT(errors[i], 1e-9) << i;
+    EXPECT_NEAR(std::log2(errors[i - 1] / errors[i]), 4.0, 0.5) << "dt " << scene.dt[i];
+  }
 }
 
 }  // namespace
