@@ -176,13 +176,14 @@ TEST(UserFiles, APlotWithNothingFiniteToDrawIsANoteNotAnAbort) {
                         " --backends reference --no-cost --out " + dir + "/crowd");
   EXPECT_EQ(o.exit_code, 0) << o.out;
   EXPECT_NE(file_bytes(dir + "/crowd/many_beachballs.md").find("finite"), std::string::npos);
-  // A finite but huge start: the energy overflows to infinity.
+  // A start so large its energy would overflow is refused at load, before any file is written.
   std::string huge = test::minimal_case("huge");
   huge.replace(huge.find("drag_coefficient"), 0, "velocity = [1e300, 0.0, 0.0]\n");
   test::write_case(dir, "huge.toml", huge);
   o = beachball("run " + dir + "/huge.toml --no-cost --out " + dir + "/huge");
-  EXPECT_EQ(o.exit_code, 0) << o.out;
-  EXPECT_TRUE(fs::exists(dir + "/huge/huge.md"));
+  EXPECT_EQ(o.exit_code, 2) << o.out;
+  EXPECT_NE(o.out.find("huge.toml:"), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists(dir + "/huge"));
   // Every run timing out.
   test::write_case(dir, "slow.toml", test::slow_case("slow"));
   o = beachball("run " + dir + "/slow.toml --backends course/rk4 --timeout 0.001 --no-cost --out " +
