@@ -115,17 +115,17 @@ std::vector<const RunRecord*> report_runs(const CaseResults& results) {
   return out;
 }
 
-std::string series_line(std::size_t i, int block, const std::string& backend) {
+std::string series_line(std::size_t i, int block, const std::string& backend, bool titled) {
   // One colour per backend on every plot of the report; the reference thick and black,
   // the course methods solid, the engines dashed (backend_style.hpp).
   const BackendStyle style = backend_style(backend);
   if (style.kind == LineKind::Reference)
-    return fmt::format("data index {} using 1:2 with lines lw 4 lc rgb \"black\" title {}", block,
-                       quote(backend));
+    return fmt::format("data index {} using 1:2 with lines lw 4 lc rgb \"black\" {}", block,
+                       titled ? "title " + quote(backend) : "notitle");
   return fmt::format(
-      "data index {} using 1:2 with linespoints lw 1.5 dt {} pt {} ps 0.6 pi 6 lc rgb \"{}\" "
-      "title {}",
-      block, style.kind == LineKind::Engine ? 2 : 1, i % 13, style.colour, quote(backend));
+      "data index {} using 1:2 with linespoints lw 1.5 dt {} pt {} ps 0.6 pi 6 lc rgb \"{}\" {}",
+      block, style.kind == LineKind::Engine ? 2 : 1, i % 13, style.colour,
+      titled ? "title " + quote(backend) : "notitle");
 }
 
 std::string series_rows(const std::vector<double>& times, const std::vector<double>& values) {

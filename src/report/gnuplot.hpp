@@ -27,8 +27,9 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
 /// Runs at report_dt that produced samples, the reference first.
 std::vector<const RunRecord*> report_runs(const CaseResults& results);
 /// The plot clause of series `i` of `backend` in data block `block`, drawn in the backend's
-/// own style (backend_style.hpp).
-std::string series_line(std::size_t i, int block, const std::string& backend);
+/// own style (backend_style.hpp); `titled` false leaves it out of the legend (a second body
+/// of the same backend on a shared panel).
+std::string series_line(std::size_t i, int block, const std::string& backend, bool titled = true);
 /// The rows "t value" of one series, thinned for drawing.
 std::string series_rows(const std::vector<double>& times, const std::vector<double>& values);
 /// Indices of the points of `values` to draw: all of them up to `max_points`, else per

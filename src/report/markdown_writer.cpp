@@ -98,8 +98,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
                        format_dt(scene.report_dt));
     out +=
         "The reference is the thick black line; a method that drifts, gains energy or sinks "
-        "leaves it.\n\n";
+        "leaves it. Each moving body is drawn as its path (y against x) where it moves both "
+        "ways in the plane, else as the coordinate that moves most against time; bodies that a "
+        "claim of the case compares share one panel and one scale, each named where the "
+        "reference's curve ends. The energy counts every spring's; a run far off the others' "
+        "scale is cut at the plot's edge, and its title says which and how far it goes.\n\n";
     if (!plots.trajectory.empty()) out += "![trajectories](" + plots.trajectory + ")\n\n";
+    if (!plots.speed.empty()) out += "![speed](" + plots.speed + ")\n\n";
     if (!plots.energy.empty()) out += "![energy](" + plots.energy + ")\n";
   }
   if (!plots.error.empty()) {
@@ -208,11 +213,20 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   out += "- versions:";
   for (const auto& [library, version] : results.versions)
     out += " " + markdown_text(library + " " + version) + ";";
-  out += "\n\n## Engine settings\n\n";
+  out += "\n";
+  // Every setting that changes an engine's results, folded away: long, and read when a
+  // number needs explaining, not on a first look.
   std::set<std::string> seen;
+  std::string settings;
   for (const RunRecord& run : results.runs)
     if (!run.engine_settings.empty() && seen.insert(run.backend).second)
-      out += "- " + markdown_text(run.backend + ": " + settings_text(run.engine_settings)) + "\n";
+      settings +=
+          "- " + markdown_text(run.backend + ": " + settings_text(run.engine_settings)) + "\n";
+  if (!settings.empty())
+    out += fmt::format(
+        "\n## Engine settings\n\n<details><summary>The settings each engine ran with ({} "
+        "backends; also in the case's JSON)</summary>\n\n{}\n</details>\n",
+        seen.size(), settings);
   return out;
 }
 

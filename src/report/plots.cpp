@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "report/backend_style.hpp"
+#include "report/body_panels.hpp"
 #include "report/gnuplot.hpp"
 #include "report/motion_view.hpp"
 #include "report/rotation_plot.hpp"
@@ -100,7 +103,36 @@ std::vector<std::size_t> plotted_slots(const Scene& scene, const std::vector<int
   return out;
 }
 
-std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
+/// The guide's last finite value of `pick` for the body at `slot`, if any.
+template <typename Pick>
+std::optional<std::pair<double, double>> last_point(const Trajectory& guide, std::size_t slot,
+                                                    Pick pick) {
+  for (std::size_t j = guide.states.size(); j-- > 0;)
+    if (slot < guide.states[j].size()) {
+      const auto [x, y] = pick(guide.times[j], guide.states[j][slot]);
+      if (std::isfinite(x) && std::isfinite(y)) return std::pair{x, y};
+    }
+  return std::nullopt;
+}
+
+/// The guide's first finite value of `pick` for the body at `slot`, if any.
+template <typename Pick>
+std::optional<std::pair<double, double>> first_point(const Trajectory& guide, std::size_t slot,
+                                                     Pick pick) {
+  for (std::size_t j = 0; j < guide.states.size(); ++j)
+    if (slot < guide.states[j].size()) {
+      const auto [x, y] = pick(guide.times[j], guide.states[j][slot]);
+      if (std::isfinite(x) && std::isfinite(y)) return std::pair{x, y};
+    }
+  return std::nullopt;
+}
+
+/// One panel per group of bodies (body_panels.hpp), every backend over the reference. With
+/// `speed`, each body's speed against time; else its path y against x where the group moves
+/// both ways in the plane, or the coordinate that moves most against time. Bodies sharing a
+/// panel are named at the end of the reference's curve.
+std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std::string& name,
+                        bool speed) {
   const Scene& scene = *results.scene;
   const auto runs = report_runs(results);
   // The reference decides what is drawn; without one, the first run that has states.
@@ -108,50 +140,131 @@ std::string trajectory_plot(const CaseResults& results, FileBatch& batch, const 
   for (const RunRecord* r : runs)
     if (guide->states.empty()) guide = &r->trajectory;
   const std::vector<int> drawn = drawn_bodies(scene);
+  const auto panels_of = body_panels(scene, drawn, plotted_slots(scene, drawn, runs, *guide));
   std::string data, script;
   int block = 0, panels = 0;
-  for (std::size_t k : plotted_slots(scene, drawn, runs, *guide)) {
-    const Vec3 range = motion_range(*guide, k);
-    // Motion in the plane that goes both ways (a bounce along a floor) is drawn as its path,
-    // y against x; anything else as the coordinate that moves most against time.
-    const bool path = scene.dims == 2 && std::min(range.x(), range.y()) > 0.05 * range.maxCoeff();
+  for (const std::vector<std::size_t>& group : panels_of) {
+    Vec3 range = Vec3::Zero();
+    bool path = !speed && scene.dims == 2;
+    for (std::size_t k : group) {
+      const Vec3 r = motion_range(*guide, k);
+      range = range.cwiseMax(r);
+      path = path && std::min(r.x(), r.y()) > 0.05 * r.maxCoeff();
+    }
     Eigen::Index axis = 1;
     range.maxCoeff(&axis);
-    const char* axis_name = axis == 0 ? "x" : axis == 1 ? "y" : "z";
-    std::string plot;
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      const Trajectory& t = runs[i]->trajectory;
-      // A run without states (a reference with no answer) draws nothing.
-      if (t.states.empty()) continue;
-      std::vector<double> across, value;
-      for (std::size_t j = 0; j < t.states.size(); ++j) {
-        const Vec3& p = t.states[j][k].position;
-        across.push_back(path ? p.x() : t.times[j]);
-        value.push_back(path ? p.y() : p[axis]);
+    // What the panel plots of a body's state at time t: (across, value).
+    const auto pick = [&](double t, const BodyState& b) {
+      if (speed) return std::pair{t, b.velocity.norm()};
+      return path ? std::pair{b.position.x(), b.position.y()} : std::pair{t, b.position[axis]};
+    };
+    std::string plot, labels, names;
+    for (std::size_t g = 0; g < group.size(); ++g) {
+      const std::size_t k = group[g];
+      for (std::size_t i = 0; i < runs.size(); ++i) {
+        const Trajectory& t = runs[i]->trajectory;
+        // A run without states (a reference with no answer) draws nothing.
+        if (t.states.empty()) continue;
+        std::vector<double> across, value;
+        for (std::size_t j = 0; j < t.states.size(); ++j) {
+          const auto [x, y] = pick(t.times[j], t.states[j][k]);
+          across.push_back(x);
+          value.push_back(y);
+        }
+        const std::string rows = series_rows(across, value);
+        if (rows.empty()) continue;
+        data += "# " + runs[i]->backend + "\n" + rows + "\n\n";
+        plot += (plot.empty() ? "plot " : ", \\\n     ") +
+                series_line(i, block++, runs[i]->backend, g == 0);
       }
-      const std::string rows = series_rows(across, value);
-      if (rows.empty()) continue;
-      data += "# " + runs[i]->backend + "\n" + rows + "\n\n";
-      plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, runs[i]->backend);
+      const std::string& who = scene.bodies[drawn[k]].name;
+      names += (names.empty() ? "" : ", ") + who;
+      // Each body of a shared panel is named where the reference's curve ends, on the side
+      // of the panel that leaves the text inside it.
+      if (const auto end = last_point(*guide, k, pick); end && group.size() > 1) {
+        // The curve ends right of where it began: the name reads leftwards from its end.
+        const auto begin = first_point(*guide, k, pick);
+        const bool right_half = !begin || end->first > begin->first;
+        labels += fmt::format("set label {} at {:.9g},{:.9g} {} offset {},0.8 front\n", quote(who),
+                              end->first, end->second, right_half ? "right" : "left",
+                              right_half ? -0.5 : 0.5);
+      }
     }
-    // A body no run has a finite position for leaves its panel empty.
+    // A group no run has a finite value for leaves its panel empty.
     if (plot.empty()) continue;
     ++panels;
-    const std::string& who = scene.bodies[drawn[k]].name;
-    script += path ? fmt::format("set xlabel {}\nset ylabel {}\n{}\nunset key\n",
-                                 quote(who + " x (m)"), quote(who + " y (m)"), plot)
-                   : fmt::format("set xlabel \"t (s)\"\nset ylabel {}\n{}\nunset key\n",
-                                 quote(who + " " + axis_name + " (m)"), plot);
+    const std::string y_label = speed  ? names + " speed (m/s)"
+                                : path ? names + " y (m)"
+                                       : names + " " + "xyz"[axis] + " (m)";
+    const std::string x_label = path ? names + " x (m)" : "t (s)";
+    script += fmt::format("unset label\n{}set xlabel {}\nset ylabel {}\n{}\nunset key\n", labels,
+                          quote(x_label), quote(y_label), plot);
   }
-  if (panels == 0) return "no run has a finite position to draw";
+  if (panels == 0)
+    return "no run has a finite " + std::string(speed ? "velocity" : "position") + " to draw";
   // One legend, beside the first panel; every panel keeps the same right margin to line up.
+  const std::string title =
+      scene.name + (speed ? ": speed at report_dt" : ": where the moving bodies go, at report_dt");
   const std::string layout = fmt::format(
       "set multiplot layout {},1 title {}\nset grid\nset rmargin at screen 0.70\n"
       "set key at screen 0.99, screen 0.92 right top maxrows 20 samplen 2 font \",10\"\n",
-      panels,
-      quote(scene.name + ": the bodies that move, at report_dt (a path y against x where "
-                         "the motion goes both ways in the plane)"));
-  return draw(layout + script + "unset multiplot\n", data, batch, name, 80 + 240 * panels);
+      panels, quote(title));
+  return draw(layout + script + "unset multiplot\n", data, batch, name, 80 + 280 * panels);
+}
+
+/// The energy axis's window when some runs leave the others far behind (an exploding
+/// method at 26,000 J beside a spring's 10 J): the runs whose largest distance from the
+/// start energy is more than kOffScale times the typical run's, or than the start energy,
+/// are clipped, and named with the most they reach.
+struct EnergyWindow {
+  double low = 0.0, high = 0.0;
+  std::string clipped;  ///< "course/explicit-euler (reaches 2.65e+04 J)", or "" for none
+  int count = 0;        ///< how many runs are clipped
+};
+
+constexpr double kOffScale = 20.0;
+
+std::optional<EnergyWindow> energy_window(const std::vector<const RunRecord*>& runs) {
+  const auto finite_range = [](const std::vector<double>& e) {
+    double lo = 1e300, hi = -1e300;
+    for (double v : e)
+      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    return std::pair{lo, hi};
+  };
+  // The start energy: the first run's (the reference's when it has one) first finite value.
+  std::optional<double> start;
+  for (const RunRecord* r : runs)
+    for (double v : r->energy)
+      if (!start && std::isfinite(v)) start = v;
+  if (!start) return std::nullopt;
+  std::vector<double> reach;
+  for (const RunRecord* r : runs) {
+    const auto [lo, hi] = finite_range(r->energy);
+    if (lo <= hi) reach.push_back(std::max(std::abs(lo - *start), std::abs(hi - *start)));
+  }
+  std::vector<double> sorted = reach;
+  std::sort(sorted.begin(), sorted.end());
+  const double typical = sorted[sorted.size() / 2];
+  const double limit = kOffScale * std::max({typical, std::abs(*start), 1e-12});
+  EnergyWindow w{1e300, -1e300, "", 0};
+  for (const RunRecord* r : runs) {
+    const auto [lo, hi] = finite_range(r->energy);
+    if (lo > hi) continue;
+    if (std::max(std::abs(lo - *start), std::abs(hi - *start)) > limit) {
+      const double most = std::abs(hi - *start) >= std::abs(lo - *start) ? hi : lo;
+      // Three are named; the rest counted, so the line fits above the plot.
+      if (++w.count <= 3)
+        w.clipped +=
+            fmt::format("{}{} (reaches {:.3g} J)", w.clipped.empty() ? "" : ", ", r->backend, most);
+    } else {
+      w.low = std::min(w.low, lo), w.high = std::max(w.high, hi);
+    }
+  }
+  if (w.clipped.empty() || w.low > w.high) return std::nullopt;
+  if (w.count > 3) w.clipped += fmt::format(" and {} more", w.count - 3);
+  const double pad = 0.08 * std::max(w.high - w.low, 1e-9 * std::max(1.0, std::abs(*start)));
+  w.low -= pad, w.high += pad;
+  return w;
 }
 
 std::string energy_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
@@ -168,10 +281,20 @@ std::string energy_plot(const CaseResults& results, FileBatch& batch, const std:
     plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, run.backend);
   }
   if (plot.empty()) return "no run has a finite energy to draw";
+  // A run far off the others' scale is cut at the window's edge; the title's second line
+  // says which, and how far it goes.
+  std::string window, title = quote(scene.name + ": energy at report_dt");
+  if (const auto w = energy_window(runs)) {
+    window = fmt::format("set yrange [{:.9g}:{:.9g}]\n", w->low, w->high);
+    title.pop_back();
+    title += "\\n" + quote("off this scale, cut at its edge: " + w->clipped).substr(1);
+  }
+  const std::string parts = scene.springs.empty() ? "kinetic + rotational + gravitational"
+                                                  : "kinetic + rotational + gravitational + spring";
   const std::string script = fmt::format(
       "set grid\nset key outside right top\nset xlabel \"t (s)\"\n"
-      "set ylabel \"total energy (J): kinetic + rotational + gravitational\"\nset title {}\n{}\n",
-      quote(scene.name + ": energy at report_dt"), plot);
+      "set ylabel {}\nset title {}\n{}{}\n",
+      quote("total energy (J): " + parts), title, window, plot);
   return draw(script, data, batch, name);
 }
 
@@ -216,12 +339,20 @@ std::string work_precision_file(const Scene& scene, const std::string& metric) {
 
 }  // namespace
 
+bool draws_speed(const Scene& scene) {
+  if (!scene.air || !(scene.air->density > 0.0)) return false;
+  for (const Body& b : scene.bodies)
+    if (b.drag_coefficient > 0.0) return true;
+  return false;
+}
+
 std::vector<std::string> plot_file_names(const Scene& scene) {
   std::vector<std::string> names;
   for (const std::string& metric : scene.report.metrics)
     names.push_back(work_precision_file(scene, metric));
   for (const char* kind : {"-trajectory.svg", "-energy.svg", "-error.svg"})
     names.push_back(scene.name + kind);
+  if (draws_speed(scene)) names.push_back(scene.name + "-speed.svg");
   if (!stopping_bodies(scene).empty()) names.push_back(scene.name + "-stop.svg");
   if (!turning_bodies(scene).empty()) names.push_back(scene.name + "-rotation.svg");
   if (scene.sweep) names.push_back(scene.name + "-sweep.svg");
@@ -262,8 +393,11 @@ PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
         attempt(file, work_precision_plot(results, metric, batch, file)))
       files.work_precision.push_back({metric, file});
   if (const std::string file = scene.name + "-trajectory.svg";
-      attempt(file, trajectory_plot(results, batch, file)))
+      attempt(file, bodies_plot(results, batch, file, false)))
     files.trajectory = file;
+  if (const std::string file = scene.name + "-speed.svg";
+      draws_speed(scene) && attempt(file, bodies_plot(results, batch, file, true)))
+    files.speed = file;
   if (const std::string file = scene.name + "-energy.svg";
       attempt(file, energy_plot(results, batch, file)))
     files.energy = file;

@@ -19,6 +19,7 @@ struct PlotFiles {
   /// (metric, file name) per work-precision diagram.
   std::vector<std::pair<std::string, std::string>> work_precision;
   std::string trajectory;  ///< file name, empty when not drawn
+  std::string speed;       ///< speed against time, where air drags a body
   std::string energy;
   std::string error;     ///< distance from the reference against time
   std::string stop;      ///< sliding bodies around their stop; empty when none is observed
@@ -32,6 +33,10 @@ struct PlotFiles {
 /// Draws every plot of the case into `batch` (file names start with the case name). A plot
 /// gnuplot could not write completely is a WriteError; gnuplot missing is a note.
 PlotFiles write_plots(const CaseResults& results, FileBatch& batch);
+
+/// Whether the case gets a speed-against-time plot: air drags one of its bodies (the
+/// approach to a terminal speed is what such a case is about).
+bool draws_speed(const Scene& scene);
 
 /// The file names write_plots may use for `scene`.
 std::vector<std::string> plot_file_names(const Scene& scene);

@@ -134,5 +134,129 @@ anchored = "top-row"
   EXPECT_NE(svg.find("thrown y (m)"), std::string::npos);
 }
 
+/// Two balls falling through air from rest, one heavy and one light, compared by a claim
+/// when `claimed`; with `explode`, a stiff spring that explicit Euler blows up.
+std::string falling_pair(bool claimed, bool explode) {
+  std::string text = R"(name = "pair"
+dims = 2
+duration = 2.0
+sample = 0.02
+dt = [0.02, 0.01]
+report_dt = 0.01
+[air]
+density = 1.2
+[[body]]
+name = "heavy"
+radius = 0.5
+mass = 50.0
+position = [0.0, 100.0, 0.0]
+drag_coefficient = 0.47
+[[body]]
+name = "light"
+radius = 0.5
+mass = 0.5
+position = [3.0, 100.0, 0.0]
+drag_coefficient = 0.47
+[[observe]]
+kind = "final_speed"
+body = "heavy"
+[[observe]]
+kind = "final_speed"
+body = "light"
+)";
+  if (claimed)
+    text += R"([[claim]]
+text = "the heavy ball falls faster"
+own = true
+left = "*:final_speed/heavy"
+op = ">"
+right = "*:final_speed/light"
+)";
+  if (explode)
+    text += R"([[body]]
+name = "bob"
+radius = 0.1
+mass = 0.1
+position = [10.0, 0.0, 0.0]
+velocity = [0.0, 1.0, 0.0]
+[[body]]
+name = "post"
+radius = 0.1
+mass = 1.0
+position = [10.0, 1.0, 0.0]
+fixed = true
+[[spring]]
+bodies = ["bob", "post"]
+stiffness = 4000.0
+rest_length = 1.0
+)";
+  return text;
+}
+
+std::string svg_of(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Plots, BodiesAClaimComparesShareOnePanelAndAirGetsASpeedPlot) {
+  for (const bool claimed : {false, true}) {
+    const std::string dir = test::fresh_dir(claimed ? "claimed_pair" : "unclaimed_pair");
+    const std::string path = test::write_case(dir, "pair.toml", falling_pair(claimed, false));
+    const test::Outcome o = test::beachball(
+        "run " + path + " --no-cost --backends reference,course/rk4 --out " + dir + "/out");
+    ASSERT_EQ(o.exit_code, 0) << o.out;
+    const std::string trajectory = svg_of(dir + "/out/pair-trajectory.svg");
+    const std::string speed = svg_of(dir + "/out/pair-speed.svg");
+    ASSERT_FALSE(trajectory.empty());
+    ASSERT_FALSE(speed.empty()) << "air drags both balls: the page has a speed plot";
+    if (claimed) {
+      // One panel for both, each ball named on its curve.
+      EXPECT_NE(trajectory.find("heavy, light y (m)"), std::string::npos);
+      EXPECT_NE(speed.find("heavy, light speed (m/s)"), std::string::npos);
+      EXPECT_NE(speed.find(">heavy<"), std::string::npos);
+      EXPECT_NE(speed.find(">light<"), std::string::npos);
+    } else {
+      EXPECT_NE(trajectory.find("heavy y (m)"), std::string::npos);
+      EXPECT_NE(trajectory.find("light y (m)"), std::string::npos);
+      EXPECT_EQ(trajectory.find("heavy, light"), std::string::npos);
+    }
+    EXPECT_NE(svg_of(dir + "/out/pair.md").find("![speed](pair-speed.svg)"), std::string::npos);
+  }
+}
+
+TEST(Plots, ACaseWithoutAirHasNoSpeedPlot) {
+  const std::string dir = test::fresh_dir("no_air");
+  std::string text = falling_pair(false, false);
+  text.replace(text.find("[air]\ndensity = 1.2\n"), 19, "");
+  for (std::size_t at; (at = text.find("drag_coefficient = 0.47\n")) != std::string::npos;)
+    text.erase(at, 24);
+  const std::string path = test::write_case(dir, "pair.toml", text);
+  const test::Outcome o = test::beachball(
+      "run " + path + " --no-cost --backends reference,course/rk4 --out " + dir + "/out");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_FALSE(fs::exists(dir + "/out/pair-speed.svg"));
+}
+
+TEST(Plots, AnExplodingRunIsCutAtTheEnergyAxisAndNamed) {
+  for (const bool explode : {false, true}) {
+    const std::string dir = test::fresh_dir(explode ? "energy_cut" : "energy_whole");
+    const std::string path = test::write_case(dir, "pair.toml", falling_pair(false, explode));
+    const test::Outcome o = test::beachball(
+        "run " + path + " --no-cost --backends reference,course/explicit-euler,course/rk4 --out " +
+        dir + "/out");
+    ASSERT_EQ(o.exit_code, 0) << o.out;
+    const std::string energy = svg_of(dir + "/out/pair-energy.svg");
+    ASSERT_FALSE(energy.empty());
+    // Only the run that explodes is cut, and the title says so; the springs' energy counts.
+    const std::size_t cut = energy.find("off this scale, cut at its edge: ");
+    EXPECT_EQ(cut != std::string::npos, explode) << energy.substr(0, 2000);
+    if (explode) {
+      EXPECT_NE(energy.find("course/explicit-euler (reaches", cut), std::string::npos);
+      EXPECT_EQ(energy.find("course/rk4 (reaches", cut), std::string::npos);
+      EXPECT_NE(energy.find("gravitational + spring"), std::string::npos);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bb
