@@ -181,9 +181,9 @@ void TwoColumnPlot::end_row(const std::string& left_label, const std::string& ri
   if (!left_.empty() && !right_.empty()) {
     // Fixed margins put the columns side by side; the legend goes with the first panel.
     rows_script_ += fmt::format(
-        "set lmargin at screen 0.07\nset rmargin at screen 0.39\nset xlabel {}\n"
+        "set lmargin at screen 0.09\nset rmargin at screen 0.40\nset xlabel {}\n"
         "set ylabel {}\n{}\nunset key\n"
-        "set lmargin at screen 0.47\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
+        "set lmargin at screen 0.49\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
         quote(x_label_), quote(left_label), left_, quote(right_label), right_);
     ++rows_;
   }
