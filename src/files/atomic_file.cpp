@@ -15,11 +15,11 @@ namespace bb {
 
 namespace fs = std::filesystem;
 
-namespace {
-
 std::string os_reason() {
   return std::strerror(errno);
 }
+
+namespace {
 
 /// Writes all of `text` to `fd`; on failure the OS's reason, else "".
 std::string write_all(int fd, const std::string& text) {

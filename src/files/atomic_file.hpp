@@ -9,6 +9,9 @@
 
 namespace bb {
 
+/// Why the last system call failed, in the OS's words (strerror of errno).
+std::string os_reason();
+
 /// A file that could not be written: names the path and carries the OS's reason (exit 2).
 struct WriteError : CaseError {
   WriteError(const std::string& path, const std::string& reason)

@@ -21,10 +21,6 @@ namespace {
 
 constexpr const char* kJournal = "switch.list";
 
-std::string os_reason() {
-  return std::strerror(errno);
-}
-
 bool exists_here(const std::string& path) {
   struct stat st {};
   return lstat(path.c_str(), &st) == 0;

@@ -22,10 +22,6 @@ namespace {
 constexpr const char* kMarkerText =
     "beachball made this folder for its own temporary files and removes it when done\n";
 
-std::string os_reason() {
-  return std::strerror(errno);
-}
-
 /// Reads at most `limit` bytes of the file open as `fd`.
 std::string read_some(int fd, std::size_t limit) {
   std::string text(limit, '\0');

@@ -25,8 +25,9 @@ std::string observable_cell(const ObservableResult& o, bool is_reference) {
   // The reference row compares with itself, except where a formula gives the value to reach.
   if (!o.reference || (is_reference && *o.reference == *o.measured.value))
     return format_value(o.measured.value);
+  // On the reference row a bracket is never "from the reference": it says what it is from.
   return format_value(o.measured.value) + " (" + format_value(*o.measured.value - *o.reference) +
-         ")";
+         (is_reference ? " from the formula)" : ")");
 }
 
 /// The cell of a named observable, "-" where the run has none (it failed before measuring).

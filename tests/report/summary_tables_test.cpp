@@ -40,5 +40,25 @@ TEST(SweepTable, ShowsEveryObservableAtEveryDtWithItsDifferenceFromTheReference)
   EXPECT_EQ(t.rows[2][c], "-");
 }
 
+TEST(SummaryTable, TheReferenceRowSaysWhatItsBracketIsFrom) {
+  Scene scene = test::scene_from(test::kMinimalCase +
+                                 std::string("\n[[observe]]\nkind = \"bounce_apex\"\nbody = "
+                                             "\"ball\"\nn = 1\n"));
+  CaseResults results;
+  results.scene = &scene;
+  // A value the reference measured itself has no bracket; one a formula gives (the terminal
+  // speed) is named on the reference row, where "difference from the reference" is void.
+  results.reference_run.backend = "reference";
+  results.reference_run.observables.push_back({"bounce_apex/ball/1", {5.0, ""}, 5.0});
+  Table t = summary_table(results, scene.report_dt);
+  const auto c = static_cast<std::size_t>(
+      std::find(t.headers.begin(), t.headers.end(), "bounce_apex/ball/1") - t.headers.begin());
+  ASSERT_LT(c, t.headers.size());
+  EXPECT_EQ(t.rows[0][c], "5");
+  results.reference_run.observables[0].reference = 5.5;
+  t = summary_table(results, scene.report_dt);
+  EXPECT_EQ(t.rows[0][c], "5 (-0.5 from the formula)");
+}
+
 }  // namespace
 }  // namespace bb
