@@ -50,16 +50,29 @@ class CourseSimulation : public Simulation {
       momentum_.push_back(course::world_inertia(principal, orientation_[i]) * omega_[i]);
     }
     work_.resize(start.size());
+    start_a_.resize(start.size());
     settings_ = {{"integrator", variant.integrator}};
     if (!contacts_.empty()) settings_.push_back({"ground_rule", variant.ground});
     record_contact_rules(variant);
     if (!friction_.empty()) {
       settings_.push_back({"friction_rule", variant.friction});
       settings_.push_back(
-          {"friction_contact", std::string("a body within 1e-9 m of the ground at the step's start "
-                                           "feels friction throughout the step; N from the other "
-                                           "forces pressing it on the ground; a tangential speed "
-                                           "under 1e-12 m/s counts as rest")});
+          {"friction_contact",
+           std::string("a body in contact with the ground at the step's start feels friction "
+                       "throughout the step, whatever the ground rule: within 1e-9 m of it or "
+                       "overlapping it, or in contact or resolved against it in the step "
+                       "before and back on it within four steps under gravity alone (gap + "
+                       "v_n T - g_n T^2 / 2 <= 1e-9 m, T = 4 dt); N from the other forces "
+                       "pressing it on the ground; a "
+                       "tangential speed under 1e-12 m/s counts as rest")});
+      if (variant.friction == "clamp")
+        settings_.push_back(
+            {"friction_stop",
+             std::string("clamp: before each step, a slide that the step's kinetic friction "
+                         "(less the other forces' pull along it) would turn back stops: its "
+                         "velocity along the ground becomes 0 and static friction takes the "
+                         "step; after the step, a velocity along the ground that turned back "
+                         "anyway is set to 0")});
     }
     if (!hinges_.empty()) {
       settings_.push_back(
@@ -93,8 +106,15 @@ class CourseSimulation : public Simulation {
          ++next_impulse_)
       push(scene_.impulses[next_impulse_]);
     ++steps_;
-    // Friction acts on the bodies that touch the ground as the step starts.
-    if (!friction_.empty()) friction_.begin(points_.x, orientation_, points_.v);
+    // Friction acts on the bodies in contact with the ground as the step starts; the clamp
+    // rule stops there a slide that the step would turn back.
+    if (!friction_.empty()) {
+      friction_.begin(points_.x, orientation_, points_.v);
+      if (friction_.stops_slides()) {
+        equations_.accelerations(points_.x, points_.v, omega_, orientation_, start_a_);
+        friction_.stop_slides(start_a_, points_.v);
+      }
+    }
     // A hinged body turns from where the step starts, under the forces there.
     if (!hinges_.empty()) {
       equations_.accelerations(points_.x, points_.v, omega_, orientation_, hinge_a_);
@@ -107,6 +127,10 @@ class CourseSimulation : public Simulation {
     if (!contacts_.empty()) {
       contacts_.detect(points_.x, orientation_);
       contacts_.resolve(points_.x, points_.v, orientation_, omega_);
+      // A body the ground rule resolved stays in contact for friction (friction_phase.hpp).
+      for (const course::FoundContact& c : contacts_.found())
+        if (!friction_.empty() && contacts_.pair(c.pair).ground())
+          friction_.resolved(contacts_.pair(c.pair).a);
       // A hit may have turned a rigid body: its angular momentum follows its new spin.
       for (const course::FoundContact& c : contacts_.found())
         for (int body : {contacts_.pair(c.pair).a, contacts_.pair(c.pair).b})
@@ -181,6 +205,7 @@ class CourseSimulation : public Simulation {
   course::HingeTurning hinges_;
   std::vector<char> hinged_ = hinged_bodies(scene_);
   std::vector<Vec3> hinge_a_, hinge_x_;  ///< accelerations and positions at the step's start
+  std::vector<Vec3> start_a_;            ///< accelerations at the step's start, for the clamp stop
   std::vector<Quat> hinge_q_;            ///< orientations at the step's start
   EquationsOfMotion equations_;
   course::PointState points_;

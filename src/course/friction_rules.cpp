@@ -44,6 +44,16 @@ Eigen::Vector3d with_friction(FrictionRule rule, const Coulomb& c, const Eigen::
   return a - c.mu_kinetic * press * (push / pushed);
 }
 
+bool stops_within(const Coulomb& c, const Eigen::Vector3d& n, const Eigen::Vector3d& v,
+                  const Eigen::Vector3d& a, double dt) {
+  const double press = -a.dot(n);
+  const Eigen::Vector3d slide = tangential(v, n);
+  const double speed = slide.norm();
+  if (press <= 0.0 || speed <= kRestSpeed) return false;
+  const double slowing = c.mu_kinetic * press - a.dot(slide / speed);
+  return speed <= slowing * dt;
+}
+
 void clamp_reversal(FrictionRule rule, const Eigen::Vector3d& n, const Eigen::Vector3d& before,
                     Eigen::Vector3d& v) {
   if (rule != FrictionRule::Clamp) return;

@@ -3,7 +3,9 @@
 // `naive` (the "sliding block" demo as first written: the force opposes the velocity, so
 // the block overshoots zero and crawls), and the seed's two fixes, `clamp` (a velocity
 // that would cross zero within a step is set to zero) and `low-speed` (the friction is
-// reduced at low speed so that one step cannot reverse the velocity).
+// reduced at low speed so that one step cannot reverse the velocity). The seed's check is
+// made before the step here (stops_within): a slide the step would turn back stops, which
+// holds for every integrator, not only those whose velocity crosses zero within a step.
 #pragma once
 
 #include <Eigen/Core>
@@ -35,6 +37,14 @@ struct Coulomb {
 ///   body breaks away and kinetic friction mu_k N opposes the tangential force.
 Eigen::Vector3d with_friction(FrictionRule rule, const Coulomb& c, const Eigen::Vector3d& n,
                               const Eigen::Vector3d& v, const Eigen::Vector3d& a, double dt);
+
+/// The `clamp` rule's stop, before a step of `dt`: whether a body sliding at `v` on the
+/// plane with unit normal `n`, whose other forces give it `a`, would have its slide turned
+/// back within the step: pressed on the ground (N / m = -a.n > 0) and sliding, its speed
+/// along the ground is at most what kinetic friction less the other forces' pull along the
+/// slide take off over the step, (mu_k N / m - a . v_t / |v_t|) dt.
+bool stops_within(const Coulomb& c, const Eigen::Vector3d& n, const Eigen::Vector3d& v,
+                  const Eigen::Vector3d& a, double dt);
 
 /// After a step, the `clamp` rule: a tangential velocity that turned against the one before
 /// the step (`before`) crossed zero within the step, and is set to zero. Other rules, and

@@ -8,20 +8,12 @@ namespace bb {
 
 namespace {
 
-/// The turn about z at the end (degrees), unwrapped over the samples.
+/// The turn about z from the start to the end (degrees), as the runner unwrapped it at
+/// every step from the spin (BodyState::turn).
 ObservableValue final_angle(const Scene& scene, int body, const Trajectory& t) {
   if (scene.dims != 2) return {std::nullopt, "measured in 2D cases only (the turn about z)"};
-  double total = 0.0, last = angle_about_z(t.states.front()[body].orientation);
-  for (const State& s : t.states) {
-    const double now = angle_about_z(s[body].orientation);
-    double step = now - last;
-    // A jump of more than half a turn between samples is the angle wrapping round.
-    if (step > std::numbers::pi) step -= 2.0 * std::numbers::pi;
-    if (step < -std::numbers::pi) step += 2.0 * std::numbers::pi;
-    total += step;
-    last = now;
-  }
-  return {total * 180.0 / std::numbers::pi, ""};
+  const double turned = t.states.back()[body].turn - t.states.front()[body].turn;
+  return {turned * 180.0 / std::numbers::pi, ""};
 }
 
 /// The spin (rad/s) at the first sample after the body's first push or contact.

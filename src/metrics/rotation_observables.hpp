@@ -8,8 +8,9 @@
 namespace bb {
 
 /// The value of `observe` on `trajectory`, or nullopt when its kind is not one of these:
-/// - final_angle (degrees): the turn about z from the start to the end, unwrapped over the
-///   samples (2D cases);
+/// - final_angle (degrees): the turn about z from the start to the end, whole turns
+///   included: unwrapped at every step from the spin (StepObserver, next_turn), not over
+///   the samples (2D cases);
 /// - post_angular_velocity (rad/s): the spin at the first sample after the body's first
 ///   push or contact;
 /// - flips: how many times the body turned over about its middle principal axis (the

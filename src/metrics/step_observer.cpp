@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "scene/motion.hpp"
 
@@ -30,6 +31,12 @@ Vec3 angular_momentum(const Scene& scene, const State& s, int a, int b) {
 
 }  // namespace
 
+double next_turn(double turn, const BodyState& before, const BodyState& now, double h) {
+  const double spun = 0.5 * (before.angular_velocity.z() + now.angular_velocity.z()) * h;
+  const double angle = angle_about_z(now.orientation), whole = 2.0 * std::numbers::pi;
+  return angle + whole * std::round((turn + spun - angle) / whole);
+}
+
 Vec3 along_ground(const Scene& scene, const Vec3& v) {
   if (!scene.ground) return v;
   return v - v.dot(scene.ground->normal) * scene.ground->normal;
@@ -52,12 +59,37 @@ StepObserver::StepObserver(const Scene& scene)
       stopping_.push_back(o.body);
   }
   fastest_.assign(stopping_.size(), 0.0);
+  watches_.assign(stopping_.size(), StopWatch{});
   if (watch_stretch_) {
     trace_.max_stretch = 0.0;
     for (int k = 0; k < static_cast<int>(scene.springs.size()); ++k)
       if (scene.springs[k].rest_length > 0.0) stretched_.push_back(k);
     last_stretch_.resize(stretched_.size());
   }
+  // A 2D body turns when it spins at the start, is pushed, touches something or hangs on a
+  // hinge; nothing else in a scene exerts a torque.
+  turning_.assign(scene.bodies.size(), 0);
+  turns_.assign(scene.bodies.size(), 0.0);
+  if (scene.dims != 2) return;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    turning_[i] = scene.bodies[i].angular_velocity.norm() > 0.0;
+  for (const Impulse& i : scene.impulses) turning_[i.body] = 1;
+  for (const Hinge& h : scene.hinges) turning_[h.body] = 1;
+  for (const ContactPair& p : pairs_) {
+    turning_[p.a] = 1;
+    if (!p.ground()) turning_[p.b] = 1;
+  }
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& b = scene.bodies[i];
+    if (b.fixed || b.shape == Shape::Point) turning_[i] = 0;
+    watch_turns_ = watch_turns_ || turning_[i];
+  }
+}
+
+void StepObserver::write_turns(State& state) const {
+  if (scene_.dims != 2) return;
+  for (std::size_t i = 0; i < state.size(); ++i)
+    state[i].turn = turning_[i] ? turns_[i] : angle_about_z(state[i].orientation);
 }
 
 void StepObserver::observe_swings(double t, const State& s) {
@@ -76,28 +108,67 @@ void StepObserver::observe_swings(double t, const State& s) {
 }
 
 void StepObserver::observe_stops(double t, const State& s) {
-  const double h = t - previous_t_;
+  const double h = t - previous_t_, g_step = scene_.gravity.norm() * h;
   for (std::size_t k = 0; k < stopping_.size(); ++k) {
     const int i = stopping_[k];
     const Vec3 now = along_ground(scene_, s[i].velocity);
     BodyEvents& e = trace_.bodies[i];
-    if (first_ || e.stop_time) {
+    StopWatch& w = watches_[k];
+    if (first_) {
       fastest_[k] = std::max(fastest_[k], now.norm());
       continue;
     }
     const Vec3 before = along_ground(scene_, previous_[i].velocity);
-    const double rest = 1e-6 * std::max(fastest_[k], scene_.gravity.norm() * h);
-    const bool was_at_rest = before.norm() <= rest;
-    if (was_at_rest && previous_t_ == 0.0 && now.norm() <= rest) {
-      e.stop_time = 0.0, e.stop_position = previous_[i].position;
-    } else if (!was_at_rest && now.norm() <= rest) {
-      e.stop_time = t, e.stop_position = s[i].position;
-    } else if (!was_at_rest && now.dot(before) < 0.0) {
-      // Turned back: the speed along the old direction crossed zero within the step.
-      const double back = now.dot(before) / before.norm();
-      const double f = before.norm() / (before.norm() - back);
-      e.stop_time = previous_t_ + f * h;
-      e.stop_position = previous_[i].position + f * (s[i].position - previous_[i].position);
+    const double rest = 1e-6 * std::max(fastest_[k], g_step);
+    const bool was_at_rest = before.norm() <= rest, at_rest = now.norm() <= rest;
+    // Below this a body at rest only wobbles (an engine's rounding), it does not set off.
+    const double quiet = kSignificantMotion * std::max(w.largest, g_step);
+    // The start, judged with the first step's levels: at rest there (stopped at t = 0, a
+    // rest as long as any), or in a motion from there.
+    if (previous_t_ == 0.0 && before.norm() <= quiet) {
+      w.resting = 2;
+      e.stop_time = 0.0, e.stop_position = e.motion_start = previous_[i].position;
+    } else if (previous_t_ == 0.0) {
+      w.moving = true;
+      w.begin = previous_[i].position;
+      w.largest = before.norm();
+    }
+    // At rest: setting off after two quiet observations or more begins a motion there, and
+    // the body has not stopped until it ends; so does setting off faster than any motion
+    // so far (a push right after a float engine's jitter came to rest), where a crawl after
+    // a stop does not.
+    bool set_off = false;
+    if (!w.moving) {
+      if (now.norm() <= quiet) {
+        ++w.resting;
+      } else if (w.resting >= 2 || now.norm() > w.largest) {
+        w.moving = true;
+        set_off = true;
+        w.begin = previous_[i].position;
+        e.stop_time.reset();
+      } else {
+        w.resting = 0;
+      }
+    }
+    if (w.moving) {
+      w.largest = std::max(w.largest, now.norm());
+      std::optional<double> end;
+      Vec3 where;
+      if (!was_at_rest && at_rest) {
+        end = t, where = s[i].position;
+      } else if (!was_at_rest && !set_off && now.dot(before) < 0.0) {
+        // Turned back: the speed along the old direction crossed zero within the step (not
+        // a step that set off against a jitter's direction).
+        const double back = now.dot(before) / before.norm();
+        const double f = before.norm() / (before.norm() - back);
+        end = previous_t_ + f * h;
+        where = previous_[i].position + f * (s[i].position - previous_[i].position);
+      }
+      if (end) {
+        w.moving = false;
+        w.resting = now.norm() <= quiet ? 1 : 0;
+        e.stop_time = end, e.stop_position = where, e.motion_start = w.begin;
+      }
     }
     fastest_[k] = std::max(fastest_[k], now.norm());
   }
@@ -134,6 +205,13 @@ void StepObserver::observe_stretch(double h, const State& s) {
 void StepObserver::observe(double t, const State& s) {
   if (!active()) return;
   const double dt = t - previous_t_;
+  // The turn about z of each body that can turn, unwrapped from its spin at every step.
+  if (watch_turns_)
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (!turning_[i]) continue;
+      turns_[i] =
+          first_ ? angle_about_z(s[i].orientation) : next_turn(turns_[i], previous_[i], s[i], dt);
+    }
   if (!first_ && !falling_.empty()) observe_falls(t, s);
   if (!first_ && !swinging_.empty()) observe_swings(t, s);
   if (!stopping_.empty()) observe_stops(t, s);

@@ -21,6 +21,18 @@ namespace bb {
 /// The part of `v` along the scene's ground (all of it when there is no ground).
 Vec3 along_ground(const Scene& scene, const Vec3& v);
 
+/// A 2D body's turn about z (radians) at the end of a step of `h` seconds from `before` to
+/// `now`, given its unwrapped `turn` at the start: the angle of `now` plus the whole turns
+/// that bring it nearest to `turn` plus what the spin turned it by over the step (the mean
+/// of the spins at its ends, times h). The spin, not the angles alone, says how many whole
+/// turns the step made: right while the spin's estimate is within half a turn of the true
+/// turn over the step, even where a step turns the body by more than half a turn.
+double next_turn(double turn, const BodyState& before, const BodyState& now, double h);
+
+/// A body at rest that moves along the ground slower than this fraction of the fastest it
+/// has moved (or of |g| dt) only wobbles (an engine's rounding at rest): it has not set off.
+inline constexpr double kSignificantMotion = 1e-3;
+
 class StepObserver {
  public:
   explicit StepObserver(const Scene& scene);
@@ -31,8 +43,12 @@ class StepObserver {
   /// nothing then.
   bool active() const {
     return !pairs_.empty() || !swinging_.empty() || !stopping_.empty() || !falling_.empty() ||
-           watch_stretch_;
+           watch_stretch_ || watch_turns_;
   }
+  /// Writes each body's turn about z (BodyState::turn) into `state`, the state observed
+  /// last: unwrapped at every step for a body that can turn, its angle for one that cannot
+  /// (2D scenes; in 3D the turn stays 0).
+  void write_turns(State& state) const;
 
  private:
   const Scene& scene_;
@@ -45,13 +61,25 @@ class StepObserver {
   void observe_swings(double t, const State& s);
   std::vector<int> swinging_;     ///< bodies with a period observable
   std::vector<Vec3> low_, high_;  ///< per swinging body: smallest and largest velocity seen
-  /// The first stop of each body whose stop is observed: its velocity along the ground
-  /// reaching zero (within a millionth of the fastest it slid, or of |g| dt) or turning
-  /// back between two steps, the crossing placed by linear interpolation; at rest at the
-  /// start and still after the first step, it stopped at t = 0.
+  /// The stop of each body whose stop is observed: the end of its last motion along the
+  /// ground (stop_observables.hpp). A motion begins at the start of the run when the body
+  /// moves there, or where it sets off after two or more quiet observations (the start
+  /// counts as two): quiet is slower than kSignificantMotion of the fastest it has moved
+  /// (or of |g| dt), so an engine's wobble at rest is no motion. It ends at the first step
+  /// where its velocity along the ground reaches rest (within a millionth of the fastest it
+  /// slid, or of |g| dt) or turns back (the crossing placed by linear interpolation). A
+  /// body at rest throughout stopped at t = 0.
   void observe_stops(double t, const State& s);
-  std::vector<int> stopping_;    ///< bodies with stop_time, stop_distance or rest_creep
-  std::vector<double> fastest_;  ///< per stopping body: m/s, fastest along the ground yet
+  /// Where a watched body is in its motions.
+  struct StopWatch {
+    bool moving = false;   ///< in a motion along the ground
+    int resting = 0;       ///< quiet observations in a row
+    double largest = 0.0;  ///< m/s, the fastest in any motion
+    Vec3 begin;            ///< where the current motion began
+  };
+  std::vector<int> stopping_;       ///< bodies with stop_time, stop_distance or rest_creep
+  std::vector<double> fastest_;     ///< per stopping body: m/s, fastest along the ground yet
+  std::vector<StopWatch> watches_;  ///< per stopping body
   /// The first time each body whose fall is observed has its centre below fallen_height()
   /// above the ground, placed by linear interpolation between the two steps.
   void observe_falls(double t, const State& s);
@@ -61,6 +89,11 @@ class StepObserver {
   void observe_stretch(double h, const State& s);
   std::vector<int> stretched_;         ///< the springs with a rest length
   std::vector<Stretch> last_stretch_;  ///< per spring in stretched_, at the last step
+  /// Per body: its turn about z is unwrapped at every step (a 2D body that can turn: it
+  /// spins at the start, is pushed, touches something or hangs on a hinge).
+  std::vector<char> turning_;
+  bool watch_turns_ = false;
+  std::vector<double> turns_;  ///< per body: radians, the turn about z so far
   State previous_;
   double previous_t_ = 0.0;
   bool first_ = true;

@@ -69,8 +69,7 @@ std::optional<ObservableValue> measure_stop(const Scene& scene, const Observe& o
   const BodyEvents& e = trajectory.events.bodies[body];
   if (!e.stop_time) return ObservableValue{std::nullopt, "never stops in the run"};
   if (kind == "stop_time") return ObservableValue{*e.stop_time, ""};
-  const Vec3 start = trajectory.states.front()[body].position;
-  return ObservableValue{along_ground(scene, e.stop_position - start).norm(), ""};
+  return ObservableValue{along_ground(scene, e.stop_position - e.motion_start).norm(), ""};
 }
 
 }  // namespace bb

@@ -9,9 +9,13 @@
 namespace bb {
 
 /// The value of `observe` on `trajectory`, or nullopt when its kind is not one of these:
-/// - stop_time (s): the first time the body's velocity along the ground reached zero or
-///   turned back after it slid (0: held at rest from the start);
-/// - stop_distance (m): how far along the ground it went from its start to that stop;
+/// - stop_time (s, from the start of the run): the end of the body's last motion along the
+///   ground, where its velocity along the ground reached zero or turned back. A motion
+///   begins at the start (a body moving there) or where a body at rest is set moving (a
+///   push, static friction giving way); a body at rest throughout stopped at t = 0; one
+///   whose last motion has not ended never stops in the run;
+/// - stop_distance (m): how far along the ground that last motion took it, from where it
+///   began to the stop;
 /// - rest_creep (m): how far along the ground it moved from the later of the reference's
 ///   stop and its own to the end of the run (the seed's crawl); `reference` holds the
 ///   reference's events (nullptr: none to measure from); a note when the reference never

@@ -79,6 +79,12 @@ std::string hinge_reason(const Scene& scene) {
   return "";
 }
 
+/// What `body` is, in a reason: "ball", "box" or "point".
+std::string shape_word(const Body& body) {
+  if (body.shape == Shape::Sphere) return "ball";
+  return body.shape == Shape::Box ? "box" : "point";
+}
+
 /// Whether body `i` starts touching the ground, not moving along its normal.
 bool starts_resting(const Scene& scene, int i) {
   const std::optional<ContactPair> pair = ground_pair(scene, i);
@@ -111,12 +117,19 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
   // Friction at an impact is exact where a ball meets something that does not move.
   for (const ContactPair& p : contact_pairs(scene)) {
     const bool rubs = p.friction_static > 0.0 || p.friction_kinetic > 0.0;
-    if (!rubs || p.ground() ||
-        (scene.bodies[p.a].shape == Shape::Sphere && scene.bodies[p.b].fixed))
-      continue;
-    return "bodies '" + scene.bodies[p.a].name + "' and '" + scene.bodies[p.b].name +
-           "' touch with friction: friction between two moving bodies has no event model in "
-           "the reference";
+    if (!rubs || p.ground()) continue;
+    const Body &a = scene.bodies[p.a], &b = scene.bodies[p.b];
+    if (a.shape == Shape::Sphere && b.fixed) continue;
+    if (b.fixed)
+      return shape_word(a) + " '" + a.name + "' touches fixed body '" + b.name +
+             "' with friction: the reference has friction against a fixed body only for a "
+             "ball's impacts; a " +
+             shape_word(a) +
+             " sliding or resting on another body (faces, edges, tipping) has no event model "
+             "in the reference";
+    return "bodies '" + a.name + "' and '" + b.name +
+           "' touch with friction and both move: friction between two moving bodies has no "
+           "event model in the reference";
   }
   if (const std::string why = hinge_reason(scene); !why.empty()) return why;
   const bool touching = scene.ground || !scene.contacts.empty();
@@ -167,8 +180,12 @@ SceneModel::SceneModel(const Scene& scene)
       mu_kinetic_(scene.bodies.size(), 0.0),
       hinge_(scene.bodies.size(), nullptr),
       held_(scene.bodies.size(), false),
-      hinge_held_(scene.bodies.size(), false) {
+      hinge_held_(scene.bodies.size(), false),
+      in_motion_(scene.bodies.size(), true) {
   trace_.bodies.resize(scene.bodies.size());
+  // Every body's first motion begins at its start (a body at rest there ends it at once).
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    trace_.bodies[i].motion_start = scene.bodies[i].position;
   for (const Hinge& h : scene.hinges) hinge_[h.body] = &h;
   for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, -1, pair});
   // A body that may slide on a ground with friction: its coefficients and its stops.

@@ -103,10 +103,10 @@ class SceneModel : public HybridModel {
   void check_simultaneous(const ContactPair& pair, const double* y, double t) const;
   /// A body resting on a ground with friction at time t: its tangential velocity below
   /// rounding is set to zero, then Coulomb's law decides whether it sticks or slides
-  /// (the first time it sticks or turns is its stop). Free elsewhere.
+  /// (sticking ends its motion: its stop). Free elsewhere.
   void settle(int body, const double* y, double t);
-  /// A sliding body's stop event: its velocity along the ground is zeroed, the stop
-  /// recorded, and the body settled anew.
+  /// A sliding body's stop event: its velocity along the ground is zeroed, the end of its
+  /// motion recorded (it sticks there or turns back), and the body settled anew.
   void stop(int body, double* y, double t);
 
   const Scene& scene_;
@@ -123,6 +123,12 @@ class SceneModel : public HybridModel {
   std::vector<const Hinge*> hinge_;             ///< per body: the hinge it turns on, or null
   std::vector<bool> held_;        ///< per body: resting, its acceleration projected onto the ground
   std::vector<bool> hinge_held_;  ///< per body: on a hinge, held still by the ground
+  /// Per body: in a motion that has not stopped yet (from the start, or from where a push
+  /// set it moving from rest); its stop ends the motion, and the trace keeps the last one.
+  std::vector<bool> in_motion_;
+  /// Body i's motion ends at time t: its stop, unless the motion already stopped (a body
+  /// that turned back and slides on is not in a new motion).
+  void end_motion(int i, const double* y, double t);
 };
 
 }  // namespace bb

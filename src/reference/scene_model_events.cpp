@@ -197,9 +197,14 @@ void SceneModel::settle(int i, const double* y, double t) {
   slides_[i] =
       decide_slide(mu_static_[i], n, velocity(y, i), applied_[i], scene_.bodies[i].name, t);
   // A body held from rest has stopped there (at t = 0: at rest from the start).
+  if (slides_[i].mode == SlideMode::Stuck) end_motion(i, y, t);
+}
+
+void SceneModel::end_motion(int i, const double* y, double t) {
+  if (!in_motion_[i]) return;
+  in_motion_[i] = false;
   BodyEvents& e = trace_.bodies[i];
-  if (slides_[i].mode == SlideMode::Stuck && !e.stop_time)
-    e.stop_time = t, e.stop_position = position(y, i);
+  e.stop_time = t, e.stop_position = position(y, i);
 }
 
 void SceneModel::stop(int i, double* y, double t) {
@@ -208,8 +213,7 @@ void SceneModel::stop(int i, double* y, double t) {
   const Vector3d n = scene_.ground->normal;
   Vec v(y + at(i) + 3);
   v = v.dot(n) * n;
-  BodyEvents& e = trace_.bodies[i];
-  if (!e.stop_time) e.stop_time = t, e.stop_position = position(y, i);
+  end_motion(i, y, t);
   settle(i, y, t);
 }
 
@@ -277,12 +281,18 @@ void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
   Vec(y + at(i) + 3) = v;
   set_spin(y, i, w);
   if (!resting_[i]) return;
+  // A push that sets a body at rest moving along the ground or off it begins a new motion
+  // there: the body's stop is that motion's end (a push at the instant the body came to
+  // rest, at t = 0 say, means it did not stop there).
+  const Vector3d n = scene_.ground->normal;
+  if (!in_motion_[i] && ((v - v.dot(n) * n).norm() > 0.0 || v.dot(n) > 0.0)) {
+    BodyEvents& e = trace_.bodies[i];
+    in_motion_[i] = true;
+    e.motion_start = position(y, i);
+    e.stop_time.reset();
+  }
   // Along the ground it rests on, the body stays on it and slides (or stays, if the push
   // was nothing along the ground).
-  // A push at the instant the body came to rest (a push at t = 0 on a body at rest) means
-  // it did not stop there.
-  BodyEvents& e = trace_.bodies[i];
-  if (e.stop_time && *e.stop_time == t) e.stop_time.reset();
   if (v.dot(scene_.ground->normal) == 0.0) return settle(i, y, t);
   resting_[i] = false;
   slides_[i] = {};

@@ -66,14 +66,17 @@ std::string tipping_reason(const Scene& scene, const Body& box) {
 
 std::string box_slide_reason(const Scene& scene, int index) {
   const Body& box = scene.bodies[index];
-  const std::string name = "body '" + box.name + "' is a moving box that ";
+  const std::string name = "moving box '" + box.name + "' ";
   // Away from any ground a ball's hit on the box is one point, resolved by the impulse.
   for (const ContactPair& p : contact_pairs(scene))
     if (!p.ground() && (p.a == index || p.b == index) &&
-        (scene.ground || scene.bodies[p.a].shape == Shape::Box))
-      return name +
-             "touches another body on a ground, or another box: box contacts (edges, faces, "
-             "tipping) have no event model in the reference";
+        (scene.ground || scene.bodies[p.a].shape == Shape::Box)) {
+      const Body& other = scene.bodies[p.a == index ? p.b : p.a];
+      return name + "can touch " + (other.fixed ? "fixed " : "moving ") + "body '" + other.name +
+             "'" + (scene.ground ? " while there is a ground" : "") +
+             ": a box's contacts with another body (faces, edges, tipping) have no event model "
+             "in the reference";
+    }
   if (!scene.ground) return "";
   for (const Spring& s : scene.springs)
     if (s.body_a == index || s.body_b == index)

@@ -28,16 +28,11 @@ void series(const Scene& scene, int body, std::size_t slot, const Trajectory& t,
   Vec3 unit = Vec3::Zero();
   unit[axis] = 1.0;
   const Vec3 start = t.states.front()[slot].orientation * unit;
-  double last = 0.0, turns = 0.0;
   for (const State& s : t.states) {
     const BodyState& b = s[slot];
     if (scene.dims == 2) {
-      // Unwrapped: a jump of more than half a turn between samples is a wrap.
-      const double a = angle_about_z(b.orientation) * 180.0 / std::numbers::pi;
-      if (!angle.empty() && a - last > 180.0) turns -= 360.0;
-      if (!angle.empty() && a - last < -180.0) turns += 360.0;
-      last = a;
-      angle.push_back(a + turns);
+      // Unwrapped at every step from the spin, by the runner: no sawtooth at each turn.
+      angle.push_back(b.turn * 180.0 / std::numbers::pi);
       rate.push_back(b.angular_velocity.z());
     } else {
       const double c = std::clamp((b.orientation * unit).dot(start), -1.0, 1.0);

@@ -33,11 +33,12 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
     State state(scene.bodies.size());
     sim->read(state);
     const double initial_energy = total_energy(scene, state);
-    record.trajectory.times.push_back(0.0);
-    record.trajectory.states.push_back(state);
-    // Contacts and apexes are watched at every step, not only at the samples.
+    // Contacts, apexes and turns are watched at every step, not only at the samples.
     StepObserver observer(scene);
     observer.observe(0.0, state);
+    observer.write_turns(state);
+    record.trajectory.times.push_back(0.0);
+    record.trajectory.states.push_back(state);
     for (int j = 1; j <= samples; ++j) {
       for (int k = 1; k <= per_sample; ++k) {
         sim->step();
@@ -47,6 +48,7 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
       }
       record.steps += per_sample;
       sim->read(state);
+      observer.write_turns(state);
       // Simulated time is a step count times dt, never a running sum.
       const double t = static_cast<double>(record.steps) * dt;
       record.trajectory.times.push_back(t);

@@ -1,16 +1,33 @@
 #include "run/divergence.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace bb {
 
 DivergenceBounds divergence_bounds(const Scene& scene) {
-  // Fastest plausible speed: the largest initial speed, plus the wind, plus what gravity
-  // adds over the whole run; the farthest travel follows from it.
+  // Fastest plausible speed: the largest over the bodies of the speed it starts with and
+  // gets from its impulses (J / m each), plus the speed its spin gives its surface (its
+  // initial spin and the impulses' angular impulses over its smallest moment, times its
+  // reach); plus the wind, plus what gravity adds over the whole run. A spin's energy is
+  // within 1/2 m (w reach)^2, since no moment exceeds m reach^2.
   double speed = 0.0, size = 1.0, mass = 0.0;
-  for (const Body& b : scene.bodies) {
-    speed = std::max(speed, b.velocity.norm() + b.angular_velocity.norm() * b.radius);
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& b = scene.bodies[i];
+    // How far its surface (or, on a hinge, its centre) is from where it turns about.
+    double reach = b.radius + b.half_extents.norm();
+    for (const Hinge& h : scene.hinges)
+      if (h.body == static_cast<int>(i)) reach += (b.position - h.anchor).norm();
+    const double moment = principal_inertia(b).minCoeff();
+    double v = b.velocity.norm(), w = b.angular_velocity.norm();
+    for (const Impulse& imp : scene.impulses) {
+      if (imp.body != static_cast<int>(i)) continue;
+      v += imp.impulse.norm() / b.mass;
+      const double arm = (imp.point.value_or(b.position) - b.position).norm() + reach;
+      if (moment > 0.0) w += arm * imp.impulse.norm() / moment;
+    }
+    speed = std::max(speed, v + w * reach);
     size = std::max(size, b.position.norm() + b.radius + b.half_extents.norm());
     mass += b.mass;
   }
@@ -47,7 +64,8 @@ std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds
     if ((s.position - scene.bodies[i].position).norm() > bounds.travel) {
       std::ostringstream m;
       m << "body '" << name << "' moved more than " << bounds.travel
-        << " m from its start, ten times what gravity and the initial speeds allow";
+        << " m from its start, ten times what gravity, the initial speeds and spins and the "
+           "impulses allow";
       return m.str();
     }
   }

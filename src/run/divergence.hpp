@@ -10,7 +10,8 @@
 namespace bb {
 
 /// Bounds derived from the scene: ten times the travel the physics can reach, ten thousand
-/// times the energy it can trade.
+/// times the energy it can trade, both counting what the case's impulses give (speed and
+/// spin), so that an exact answer is never beyond them.
 struct DivergenceBounds {
   double travel = 0.0;        ///< metres from a body's start
   double energy = 0.0;        ///< joules of |E - E(0)|

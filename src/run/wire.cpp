@@ -85,7 +85,7 @@ void put(Writer& w, const EventTrace& events) {
     for (const auto& crossings : b.upward_crossings) put(w, crossings);
     put(w, b.velocity_range);
     w.raw<char>(b.stop_time.has_value());
-    if (b.stop_time) w.raw(*b.stop_time), put(w, b.stop_position);
+    if (b.stop_time) w.raw(*b.stop_time), put(w, b.stop_position), put(w, b.motion_start);
     w.raw<char>(b.fall_time.has_value());
     if (b.fall_time) w.raw(*b.fall_time);
   }
@@ -107,7 +107,8 @@ EventTrace get_events(Reader& r) {
     b.max_penetration = r.raw<double>();
     for (auto& crossings : b.upward_crossings) crossings = get_values(r);
     b.velocity_range = get_vec(r);
-    if (r.raw<char>()) b.stop_time = r.raw<double>(), b.stop_position = get_vec(r);
+    if (r.raw<char>())
+      b.stop_time = r.raw<double>(), b.stop_position = get_vec(r), b.motion_start = get_vec(r);
     if (r.raw<char>()) b.fall_time = r.raw<double>();
   }
   if (r.raw<char>()) {
@@ -150,6 +151,7 @@ std::string encode(const RunRecord& run) {
       put(w, b.position), put(w, b.velocity), put(w, b.angular_velocity);
       w.raw(b.orientation.w()), w.raw(b.orientation.x()), w.raw(b.orientation.y()),
           w.raw(b.orientation.z());
+      w.raw(b.turn);
     }
   put(w, t.events);
   // What the child measured against the reference, if it did.
@@ -199,6 +201,7 @@ RunRecord decode_run(const std::string& bytes) {
       const double w = r.raw<double>(), x = r.raw<double>(), y = r.raw<double>(),
                    z = r.raw<double>();
       b.orientation = {w, x, y, z};
+      b.turn = r.raw<double>();
     }
     run.trajectory.states.push_back(std::move(state));
   }

@@ -21,7 +21,9 @@ std::vector<ContactPair> contact_pairs(const Scene& scene) {
                                     scene.ground->friction_kinetic});
     }
   const auto add = [&](int a, int b, const Contact& c) {
-    const bool swap = scene.bodies[a].shape == Shape::Box;
+    // The fixed body, when one takes part, is b; else a box is.
+    const bool swap =
+        scene.bodies[a].fixed || (!scene.bodies[b].fixed && scene.bodies[a].shape == Shape::Box);
     out.push_back(
         {swap ? b : a, swap ? a : b, c.restitution, c.friction_static, c.friction_kinetic});
   };

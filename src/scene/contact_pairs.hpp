@@ -14,7 +14,7 @@ namespace bb {
 /// Two things that may touch: body `a` against body `b`, or against the ground (b = -1).
 struct ContactPair {
   int a = -1;
-  int b = -1;  ///< -1: the ground; a fixed box, when one takes part, is always b
+  int b = -1;  ///< -1: the ground; a fixed body, when one takes part, is always b; else a box is
   double restitution = 0.0;
   double friction_static = 0.0;
   double friction_kinetic = 0.0;

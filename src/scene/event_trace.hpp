@@ -26,11 +26,13 @@ struct BodyEvents {
   /// body whose period is observed.
   std::array<std::vector<double>, 3> upward_crossings;
   Vec3 velocity_range;  ///< m/s per axis: largest minus smallest component seen
-  /// Seconds: the first time the body's velocity along the ground reached zero or turned
-  /// back after it slid, or 0 for a body at rest from the start that stays at rest; for
-  /// bodies whose stop is observed.
+  /// Seconds from the start of the run: the end of the body's last motion along the ground,
+  /// where its velocity along the ground reached zero or turned back; 0 for a body at rest
+  /// throughout; none while its last motion goes on. A motion begins at the start or where
+  /// the body leaves a rest. For bodies whose stop is observed.
   std::optional<double> stop_time;
   Vec3 stop_position;  ///< metres: where it was at stop_time
+  Vec3 motion_start;   ///< metres: where the motion that ended at stop_time began
   /// Seconds: the first time the body's centre came within kFallAllowance of the height it
   /// has lying on its broadest face (a wall reaching the ground), for bodies whose fall is
   /// observed.

@@ -12,6 +12,10 @@ struct BodyState {
   Vec3 velocity;                        ///< metres per second
   Quat orientation = Quat::Identity();  ///< unit quaternion
   Vec3 angular_velocity;                ///< radians per second, world frame
+  /// Radians: the turn about z (2D scenes), unwrapped at every step from the spin, starting
+  /// at the initial angle in (-pi, pi]. Not a backend's: the runner keeps it from the steps
+  /// it watches (0 where nothing turns in 2D, and in 3D).
+  double turn = 0.0;
 };
 
 /// One entry per body, in the scene's body order.

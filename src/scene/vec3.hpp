@@ -32,9 +32,13 @@ inline Quat quat_from_rotation_vector(const Vec3& omega, double t) {
   return quat_from_axis_angle(omega / rate, rate * t);
 }
 
-/// Angle about z (radians) of a rotation that is about z, as in a 2D scene.
+/// Angle about z (radians, in (-pi, pi]) of a rotation that is about z, as in a 2D scene.
+/// q and -q are the same rotation: taking w >= 0 keeps the angle within half a turn (else
+/// 2 atan2(z, w) jumps by a whole 4 pi where w changes sign, and an unwrap by 2 pi loses a
+/// turn there).
 inline double angle_about_z(const Quat& q) {
-  return 2.0 * std::atan2(q.z(), q.w());
+  const double sign = q.w() < 0.0 ? -1.0 : 1.0;
+  return 2.0 * std::atan2(sign * q.z(), sign * q.w());
 }
 
 }  // namespace bb

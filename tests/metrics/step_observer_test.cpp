@@ -180,5 +180,89 @@ TEST(StepObserver, FindsAnApexBetweenItsSteps) {
   EXPECT_NEAR(e.apex_heights[0], r + v0 * v0 / (2.0 * g), 1e-12);
 }
 
+// A stop is the end of the body's last motion along the ground, which begins where it
+// leaves a rest (or at the start): a block at rest that is pushed stops where that slide
+// ends, not at t = 0; one pushed twice stops where the second slide ends; one that rests
+// for a few steps and then slides to the end never stops; a wobble far smaller than the
+// slide after a stop, or a jitter at rest before a push, is no motion of its own.
+TEST(StepObserver, AStopIsTheEndOfTheLastMotionMeasuredFromWhereItBegan) {
+  const Scene scene =
+      test::scene_from(test::level_ground_case("stops", "friction_static = 0.5\n") +
+                       test::resting_box("pushed", 0.0) + test::resting_box("twice", 5.0) +
+                       test::resting_box("late", 10.0) + test::resting_box("wobbles", 15.0) +
+                       test::resting_box("jitters", 20.0) + test::resting_box("nudged", 25.0) +
+                       test::resting_box("against", 30.0) +
+                       R"([[observe]]
+kind = "stop_time"
+body = "pushed"
+[[observe]]
+kind = "stop_time"
+body = "twice"
+[[observe]]
+kind = "stop_time"
+body = "late"
+[[observe]]
+kind = "stop_time"
+body = "wobbles"
+[[observe]]
+kind = "stop_time"
+body = "jitters"
+[[observe]]
+kind = "stop_time"
+body = "nudged"
+[[observe]]
+kind = "stop_time"
+body = "against"
+)");
+  StepObserver observer(scene);
+  // Velocities along x at t = 0, 0.1, ..., 1.0 s.
+  const std::vector<std::vector<double>> v = {
+      {0.0, 0.0, 0.0, 0.0, 0.3, 0.2, 0.1, 0.0, 0.0, 0.0, 0.0},
+      {0.3, 0.2, 0.1, 0.0, 0.0, 0.0, 0.4, 0.2, 0.0, 0.0, 0.0},
+      {0.0, 0.0, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0},
+      {1.0, 0.5, 0.0, 0.0, 0.0, 1e-4, 0.0, 0.0, 0.0, 0.0, 0.0},
+      {0.0, 2e-6, -2e-6, 2e-6, 0.5, 0.3, 0.1, 0.0, 0.0, 0.0, 0.0},
+      {0.0, 5e-3, 0.0, 0.5, 0.3, 0.1, 0.0, 0.0, 0.0, 0.0, 0.0},
+      {0.0, -1e-5, -1e-5, -1e-5, 0.5, 0.3, 0.1, 0.0, 0.0, 0.0, 0.0}};
+  const std::size_t n = v.size();
+  State s(n);
+  for (std::size_t i = 0; i < n; ++i) s[i].position = scene.bodies[i].position;
+  for (std::size_t k = 0; k < v[0].size(); ++k) {
+    for (std::size_t i = 0; i < n; ++i) {
+      // Each step moves a body by the mean of the velocities at its ends.
+      if (k > 0) s[i].position.x() += 0.05 * (v[i][k - 1] + v[i][k]);
+      s[i].velocity = {v[i][k], 0.0, 0.0};
+    }
+    observer.observe(0.1 * static_cast<double>(k), s);
+  }
+  const EventTrace e = observer.trace();
+  ASSERT_TRUE(e.bodies[0].stop_time && e.bodies[1].stop_time && e.bodies[3].stop_time);
+  // Pushed between 0.3 and 0.4 s, stopped at 0.7 s after 0.015 + 0.025 + 0.015 + 0.005 m.
+  EXPECT_NEAR(*e.bodies[0].stop_time, 0.7, 1e-15);
+  EXPECT_NEAR((e.bodies[0].stop_position - e.bodies[0].motion_start).x(), 0.06, 1e-15);
+  EXPECT_NEAR(e.bodies[0].motion_start.x(), 0.0, 1e-15);
+  // The second slide: from 0.5 s, stopped at 0.8 s after 0.02 + 0.03 + 0.01 m.
+  EXPECT_NEAR(*e.bodies[1].stop_time, 0.8, 1e-15);
+  EXPECT_NEAR((e.bodies[1].stop_position - e.bodies[1].motion_start).x(), 0.06, 1e-15);
+  // Still sliding at the end: no stop.
+  EXPECT_FALSE(e.bodies[2].stop_time);
+  // The wobble at a ten-thousandth of the slide's speed is no motion: the stop stays at 0.2 s.
+  EXPECT_NEAR(*e.bodies[3].stop_time, 0.2, 1e-15);
+  // A float engine's jitter at rest (above a millionth of |g| dt, turning back and forth)
+  // is no motion either; the push after it is: from 0.3 s to its stop at 0.7 s.
+  ASSERT_TRUE(e.bodies[4].stop_time);
+  EXPECT_NEAR(*e.bodies[4].stop_time, 0.7, 1e-15);
+  EXPECT_NEAR(e.bodies[4].motion_start.x(), 20.0 + 0.05 * 2e-6, 1e-12);
+  // A jitter above the quiet level that comes to rest one step before a push does not hide
+  // the push: the slide from 0.2 s stops at 0.6 s after 0.025 + 0.04 + 0.02 + 0.005 m.
+  ASSERT_TRUE(e.bodies[5].stop_time);
+  EXPECT_NEAR(*e.bodies[5].stop_time, 0.6, 1e-15);
+  EXPECT_NEAR((e.bodies[5].stop_position - e.bodies[5].motion_start).x(), 0.09, 1e-12);
+  // A push against the direction of a creep below the quiet level is no turning back:
+  // bullet-float's block stopped "at the push" this way. It stops where the slide ends.
+  ASSERT_TRUE(e.bodies[6].stop_time);
+  EXPECT_NEAR(*e.bodies[6].stop_time, 0.7, 1e-15);
+}
+
 }  // namespace
 }  // namespace bb

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "metrics/observables.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "scene/load_case.hpp"
@@ -186,6 +187,113 @@ velocity = [1.0, 0.0, 0.0]
   const RunRecord rests = run_accuracy(ReferenceBackend(), test::scene_from(text), 0.01);
   EXPECT_EQ(rests.status, RunStatus::Unsupported);
   EXPECT_NE(rests.reason.find("roll"), std::string::npos) << rests.reason;
+}
+
+/// A 2 kg cube at rest on level ground (mu_s 0.4, mu_k 0.3) pushed along x by `impulse`
+/// N s at 0.5 s, observed for 3 s.
+Scene pushed_block(const std::string& impulses) {
+  return test::scene_from(R"(name = "pushed"
+dims = 2
+duration = 3.0
+sample = 0.0333333333333333333
+dt = [0.0166666666666666667]
+report_dt = 0.0166666666666666667
+[ground]
+friction_static = 0.4
+friction_kinetic = 0.3
+[[body]]
+name = "block"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 2.0
+position = [0.0, 0.5, 0.0]
+)" + impulses + R"(
+[[observe]]
+kind = "stop_time"
+body = "block"
+[[observe]]
+kind = "stop_distance"
+body = "block"
+[[observe]]
+kind = "rest_creep"
+body = "block"
+)");
+}
+
+// A block at rest pushed at 0.5 s: its stop is the end of that motion, measured from where
+// the motion began. v0 = J / m = 3 m/s, mu_k g = 2.943 m/s^2: it stops at 0.5 + v0 /
+// (mu_k g) = 1.519 s (stop_time counts from the start of the run) after v0^2 / (2 mu_k g) =
+// 1.529 m, and creeps nothing after that. Pushed again at 2 s, the stop is that second
+// slide's.
+TEST(FrictionReference, ABlockPushedFromRestStopsAtTheEndOfItsSlide) {
+  const double mu_g = 0.3 * 9.81;
+  const Scene once =
+      pushed_block("[[impulse]]\nbody = \"block\"\ntime = 0.5\nimpulse = [6.0, 0.0, 0.0]\n");
+  const RunRecord run = run_accuracy(ReferenceBackend(), once, once.report_dt);
+  ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+  const auto value = [&](const Scene& scene, const RunRecord& r, int k) {
+    return measure(scene, scene.observes[k], r.trajectory, &r.trajectory.events).value;
+  };
+  ASSERT_TRUE(value(once, run, 0) && value(once, run, 1) && value(once, run, 2));
+  EXPECT_NEAR(*value(once, run, 0), 0.5 + 3.0 / mu_g, kClosedForm);
+  EXPECT_NEAR(*value(once, run, 1), 9.0 / (2.0 * mu_g), kClosedForm);
+  EXPECT_NEAR(*value(once, run, 2), 0.0, kClosedForm);
+  const Scene twice = pushed_block(
+      "[[impulse]]\nbody = \"block\"\ntime = 0.5\nimpulse = [6.0, 0.0, 0.0]\n"
+      "[[impulse]]\nbody = \"block\"\ntime = 2.0\nimpulse = [-4.0, 0.0, 0.0]\n");
+  const RunRecord again = run_accuracy(ReferenceBackend(), twice, twice.report_dt);
+  ASSERT_EQ(again.status, RunStatus::Ok) << again.reason;
+  ASSERT_TRUE(value(twice, again, 0) && value(twice, again, 1));
+  EXPECT_NEAR(*value(twice, again, 0), 2.0 + 2.0 / mu_g, kClosedForm);
+  EXPECT_NEAR(*value(twice, again, 1), 4.0 / (2.0 * mu_g), kClosedForm);
+}
+
+// A block going down a fixed ramp (a fixed box) onto the level ground: the reference does
+// not slide boxes on other bodies, and its reason says that, naming the fixed ramp as fixed
+// and the block as the box, whichever order the case lists the two bodies in, with friction
+// on the ramp or without.
+TEST(FrictionReference, ARampsReasonNamesTheBoxOnAFixedBody) {
+  const std::string head = R"(name = "ramp"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.01]
+report_dt = 0.01
+[ground]
+friction_static = 0.6
+friction_kinetic = 0.5
+)";
+  const std::string ramp = R"([[body]]
+name = "ramp"
+shape = "box"
+half_extents = [3.0, 0.1, 0.5]
+mass = 1.0
+position = [0.0, 1.5, 0.0]
+angle = -30.0
+fixed = true
+)";
+  // The block starts a little above the ramp's top face (a start inside is refused).
+  const std::string block = R"([[body]]
+name = "block"
+shape = "box"
+half_extents = [0.2, 0.2, 0.2]
+mass = 1.0
+position = [-1.577, 2.78, 0.0]
+angle = -30.0
+)";
+  const std::string contact = "[[contact]]\nbodies = [\"block\", \"ramp\"]\n";
+  const std::string rubbing = contact + "friction = 0.3\n";
+  for (const std::string& text : {head + ramp + block + rubbing, head + block + ramp + rubbing,
+                                  head + block + ramp + contact}) {
+    const RunRecord run = run_accuracy(ReferenceBackend(), test::scene_from(text), 0.01);
+    EXPECT_EQ(run.status, RunStatus::Unsupported);
+    EXPECT_EQ(run.reason.find("two moving bodies"), std::string::npos) << run.reason;
+    EXPECT_NE(run.reason.find("fixed body 'ramp'"), std::string::npos) << run.reason;
+    EXPECT_NE(run.reason.find("box 'block'"), std::string::npos) << run.reason;
+    // With friction on the ramp, the reason says friction is what the reference lacks.
+    const bool rubs = text.find("friction = 0.3") != std::string::npos;
+    EXPECT_EQ(run.reason.find("with friction") != std::string::npos, rubs) << run.reason;
+  }
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ TEST(Wire, ARunRecordComesBackWhole) {
   run.trajectory.events.bodies[0].post_normal = Vec3{0.0, -1.0, 0.0};
   run.trajectory.events.bodies[1].stop_time = 1.25;
   run.trajectory.events.bodies[1].stop_position = {2.5, 0.5, -1.0};
+  run.trajectory.events.bodies[1].motion_start = {1.0, 0.5, -1.0};
   run.trajectory.events.max_stretch = 0.1;
 
   const RunRecord back = wire::decode_run(wire::encode(run));
@@ -65,6 +66,7 @@ TEST(Wire, ARunRecordComesBackWhole) {
   EXPECT_EQ(back.trajectory.events.bodies.at(0).post_normal, Vec3(0.0, -1.0, 0.0));
   EXPECT_EQ(back.trajectory.events.bodies.at(1).stop_time, 1.25);
   EXPECT_EQ(back.trajectory.events.bodies.at(1).stop_position, Vec3(2.5, 0.5, -1.0));
+  EXPECT_EQ(back.trajectory.events.bodies.at(1).motion_start, Vec3(1.0, 0.5, -1.0));
   EXPECT_EQ(back.trajectory.events.max_stretch, 0.1);
 }
 
@@ -74,11 +76,13 @@ TEST(Wire, StatesOfAFewBodiesComeBack) {
   run.trajectory.states = {State(2), State(2)};
   run.trajectory.states[1][1].position = {1.0, 2.0, 3.0};
   run.trajectory.states[1][1].orientation = Quat(0.5, 0.5, 0.5, 0.5);
+  run.trajectory.states[1][1].turn = -41.5;
   const RunRecord back = wire::decode_run(wire::encode(run));
   ASSERT_EQ(back.trajectory.states.size(), 2u);
   ASSERT_EQ(back.trajectory.states[1].size(), 2u);
   EXPECT_EQ(back.trajectory.states[1][1].position, Vec3(1.0, 2.0, 3.0));
   EXPECT_EQ(back.trajectory.states[1][1].orientation.coeffs(), Quat(0.5, 0.5, 0.5, 0.5).coeffs());
+  EXPECT_EQ(back.trajectory.states[1][1].turn, -41.5);
   EXPECT_FALSE(back.errors.has_value());
   EXPECT_FALSE(back.summarised);
 }
