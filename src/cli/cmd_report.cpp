@@ -7,10 +7,12 @@
 #include "cli/progress.hpp"
 #include "files/file_batch.hpp"
 #include "report/claims_page.hpp"
+#include "report/cost_noise.hpp"
 #include "report/format.hpp"
 #include "report/markdown_text.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/table.hpp"
+#include "run/cost.hpp"
 #include "run/interrupt.hpp"
 #include "run/stability.hpp"
 
@@ -26,7 +28,7 @@ std::string index_cell(const CaseResults& r, const RunRecord& run) {
       " m";
   if (const auto o = r.order.find(run.backend); o != r.order.end())
     cell += fmt::format(", p {:.2f}", o->second);
-  if (run.cost) cell += ", " + format_ns(run.cost->ns_per_step) + " ns";
+  if (run.cost) cell += ", " + cost_ns_cell(run.cost) + " ns";
   for (const GateResult& g : r.gates)
     if (g.gate.backend == run.backend) cell += g.passed ? " ✓" : " ✗";
   return cell;
@@ -90,15 +92,27 @@ std::string index_page(const std::vector<CaseResults>& all,
         "**Sweeps** (one parameter varied, every backend at each value; the published "
         "benchmarks rerun):\n\n" +
         sweeps + "\n";
+  // The cases whose costs were timed on a busy machine.
+  std::string busy;
+  for (const CaseResults& r : all)
+    if (cost_noise(r).busy > 0)
+      busy += fmt::format("{}[{}]({}.md) ({} of {})", busy.empty() ? "" : ", ", r.scene->name,
+                          r.scene->name, cost_noise(r).busy, cost_noise(r).judged);
+  if (!busy.empty())
+    busy = fmt::format(
+        "**Cost noise**: some runs were timed on a busy machine (their median repeat took more "
+        "than {:g} times the fastest; marked ~): {}.\n\n",
+        kBusyMedianOverMin, busy);
   return "# beachball report\n\nThe bundled suite, one page per case: the scene, every backend's "
          "error against the GSL reference and its cost, the whole dt sweep with work-precision "
          "diagrams, trajectories and energy, the stability search, the gates and the engine "
          "settings used. Regenerate with `scripts/report`; only cost figures change.\n\n"
          "**[Claims ledger](claims.md)**: the course text's sentences, each with its verdict "
          "per backend and the numbers behind it.\n\n" +
-         sweeps + render_markdown(titles) +
+         sweeps + busy + render_markdown(titles) +
          "\n## At report_dt\n\nEach cell: position_max against the reference at the case's "
-         "report_dt, the observed order of convergence p over the sweep, the median cost of one "
+         "report_dt, the observed order of convergence p over the sweep (only where the sweep "
+         "has an asymptotic range; the case page says why not), the median cost of one "
          "step, and ✓ or ✗ where a gate covers the backend.\n\n" +
          render_markdown(t) + rotation;
 }

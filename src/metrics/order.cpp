@@ -2,9 +2,33 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <cstdio>
 
 namespace bb {
+
+namespace {
+
+std::string number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  return buffer;
+}
+
+enum class Use { InRange, Rounding, Saturated, Failed };
+
+/// "(2 at the floor, 1 saturated, 3 failed)", naming only what there is.
+std::string others(const OrderFit& fit) {
+  std::string out;
+  const auto add = [&](int n, const char* what) {
+    if (n > 0) out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+  };
+  add(fit.below_floor, "at the rounding floor");
+  add(fit.saturated, "saturated");
+  add(fit.failed, "failed");
+  return out.empty() ? "" : " (" + out + ")";
+}
+
+}  // namespace
 
 double largest_position(const Trajectory& trajectory) {
   double largest = 0.0;
@@ -13,27 +37,116 @@ double largest_position(const Trajectory& trajectory) {
   return largest;
 }
 
-double error_floor(double largest, double self_check, long steps) {
-  const double rounding = std::numeric_limits<double>::epsilon() * largest *
-                          std::max(100.0, static_cast<double>(steps));
+double largest_travel(const Trajectory& trajectory) {
+  double largest = 0.0;
+  if (trajectory.states.empty()) return largest;
+  const State& start = trajectory.states.front();
+  for (const State& state : trajectory.states)
+    for (std::size_t i = 0; i < state.size() && i < start.size(); ++i)
+      largest = std::max(largest, (state[i].position - start[i].position).norm());
+  return largest;
+}
+
+double error_floor(double largest, double self_check, long steps, double epsilon) {
+  const double rounding = epsilon * largest * std::max(100.0, static_cast<double>(steps));
   return std::max(10.0 * self_check, rounding);
 }
 
-OrderFit fit_order(const std::vector<ErrorPoint>& points) {
+double slope_tolerance(double mean_slope) {
+  return std::max(0.25, 0.15 * std::abs(mean_slope));
+}
+
+OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
   OrderFit fit;
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  std::vector<ErrorPoint> points;
+  for (const ErrorPoint& p : input)
+    if (p.dt > 0.0) points.push_back(p);
+  std::sort(points.begin(), points.end(),
+            [](const ErrorPoint& a, const ErrorPoint& b) { return a.dt < b.dt; });
+  std::vector<Use> use;
   for (const ErrorPoint& p : points) {
-    if (!std::isfinite(p.error) || p.dt <= 0.0) continue;
-    if (!(p.error > p.floor)) {
-      ++fit.below_floor;
-      continue;
+    const Use u = !std::isfinite(p.error) ? Use::Failed
+                  : !(p.error > p.floor)  ? Use::Rounding
+                  : p.error >= saturation ? Use::Saturated
+                                          : Use::InRange;
+    fit.failed += u == Use::Failed;
+    fit.below_floor += u == Use::Rounding;
+    fit.saturated += u == Use::Saturated;
+    use.push_back(u);
+  }
+  // Local slopes between neighbouring steps that both have an error above zero.
+  const auto measurable = [&](std::size_t i) {
+    return std::isfinite(points[i].error) && points[i].error > 0.0;
+  };
+  const auto slope = [&](std::size_t i) {
+    return std::log(points[i + 1].error / points[i].error) /
+           std::log(points[i + 1].dt / points[i].dt);
+  };
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+    if (measurable(i) && measurable(i + 1))
+      fit.local_slopes.push_back({points[i].dt, points[i + 1].dt, slope(i), false});
+
+  const auto first = std::find(use.begin(), use.end(), Use::InRange);
+  if (first == use.end()) {
+    fit.reason = points.empty() || fit.failed == static_cast<int>(points.size())
+                     ? "no run with an error to fit"
+                 : fit.saturated == 0 && fit.failed == 0
+                     ? "rounding: every error is at or below its rounding floor"
+                 : fit.below_floor == 0 && fit.failed == 0
+                     ? "saturated: every error is at or above a tenth of the motion's scale (" +
+                           number(saturation) + " m)"
+                     : "no error between the rounding floor and saturation" + others(fit);
+    return fit;
+  }
+  // From the smallest dt in range upwards, while the next step is in range and the local
+  // slopes so far agree.
+  const std::size_t start = static_cast<std::size_t>(first - use.begin());
+  std::size_t end = start + 1;
+  std::vector<double> slopes;
+  std::optional<double> disagreeing;
+  for (; end < points.size() && use[end] == Use::InRange; ++end) {
+    slopes.push_back(slope(end - 1));
+    const auto [low, high] = std::minmax_element(slopes.begin(), slopes.end());
+    double mean = 0.0;
+    for (double s : slopes) mean += s / static_cast<double>(slopes.size());
+    if (*high - *low > slope_tolerance(mean)) {
+      disagreeing = slopes.back();
+      slopes.pop_back();
+      break;
     }
-    const double x = std::log(p.dt), y = std::log(p.error);
+  }
+  const int in_run = static_cast<int>(end - start);
+  if (in_run < 3) {
+    const double opening = slopes.empty() ? disagreeing.value_or(0.0) : slopes.front();
+    if (disagreeing && opening < 0.0)
+      fit.reason = "rounding: the error grows as dt shrinks (local slope " + number(opening) +
+                   " from " + number(points[start].dt) + " s)";
+    else if (disagreeing)
+      fit.reason = "not asymptotic: the local slopes from the smallest step in range, " +
+                   (slopes.empty() ? "" : number(slopes.front()) + " then ") +
+                   number(*disagreeing) + ", disagree";
+    else
+      fit.reason = "too few points: " + std::to_string(in_run) +
+                   " in a row between the rounding floor and saturation, three needed" +
+                   others(fit);
+    return fit;
+  }
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = start; i < end; ++i) {
+    const double x = std::log(points[i].dt), y = std::log(points[i].error);
     n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
   }
-  fit.used = static_cast<int>(n);
-  const double denominator = n * sxx - sx * sx;
-  if (n >= 2 && denominator > 0.0) fit.slope = (n * sxy - sx * sy) / denominator;
+  const double fitted = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  // An error that does not shrink with dt is held by something other than the step.
+  if (fitted < kSmallestOrder) {
+    fit.reason = "not converging: the error barely shrinks with dt (slope " + number(fitted) +
+                 " over the " + std::to_string(in_run) + " smallest steps in range)";
+    return fit;
+  }
+  fit.used = in_run;
+  fit.slope = fitted;
+  for (LocalSlope& s : fit.local_slopes)
+    s.in_fit = s.dt_small >= points[start].dt && s.dt_large <= points[end - 1].dt;
   return fit;
 }
 

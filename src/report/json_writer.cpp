@@ -1,6 +1,7 @@
 #include "report/json_writer.hpp"
 
 #include "run/claims.hpp"
+#include "run/cost.hpp"
 
 namespace bb {
 
@@ -31,7 +32,11 @@ Json run_json(const RunRecord& run) {
   if (run.cost)
     j["cost"] = {{"ns_per_step", run.cost->ns_per_step},
                  {"seconds_per_simulated_second", run.cost->seconds_per_simulated_second},
-                 {"repeats", run.cost->repeats}};
+                 {"repeats", run.cost->repeats},
+                 {"ns_per_step_min", run.cost->ns_per_step_min},
+                 {"ns_per_step_median", run.cost->ns_per_step},
+                 {"ns_per_step_max", run.cost->ns_per_step_max},
+                 {"busy", timed_on_a_busy_machine(*run.cost)}};
   else
     j["cost"] = nullptr;
   if (run.errors)
@@ -96,8 +101,27 @@ Json results_json(const CaseResults& results) {
   for (const auto& [name, slope] : results.order) j["order"][name] = slope;
   // How many points each fit used, and how many sat at or below their error floor.
   j["order_fit"] = Json::object();
-  for (const auto& [name, counts] : results.order_points)
-    j["order_fit"][name] = {{"points", counts.first}, {"below_floor", counts.second}};
+  for (const auto& [name, fit] : results.order_fits)
+    j["order_fit"][name] = {{"points", fit.used}, {"below_floor", fit.below_floor}};
+  // Each backend's fit in full: its order or why there is none, and the local slopes.
+  j["order_detail"] = Json::object();
+  for (const auto& [name, fit] : results.order_fits) {
+    Json slopes = Json::array();
+    for (const LocalSlope& s : fit.local_slopes)
+      slopes.push_back(
+          {{"dt", {s.dt_small, s.dt_large}}, {"slope", s.slope}, {"in_fit", s.in_fit}});
+    const auto saturation = results.order_saturation.find(name);
+    j["order_detail"][name] = {
+        {"order", optional_json(fit.slope)},
+        {"reason", fit.reason},
+        {"points", fit.used},
+        {"below_floor", fit.below_floor},
+        {"saturated", fit.saturated},
+        {"failed", fit.failed},
+        {"saturation",
+         saturation == results.order_saturation.end() ? Json(nullptr) : Json(saturation->second)},
+        {"local_slopes", slopes}};
+  }
   // Each claim's verdict per backend, computed from the runs above.
   j["claims"] = Json::array();
   for (const ClaimResult& c : judge_claims(results)) {
@@ -114,15 +138,23 @@ Json results_json(const CaseResults& results) {
                            {"verdicts", verdicts}});
   }
   j["stability"] = Json::object();
-  for (const StabilityResult& r : results.stability)
+  for (const StabilityResult& r : results.stability) {
+    // Each stretch of steps with one verdict, smallest first: more than two where stability
+    // is not monotone in dt.
+    Json bands = Json::array();
+    for (const StabilityBand& b : r.bands)
+      bands.push_back({{"from", b.from}, {"to", b.to}, {"stable", b.stable}, {"reason", b.reason}});
     j["stability"][r.backend] = {{"critical_dt", optional_json(r.critical_dt)},
                                  {"unstable_dt", optional_json(r.unstable_dt)},
                                  {"status", r.status},
                                  {"reason", r.reason},
+                                 {"stable_note", r.stable_note},
+                                 {"bands", bands},
                                  {"theory", optional_json(r.theory)},
                                  {"theory_formula", r.theory_formula},
                                  {"theory_note", r.theory_note},
                                  {"trials", r.trials}};
+  }
   // The case at each value of its [[sweep]], every backend at report_dt.
   if (results.sweep) {
     Json sweep = {{"parameter", results.sweep->parameter}, {"values", Json::array()}};

@@ -6,12 +6,15 @@
 #include <set>
 
 #include "report/claims_page.hpp"
+#include "report/cost_noise.hpp"
 #include "report/format.hpp"
 #include "report/markdown_text.hpp"
+#include "report/order_table.hpp"
 #include "report/scene_description.hpp"
 #include "report/summary_tables.hpp"
 #include "report/sweep_page.hpp"
 #include "report/work_precision.hpp"
+#include "run/cost.hpp"
 
 namespace bb {
 
@@ -72,19 +75,9 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
     out += "\n";
     for (const std::string& n : notes) out += "- " + markdown_text(n) + "\n";
   }
-  out +=
-      "\nThe order column is the least-squares slope of log position_max against log dt over "
-      "the sweep, using the points above their error floor: ten times the reference's "
-      "self-check, or the rounding a run can pile up on the largest position (machine epsilon "
-      "times that position times the run's number of steps, at least 100 of them), whichever "
-      "is larger. A point below its floor measures noise, not the method, and is left out.\n";
-  std::string left_out;
-  for (const auto& [name, counts] : results.order_points)
-    if (counts.second > 0)
-      left_out += fmt::format("{}- {}: {} of {} points below the floor\n",
-                              left_out.empty() ? "\nLeft out of the order fit:\n\n" : "", name,
-                              counts.second, counts.first + counts.second);
-  out += left_out;
+  if (const std::string busy = cost_noise_warning(results); !busy.empty())
+    out += "\n" + markdown_text(busy) + "\n";
+  out += order_markdown(results);
 
   if (!plots.motion.empty()) {
     out += fmt::format("\n## The motion at report_dt = {} s\n\n", format_dt(scene.report_dt));
@@ -168,12 +161,20 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
 
   if (!results.stability.empty()) {
     out += fmt::format(
-        "\n## Stability\n\nThe largest stable step per backend, by bisection in log dt between "
-        "{:g} s and {:g} s. Stable means bounded over the {:g} s of the case: no divergence, "
-        "and the energy's rise above its start not still growing at the end (its largest rise "
-        "in the last quarter of the run at most {:g} times that in the second quarter). A "
-        "large swing that repeats itself is stable. Theory, where the scene allows one, is "
-        "derived from the case's own numbers.\n\n",
+        "\n## Stability\n\nThe largest stable step per backend, searched in log dt between "
+        "{:g} s and {:g} s: bisection to 0.1 percent, then steps at 0.9, 0.75, 0.5 and 0.25 of "
+        "the one found are probed, and wherever neighbouring steps disagree the search narrows "
+        "down between them (to 1 percent above the first threshold). Where stability is not "
+        "monotone in dt the result lists the bands, and the largest stable step is the largest "
+        "with every step tried below it stable. Stable means bounded over the {:g} s of the "
+        "case: no divergence, and an energy whose rise above its start neither compounds (in "
+        "each of the run's last two quarters it grows more than {:g} times faster than steady "
+        "drift would, without slowing down as any power of time does) nor runs away (from "
+        "within the scene's energy scale to more than ten times it, even if the motion's "
+        "nonlinearity then caps it). Drift that adds (explicit Euler's energy on a parabola) "
+        "and a large swing that repeats itself are stable, and the result says when the "
+        "largest stable step drifts. Theory, where the scene allows one, is derived from the "
+        "case's own numbers.\n\n",
         scene.stability.dt_min, scene.stability.dt_max, scene.duration,
         scene.stability.growth_factor);
     out += render_markdown(stability_table(results));
@@ -207,9 +208,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         ref.self_check->orientation, ref.self_check->spin);
   else
     out += "- self-check: none (" + markdown_text(ref.self_check_note) + ")\n";
-  out +=
+  out += fmt::format(
       "- cost: time spent in step() only, in a serial pass after the accuracy runs; each run "
-      "is repeated until the timed total reaches a minimum and the median is reported\n";
+      "is repeated until the timed total reaches a minimum and the median is reported (the "
+      "JSON gives the fastest and slowest repeat beside it); a median more than {:g} times "
+      "the fastest repeat, over three repeats or more, says the machine was busy while that "
+      "run was timed, and its cost is marked ~\n",
+      kBusyMedianOverMin);
   out += "- versions:";
   for (const auto& [library, version] : results.versions)
     out += " " + markdown_text(library + " " + version) + ";";

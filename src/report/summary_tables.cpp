@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "report/cost_noise.hpp"
 #include "report/format.hpp"
 
 namespace bb {
@@ -55,10 +56,8 @@ Table summary_table(const CaseResults& results, double dt) {
       row.push_back(is_reference ? "-" : format_value(error_of(run, m)));
     for (const Observe& o : scene.observes)
       row.push_back(observable_cell(run, o.name, is_reference));
-    row.push_back(
-        format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt));
-    row.push_back(format_value(
-        run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second) : std::nullopt));
+    row.push_back(cost_ns_cell(run.cost));
+    row.push_back(cost_seconds_cell(run.cost));
     const auto order = results.order.find(run.backend);
     row.push_back(order == results.order.end() ? "-" : fmt::format("{:.2f}", order->second));
     t.rows.push_back(row);
@@ -113,13 +112,28 @@ Table sweep_table(const CaseResults& results) {
                                     format_value(error_of(run, "energy_max"))};
     for (const Observe& o : results.scene->observes)
       row.push_back(observable_cell(run, o.name, false));
-    row.push_back(
-        format_ns(run.cost ? std::optional<double>(run.cost->ns_per_step) : std::nullopt));
-    row.push_back(format_value(
-        run.cost ? std::optional<double>(run.cost->seconds_per_simulated_second) : std::nullopt));
+    row.push_back(cost_ns_cell(run.cost));
+    row.push_back(cost_seconds_cell(run.cost));
     t.rows.push_back(row);
   }
   return t;
+}
+
+std::string stability_bands_text(const StabilityResult& r) {
+  std::string out = "not monotone:";
+  for (std::size_t i = 0; i < r.bands.size(); ++i) {
+    const StabilityBand& b = r.bands[i];
+    const std::string verdict =
+        std::string(b.stable ? "stable" : "unstable") + (i >= 2 ? " again" : "");
+    const std::string range =
+        i == 0 ? (b.from == b.to ? "at " : "up to ") + format_value(b.to) + " s"
+        : i + 1 == r.bands.size()
+            ? "from " + format_value(b.from) + " s"
+            : "from " + format_value(b.from) + " to " + format_value(b.to) + " s";
+    out += (i > 0 ? "; " : " ") + verdict + " " + range;
+    if (!b.stable && !b.reason.empty()) out += " (" + b.reason + ")";
+  }
+  return out;
 }
 
 Table stability_table(const CaseResults& results) {
@@ -127,8 +141,9 @@ Table stability_table(const CaseResults& results) {
   t.headers = {"backend", "largest stable dt s", "smallest unstable dt s", "theory s", "result"};
   t.right_aligned = {false, true, true, true, false};
   for (const StabilityResult& r : results.stability) {
-    std::string result = r.status;
-    if (!r.reason.empty()) result += ": " + r.reason;
+    std::string result = r.status == "not monotone" ? stability_bands_text(r) : r.status;
+    if (r.status != "not monotone" && !r.reason.empty()) result += ": " + r.reason;
+    if (!r.stable_note.empty()) result += "; at the largest stable step the " + r.stable_note;
     t.rows.push_back({r.backend, format_value(r.critical_dt), format_value(r.unstable_dt),
                       !r.theory          ? "-"
                       : *r.theory == 0.0 ? r.theory_formula

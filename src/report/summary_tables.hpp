@@ -15,6 +15,9 @@ Table summary_table(const CaseResults& results, double dt);
 std::vector<std::string> run_notes(const CaseResults& results, double dt);
 /// Every run of the sweep, one row per (backend, dt).
 Table sweep_table(const CaseResults& results);
+/// "not monotone: stable up to 0.0201 s; unstable from 0.0202 to 0.0249 s (why); stable
+/// again from 0.025 to 0.0325 s; unstable again from 0.0326 s (why)".
+std::string stability_bands_text(const StabilityResult& result);
 /// One row per backend of the stability search, with theory beside it.
 Table stability_table(const CaseResults& results);
 /// One row per gate: backend, metric, value, limit, pass or fail.

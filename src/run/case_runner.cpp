@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "metrics/order.hpp"
 #include "run/accuracy_jobs.hpp"
@@ -96,13 +97,35 @@ void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
           const Timing& t = timings[k];
           Cost c;
           c.repeats = t.repeats;
-          c.ns_per_step =
-              run.steps > 0 ? t.median_seconds * 1e9 / static_cast<double>(run.steps) : 0.0;
+          const auto per_step = [&](double seconds) {
+            return run.steps > 0 ? seconds * 1e9 / static_cast<double>(run.steps) : 0.0;
+          };
+          c.ns_per_step = per_step(t.median_seconds);
+          c.ns_per_step_min = per_step(t.min_seconds);
+          c.ns_per_step_max = per_step(t.max_seconds);
           c.seconds_per_simulated_second =
               t.median_seconds / (static_cast<double>(measures[k].calls) * measures[k].dt);
           run.cost = c;
         }
       });
+}
+
+/// The machine epsilon of a run's arithmetic: float for an engine built in single precision
+/// (its settings say so), else double.
+double arithmetic_epsilon(const RunRecord& run) {
+  for (const auto& [key, value] : run.engine_settings)
+    if (key == "precision" && std::holds_alternative<std::string>(value) &&
+        std::get<std::string>(value) == "float")
+      return std::numeric_limits<float>::epsilon();
+  return std::numeric_limits<double>::epsilon();
+}
+
+/// The largest body of the scene, as the distance from its centre to its farthest point (m):
+/// the motion's scale where the bodies barely move (a ball at rest).
+double largest_body_size(const Scene& scene) {
+  double size = 0.0;
+  for (const Body& b : scene.bodies) size = std::max({size, b.radius, b.half_extents.norm()});
+  return size;
 }
 
 /// How the reference solved the case, as its run's settings name it.
@@ -255,22 +278,26 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     serial.run();
   }
 
-  // Observed order of position_max over the dt sweep, per backend.
+  // Observed order of position_max over the dt sweep, per backend: every run that was
+  // started (a failed one has no error), against its floor and its saturation level.
   std::map<std::string, std::vector<ErrorPoint>> points;
+  const double size = largest_body_size(scene);
   for (const RunRecord& run : out.runs) {
-    if (!run.errors) continue;
-    // The floor's position scale comes from whatever the errors were measured against.
+    if (!run.dt || run.status == RunStatus::Unsupported) continue;
+    // The floor's and saturation's scales come from whatever the errors are measured against.
     const auto own = finest.find(run.backend);
-    const double scale = fallback && own != finest.end() ? own->second->position_scale
-                                                         : out.reference_run.position_scale;
+    const RunRecord* against = fallback && own != finest.end() ? own->second : &out.reference_run;
+    if (against == &run) continue;
+    out.order_saturation[run.backend] = kSaturationFraction * std::max(against->travel, size);
     points[run.backend].push_back(
-        {*run.dt, run.errors->position_max,
-         error_floor(scale, out.reference.self_check_position(), run.steps)});
+        {*run.dt, run.errors ? run.errors->position_max : std::nan(""),
+         error_floor(against->position_scale, out.reference.self_check_position(), run.steps,
+                     arithmetic_epsilon(run))});
   }
   for (const auto& [name, series] : points) {
-    const OrderFit fit = fit_order(series);
+    const OrderFit fit = fit_order(series, out.order_saturation[name]);
     if (fit.slope) out.order[name] = *fit.slope;
-    out.order_points[name] = {fit.used, fit.below_floor};
+    out.order_fits[name] = fit;
   }
 
   // The fallback's whole trajectories are done with: keep what the page draws.

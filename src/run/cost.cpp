@@ -40,8 +40,15 @@ Timing time_steps(const Backend& backend, const Scene& scene, double dt, long st
     total += seconds;
   }
   std::nth_element(per_call.begin(), per_call.begin() + per_call.size() / 2, per_call.end());
-  return {per_call[per_call.size() / 2] * static_cast<double>(steps),
-          static_cast<int>(per_call.size()), most_calls};
+  const auto [fastest, slowest] = std::minmax_element(per_call.begin(), per_call.end());
+  const double calls = static_cast<double>(steps);
+  return {per_call[per_call.size() / 2] * calls, static_cast<int>(per_call.size()), most_calls,
+          *fastest * calls, *slowest * calls};
+}
+
+bool timed_on_a_busy_machine(const Cost& cost) {
+  return cost.repeats >= 3 && cost.ns_per_step_min > 0.0 &&
+         cost.ns_per_step > kBusyMedianOverMin * cost.ns_per_step_min;
 }
 
 }  // namespace bb

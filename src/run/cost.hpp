@@ -18,13 +18,28 @@ struct CostOptions {
   int max_repeats = 30;  ///< the median of thirty is steady; each repeat builds the scene anew
 };
 
-/// Median seconds that `steps` calls of step() take in a fresh run, over repeats.
+/// Seconds that `steps` calls of step() take in a fresh run: median, fastest and slowest
+/// over repeats.
 struct Timing {
   double median_seconds = 0.0;
   int repeats = 0;
   long calls_timed = 0;  ///< most calls timed in one repeat (`steps` unless cut short)
+  double min_seconds = 0.0;
+  double max_seconds = 0.0;
 };
 Timing time_steps(const Backend& backend, const Scene& scene, double dt, long steps,
                   const CostOptions& options);
+
+}  // namespace bb
+
+namespace bb {
+
+/// A cost whose median repeat took more than this many times its fastest was timed on a
+/// busy machine: the median it reports is inflated by whatever else was running.
+inline constexpr double kBusyMedianOverMin = 1.25;
+
+/// Whether `cost` says the machine was busy while it was timed: three repeats or more (fewer
+/// have no spread to read) and a median more than kBusyMedianOverMin times the fastest.
+bool timed_on_a_busy_machine(const Cost& cost);
 
 }  // namespace bb

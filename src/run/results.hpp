@@ -8,6 +8,7 @@
 
 #include "metrics/errors.hpp"
 #include "metrics/observables.hpp"
+#include "metrics/order.hpp"
 #include "metrics/trajectory.hpp"
 #include "scene/backend.hpp"
 
@@ -17,11 +18,14 @@ namespace bb {
 enum class RunStatus { Ok, Diverged, Unsupported, Crashed, Timeout, Error };
 std::string status_name(RunStatus status);
 
-/// Time spent in step() only, from a separate serial pass.
+/// Time spent in step() only, from a separate serial pass: the median over repeats, with the
+/// fastest and slowest repeat beside it.
 struct Cost {
   double ns_per_step = 0.0;
   double seconds_per_simulated_second = 0.0;
   int repeats = 0;
+  double ns_per_step_min = 0.0;
+  double ns_per_step_max = 0.0;
 };
 
 struct ObservableResult {
@@ -51,6 +55,7 @@ struct RunRecord {
   /// backend's finest run)
   std::vector<double> distance;
   double position_scale = 0.0;  ///< largest |position| over the samples (m)
+  double travel = 0.0;          ///< largest distance a body moves from its start (m)
   bool summarised = false;      ///< errors, observables and series measured in the child
 };
 
@@ -74,13 +79,24 @@ struct GateResult {
   std::string note;  ///< why it failed without a value
 };
 
+/// A stretch of steps with one verdict, between the smallest and largest step tried in it.
+struct StabilityBand {
+  double from = 0.0, to = 0.0;  ///< seconds
+  bool stable = false;
+  std::string reason;  ///< unstable: why its smallest step failed; stable: what its largest did
+};
+
 struct StabilityResult {
   std::string backend;
-  /// "bracketed", "stable at every dt tried", "unstable at every dt tried", "unsupported"
+  /// "bracketed", "not monotone" (stable again above an unstable band), "stable at every
+  /// dt tried", "unstable at every dt tried", "unsupported"
   std::string status;
-  std::optional<double> critical_dt;  ///< largest step found stable
+  /// Largest step found stable with every step tried below it stable too
+  std::optional<double> critical_dt;
   std::optional<double> unstable_dt;  ///< smallest step found unstable
   std::string reason;                 ///< why unstable_dt failed, or why unsupported
+  std::string stable_note;            ///< what critical_dt's energy did (a drift, say), if anything
+  std::vector<StabilityBand> bands;   ///< from the smallest step tried to the largest
   std::optional<double> theory;       ///< seconds, where theory covers the scene
   std::string theory_formula;
   std::string theory_note;  ///< how to read the measured limit beside the theory
@@ -115,10 +131,13 @@ struct CaseResults {
   /// The same for each observable: |value - value at the tighter tolerance|.
   std::map<std::string, double> observable_floor;
   RunRecord reference_run;
-  std::vector<RunRecord> runs;          ///< backends in registry order, dt largest first
-  std::map<std::string, double> order;  ///< fitted slope of log position_max vs log dt
-  /// Per backend: points in the order fit, and points left out as below their error floor.
-  std::map<std::string, std::pair<int, int>> order_points;
+  std::vector<RunRecord> runs;  ///< backends in registry order, dt largest first
+  /// Fitted slope of log position_max vs log dt, for the backends that have one.
+  std::map<std::string, double> order;
+  /// Per backend: the fit, with its local slopes, or why there is no order.
+  std::map<std::string, OrderFit> order_fits;
+  /// Per backend: the error at or above which its position_max has saturated (m).
+  std::map<std::string, double> order_saturation;
   std::vector<GateResult> gates;
   std::vector<StabilityResult> stability;  ///< empty unless a stability search ran
   std::optional<SweepResults> sweep;       ///< when the case has a [[sweep]] and it ran

@@ -74,6 +74,7 @@ void keep_plotted_states(const Scene& scene, RunRecord& run) {
 
 void record_position_scale(RunRecord& run) {
   run.position_scale = largest_position(run.trajectory);
+  run.travel = largest_travel(run.trajectory);
 }
 
 void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& against) {

@@ -27,7 +27,8 @@ void keep_plotted_states(const Scene& scene, RunRecord& run);
 /// Keeps of every state of `run` the drawn bodies, whatever its dt (the reference's).
 void keep_drawn_states(const Scene& scene, RunRecord& run);
 
-/// run.position_scale from the run's states: the order fit's rounding floor needs it.
+/// run.position_scale and run.travel from the run's states: the order fit's rounding floor
+/// and saturation level need them.
 void record_position_scale(RunRecord& run);
 
 /// In the child: errors, observables and series against `against` (an ok run: the

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "course/course_backend.hpp"
+#include "metrics/energy_growth.hpp"
 #include "metrics/stability_theory.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
@@ -33,7 +33,7 @@ std::string beyond_step_cap(const Scene& scene, double dt) {
 }  // namespace
 
 StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt) {
-  if (std::string why = beyond_step_cap(scene, dt); !why.empty()) return {false, why};
+  if (std::string why = beyond_step_cap(scene, dt); !why.empty()) return {false, why, "not run"};
   try {
     const auto sim = backend.start(scene, dt);
     const DivergenceBounds bounds = divergence_bounds(scene);
@@ -44,78 +44,34 @@ StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt) {
     const long settled = scene.impulses.empty()
                              ? 0
                              : std::min(steps, std::lround(scene.impulses.back().time / dt) + 1);
+    const long judged = steps - settled;
+    const long windows = std::min<long>(kGrowthWindows, judged);
+    EnergyHistory history;
+    history.scale = bounds.energy_scale;
+    history.level.reserve(windows);
+    history.steps.reserve(windows);
     double e0 = total_energy(scene, state);
-    // Largest rise of the energy above e0 in each quarter of [settled, steps].
-    double rise[4] = {0.0, 0.0, 0.0, 0.0};
+    double largest_rise = 0.0;
     for (long n = 1; n <= steps; ++n) {
       sim->step();
       sim->read(state);
       const double energy = total_energy(scene, state);
-      if (auto why = divergence(scene, bounds, state, e0, energy)) return {false, *why};
+      if (auto why = divergence(scene, bounds, state, e0, energy)) return {false, *why, "diverged"};
       if (n == settled) e0 = energy;
       if (n <= settled) continue;
-      const auto quarter = std::min<long>(3, 4 * (n - settled - 1) / std::max(1L, steps - settled));
-      rise[quarter] = std::max(rise[quarter], energy - e0);
+      largest_rise = std::max(largest_rise, energy - e0);
+      // The end of window k of [settled, steps] comes after k / windows of its steps.
+      const long k = static_cast<long>(history.level.size()) + 1;
+      if (n - settled == k * judged / windows) {
+        history.level.push_back(largest_rise);
+        history.steps.push_back(n - settled);
+      }
     }
-    // Unbounded growth: the rise keeps growing from the second quarter to the last. A
-    // swing, however large, repeats itself and does not.
-    // A rise below a thousandth of the scene's energy scale is no finding (explicit Euler's
-    // slow, consistent gain in free fall at small steps, say).
-    const double noise = 1e-3 * bounds.energy_scale;
-    if (rise[3] > noise && rise[3] > scene.stability.growth_factor * rise[1]) {
-      std::ostringstream m;
-      m << "energy grows without bound: its largest rise above the start went from " << rise[1]
-        << " J in the run's second quarter to " << rise[3] << " J in its last";
-      return {false, m.str()};
-    }
-    return {true, ""};
+    const GrowthVerdict verdict = judge_growth(history, scene.stability.growth_factor);
+    return {verdict.stable, verdict.reason, growth_name(verdict.growth)};
   } catch (const std::exception& e) {
-    return {false, std::string("error: ") + e.what()};
+    return {false, std::string("error: ") + e.what(), "failed"};
   }
-}
-
-std::optional<double> Bisection::next() const {
-  switch (phase_) {
-    case Phase::Top:
-      return hi_;
-    case Phase::Bottom:
-      return lo_;
-    case Phase::Halving:
-      return std::sqrt(lo_ * hi_);
-    case Phase::Done:
-      return std::nullopt;
-  }
-  return std::nullopt;
-}
-
-void Bisection::record(double dt, const StabilityTrial& trial) {
-  ++trials_;
-  if (!trial.stable) reason_ = trial.reason;
-  if (phase_ == Phase::Top) {
-    phase_ = trial.stable ? Phase::Done : Phase::Bottom;
-    if (trial.stable) status_ = "stable at every dt tried";
-    return;
-  }
-  if (phase_ == Phase::Bottom) {
-    phase_ = trial.stable ? Phase::Halving : Phase::Done;
-    if (!trial.stable) status_ = "unstable at every dt tried";
-  } else {
-    // Invariant: lo is stable, hi is not.
-    (trial.stable ? lo_ : hi_) = dt;
-  }
-  if (phase_ == Phase::Halving && (hi_ / lo_ <= 1.001 || trials_ >= 40)) {
-    phase_ = Phase::Done;
-    status_ = "bracketed";
-  }
-}
-
-void Bisection::fill(StabilityResult& r) const {
-  r.status = status_;
-  r.reason = reason_;
-  r.trials = trials_;
-  if (status_ == "stable at every dt tried") r.critical_dt = hi_;
-  if (status_ == "unstable at every dt tried") r.unstable_dt = lo_;
-  if (status_ == "bracketed") r.critical_dt = lo_, r.unstable_dt = hi_;
 }
 
 namespace {
@@ -147,7 +103,7 @@ void require_search_within_cap(const Scene& scene) {
 StabilityResult find_stability(const Backend& backend, const Scene& scene) {
   require_search_within_cap(scene);
   if (auto r = unsupported(backend, scene)) return *r;
-  Bisection search(scene.stability.dt_min, scene.stability.dt_max);
+  StabilitySearch search(scene.stability.dt_min, scene.stability.dt_max);
   while (auto dt = search.next()) search.record(*dt, try_step(backend, scene, *dt));
   StabilityResult r;
   r.backend = backend.name();
@@ -167,8 +123,8 @@ std::vector<StabilityResult> find_stability_all(
         std::find(backends.begin(), backends.end(), b->name()) != backends.end())
       chosen.push_back(b);
   std::vector<StabilityResult> out(chosen.size());
-  std::vector<Bisection> searches(chosen.size(),
-                                  Bisection(scene.stability.dt_min, scene.stability.dt_max));
+  std::vector<StabilitySearch> searches(
+      chosen.size(), StabilitySearch(scene.stability.dt_min, scene.stability.dt_max));
   ChildPool pool(jobs, isolation);
   // Each finished trial queues the backend's next one until its search is over.
   std::function<void(std::size_t)> queue_next = [&](std::size_t i) {
@@ -182,7 +138,7 @@ std::vector<StabilityResult> find_stability_all(
           [&, i, step](const ChildOutcome& o) {
             searches[i].record(step, o.kind == ChildOutcome::Kind::Done
                                          ? wire::decode_trial(o.payload)
-                                         : StabilityTrial{false, o.reason});
+                                         : StabilityTrial{false, o.reason, "failed"});
             queue_next(i);
           });
       return;

@@ -1,4 +1,5 @@
-// The largest stable step per backend, by bisection between the case's dt_min and dt_max.
+// The largest stable step per backend, searched between the case's dt_min and dt_max
+// (stability_search.hpp), with the bands where stability is not monotone in dt.
 #pragma once
 
 #include <functional>
@@ -8,38 +9,14 @@
 
 #include "run/registry.hpp"
 #include "run/results.hpp"
+#include "run/stability_search.hpp"
 #include "scene/scene.hpp"
 
 namespace bb {
 
-/// One run at one step: stable means bounded: no divergence over the whole duration, and
-/// the energy's rise above its start not still growing by the run's end (its largest rise in
-/// the last quarter at most growth_factor times that in the second quarter).
-struct StabilityTrial {
-  bool stable = false;
-  std::string reason;  ///< why not, when unstable
-};
+/// One run at one step, judged by its energy's growth after the last impulse (which may
+/// add energy at once) over kGrowthWindows windows: see energy_growth.hpp.
 StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt);
-
-/// The search as a sequence of trials: the largest step, the smallest, then halving the
-/// bracket in log dt until it is within 0.1 percent (at most 40 trials in all).
-class Bisection {
- public:
-  Bisection(double dt_min, double dt_max) : lo_(dt_min), hi_(dt_max) {}
-  /// The step to try next, or nullopt when the search is over.
-  std::optional<double> next() const;
-  void record(double dt, const StabilityTrial& trial);
-  /// Status, bracket and reason so far.
-  void fill(StabilityResult& result) const;
-
- private:
-  enum class Phase { Top, Bottom, Halving, Done };
-  Phase phase_ = Phase::Top;
-  double lo_, hi_;
-  int trials_ = 0;
-  std::string status_;
-  std::string reason_;
-};
 
 /// The whole search for one backend, in this process.
 StabilityResult find_stability(const Backend& backend, const Scene& scene);

@@ -170,6 +170,7 @@ std::string encode(const RunRecord& run) {
   put(w, run.energy);
   put(w, run.distance);
   w.raw(run.position_scale);
+  w.raw(run.travel);
   w.raw<char>(run.summarised);
   return w.take();
 }
@@ -223,6 +224,7 @@ RunRecord decode_run(const std::string& bytes) {
   run.energy = get_values(r);
   run.distance = get_values(r);
   run.position_scale = r.raw<double>();
+  run.travel = r.raw<double>();
   run.summarised = r.raw<char>() != 0;
   return run;
 }
@@ -245,6 +247,8 @@ std::string encode(const Timing& timing) {
   Writer w;
   w.raw(timing.median_seconds);
   w.raw(timing.repeats);
+  w.raw(timing.min_seconds);
+  w.raw(timing.max_seconds);
   return w.take();
 }
 
@@ -253,13 +257,17 @@ Timing decode_timing(const std::string& bytes) {
   Timing t;
   t.median_seconds = r.raw<double>();
   t.repeats = r.raw<int>();
+  t.min_seconds = r.raw<double>();
+  t.max_seconds = r.raw<double>();
   return t;
 }
 
 std::string encode(const std::vector<Timing>& timings) {
   Writer w;
   w.raw<std::uint64_t>(timings.size());
-  for (const Timing& t : timings) w.raw(t.median_seconds), w.raw(t.repeats), w.raw(t.calls_timed);
+  for (const Timing& t : timings)
+    w.raw(t.median_seconds), w.raw(t.repeats), w.raw(t.calls_timed), w.raw(t.min_seconds),
+        w.raw(t.max_seconds);
   return w.take();
 }
 
@@ -270,6 +278,8 @@ std::vector<Timing> decode_timings(const std::string& bytes) {
     t.median_seconds = r.raw<double>();
     t.repeats = r.raw<int>();
     t.calls_timed = r.raw<long>();
+    t.min_seconds = r.raw<double>();
+    t.max_seconds = r.raw<double>();
   }
   return out;
 }
@@ -278,6 +288,7 @@ std::string encode(const StabilityTrial& trial) {
   Writer w;
   w.raw<char>(trial.stable);
   w.text(trial.reason);
+  w.text(trial.growth);
   return w.take();
 }
 
@@ -286,6 +297,7 @@ StabilityTrial decode_trial(const std::string& bytes) {
   StabilityTrial t;
   t.stable = r.raw<char>() != 0;
   t.reason = r.text();
+  t.growth = r.text();
   return t;
 }
 

@@ -299,9 +299,9 @@ void read_report_and_stability(TomlReader& root, Scene& scene) {
     TomlReader r = sub_reader(root, *t, "[stability]");
     if (r.has("energy_factor"))
       r.fail(r.line_of("energy_factor"),
-             "'energy_factor' is gone: stable now means bounded (docs/design.md); 'growth_factor' "
-             "says how much the energy's rise may grow from the run's second quarter to its "
-             "last");
+             "'energy_factor' is gone: stable now means bounded (docs/design.md); "
+             "'growth_factor' says how much faster than steady drift the energy's rise may "
+             "grow over a quarter of the run before it counts as compounding");
     s.growth_factor = r.number_or("growth_factor", s.growth_factor);
     require_range(r, "growth_factor", s.growth_factor, 1.0, 0.0, false);
     // Absent bounds stay 0 and get their defaults below.
@@ -319,10 +319,11 @@ void read_report_and_stability(TomlReader& root, Scene& scene) {
     }
     r.finish();
   }
-  // Defaults: from a quarter of the finest step to a quarter of the run.
+  // Defaults: from a quarter of the finest step to a sixteenth of the run, the largest step
+  // whose run has enough steps to show how its energy grows (metrics/energy_growth.hpp).
   if (s.dt_min == 0.0)
     s.dt_min = std::min(scene.dt.back() / 4.0, s.dt_max > 0 ? s.dt_max / 2 : 1e300);
-  if (s.dt_max == 0.0) s.dt_max = std::max(scene.duration / 4.0, 2.0 * s.dt_min);
+  if (s.dt_max == 0.0) s.dt_max = std::max(scene.duration / 16.0, 2.0 * s.dt_min);
   refuse_endless_trials(root, scene, dt_min_line, dt_max_line);
 }
 

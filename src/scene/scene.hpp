@@ -205,12 +205,13 @@ struct ReportOptions {
 
 /// How `beachball stability` searches ([stability], optional).
 struct StabilityOptions {
-  /// Unstable when the energy's largest rise above its start in the last quarter of the
-  /// run (after its last impulse) is more than this many times its largest rise in the
-  /// second quarter: the energy grows without bound rather than swinging.
-  double growth_factor = 1.5;
+  /// The energy's rise above its start (after the last impulse) compounds when, in each of
+  /// the run's last two quarters, it grows more than this many times faster than steady
+  /// drift would (a rise proportional to the elapsed time), without slowing down as any
+  /// power of time does (metrics/energy_growth.hpp).
+  double growth_factor = 1.02;
   double dt_min = 0.0;  ///< seconds; 0: a quarter of the case's smallest dt
-  double dt_max = 0.0;  ///< seconds; 0: a quarter of the duration
+  double dt_max = 0.0;  ///< seconds; 0: a sixteenth of the duration (16 steps a run)
 };
 
 struct Scene {

@@ -1,5 +1,6 @@
 // The cost pass's repeats: until the timed total reaches min_seconds and at least
-// min_repeats times, fewer once the total passes enough_seconds.
+// min_repeats times, fewer once the total passes enough_seconds; each timing gives its
+// fastest and slowest repeat beside the median.
 #include "run/cost.hpp"
 
 #include <gtest/gtest.h>
@@ -53,6 +54,23 @@ TEST(CostRepeats, ALongRunIsTimedOverItsFirstCalls) {
   EXPECT_GT(t.median_seconds, 0.0);
   options.max_seconds_per_repeat = 1e9;
   EXPECT_EQ(timing(options, 1000).calls_timed, 1000);
+}
+
+TEST(CostRepeats, TheFastestAndSlowestRepeatStandBesideTheMedian) {
+  const Timing t = timing(repeat_rule(7, 1e9), 1000);
+  EXPECT_EQ(t.repeats, 7);
+  EXPECT_GT(t.min_seconds, 0.0);
+  EXPECT_LE(t.min_seconds, t.median_seconds);
+  EXPECT_LE(t.median_seconds, t.max_seconds);
+  const Timing once = timing(repeat_rule(1, 0.0), 1000);
+  EXPECT_EQ(once.min_seconds, once.median_seconds);
+  EXPECT_EQ(once.max_seconds, once.median_seconds);
+}
+
+TEST(CostNoise, TheBusyRuleReadsTheMedianAgainstTheFastestRepeat) {
+  EXPECT_TRUE(timed_on_a_busy_machine(Cost{130.0, 0.0, 3, 100.0, 140.0}));
+  EXPECT_FALSE(timed_on_a_busy_machine(Cost{120.0, 0.0, 3, 100.0, 900.0}));
+  EXPECT_FALSE(timed_on_a_busy_machine(Cost{300.0, 0.0, 2, 100.0, 500.0}));
 }
 
 }  // namespace

@@ -88,13 +88,23 @@ TEST(Wire, StatesOfAFewBodiesComeBack) {
 }
 
 TEST(Wire, ABackendsTimingsComeBackInOrder) {
-  const std::vector<Timing> timings = {{0.5, 3, 100}, {1e-6, 30, 7}};
+  const std::vector<Timing> timings = {{0.5, 3, 100, 0.4, 0.9}, {1e-6, 30, 7, 8e-7, 3e-6}};
   const std::vector<Timing> back = wire::decode_timings(wire::encode(timings));
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[1].median_seconds, 1e-6);
   EXPECT_EQ(back[1].repeats, 30);
   EXPECT_EQ(back[1].calls_timed, 7);
+  EXPECT_EQ(back[1].min_seconds, 8e-7);
+  EXPECT_EQ(back[1].max_seconds, 3e-6);
   EXPECT_EQ(back[0].median_seconds, 0.5);
+}
+
+TEST(Wire, AStabilityTrialComesBackWhole) {
+  const StabilityTrial back =
+      wire::decode_trial(wire::encode(StabilityTrial{true, "energy drifts", "drift"}));
+  EXPECT_TRUE(back.stable);
+  EXPECT_EQ(back.reason, "energy drifts");
+  EXPECT_EQ(back.growth, "drift");
 }
 
 }  // namespace

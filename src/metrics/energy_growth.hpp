@@ -1,0 +1,55 @@
+// Whether a run's energy grows without bound: growth that compounds (each stretch of the run
+// multiplies the rise), a runaway capped only by the motion folding over, drift that adds
+// (the rise grows no faster than a power of the elapsed time), or a bounded rise.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bb {
+
+/// The energy's largest rise above its start so far (J), read at the ends of equal windows
+/// of the run: `level[k]` after `steps[k]` steps, both increasing.
+struct EnergyHistory {
+  std::vector<double> level;
+  std::vector<long> steps;
+  double scale = 0.0;  ///< J the scene's physics can plausibly trade (divergence.hpp)
+};
+
+enum class Growth {
+  Bounded,    ///< the rise stays within noise, or stops growing
+  Drift,      ///< the rise keeps growing, but no faster than steady drift: it adds
+  Compounds,  ///< the rise outgrows steady drift by a steady factor to the end
+  Runaway,    ///< far above the scene's energy scale, capped by something other than the step
+};
+
+struct GrowthVerdict {
+  Growth growth = Growth::Bounded;
+  bool stable = true;  ///< Bounded and Drift are stable
+  std::string reason;  ///< what the energy did, in numbers (empty when it stayed within noise)
+};
+
+/// Windows an energy history is read over (fewer when a run has fewer steps).
+constexpr int kGrowthWindows = 16;
+
+/// The verdict on a history. A rise that ends above ten times the scene's energy scale, more
+/// than twice what it was at the end of the first window (a swing that large from the start
+/// and no larger is a bound), and that levelled off on the way (in some quarter after the
+/// first it grew by less than the square root of the elapsed time's factor) is a runaway:
+/// something caps it (a spring folding through itself), not the step. A history of fewer
+/// than kGrowthWindows windows (a run of fewer steps) cannot show how the energy grows: a
+/// runaway is a rise above ten times the scale and twice its first step's, anything less
+/// is stable. Otherwise the rise
+/// compounds when, in two quarters in a row, it grows by more than `growth_factor` times
+/// what steady drift would give (a rise proportional to the elapsed time; in the run's first
+/// quarter, which also holds how the motion starts, at least twice that) and the second
+/// quarter's excess is not smaller than 0.85 of the first's: any power of time, t^p, slows
+/// down (its excess falls to 0.5, 0.58 and 0.71 of the quarter before's), compounding does
+/// not, even when it stops later (a fold that caps the energy within the scale). A rise
+/// that still grows in the last quarter (by over 5 percent) and does not compound is drift.
+/// Rises below a thousandth of the scale are noise.
+GrowthVerdict judge_growth(const EnergyHistory& history, double growth_factor);
+
+std::string growth_name(Growth growth);
+
+}  // namespace bb

@@ -1,0 +1,27 @@
+// Cost figures that show their noise: which runs were timed on a busy machine, the warning
+// a page gives, and cost cells that mark them.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "run/results.hpp"
+
+namespace bb {
+
+struct CostNoise {
+  int judged = 0;      ///< timed runs with three repeats or more (the reference included)
+  int busy = 0;        ///< of those, timed on a busy machine (run/cost.hpp)
+  double worst = 0.0;  ///< the largest median over fastest repeat among them
+};
+CostNoise cost_noise(const CaseResults& results);
+
+/// The page's warning when some run was timed on a busy machine, else "".
+std::string cost_noise_warning(const CaseResults& results);
+
+/// A cost cell in ns per step: the median, "~" in front when timed on a busy machine.
+std::string cost_ns_cell(const std::optional<Cost>& cost);
+/// The same in seconds of computing per simulated second.
+std::string cost_seconds_cell(const std::optional<Cost>& cost);
+
+}  // namespace bb
