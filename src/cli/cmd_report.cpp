@@ -1,5 +1,8 @@
 #include <fmt/format.h>
 
+#include <cctype>
+#include <cstdlib>
+#include <limits>
 #include <map>
 
 #include "cli/commands.hpp"
@@ -34,37 +37,61 @@ std::string index_cell(const CaseResults& r, const RunRecord& run) {
   return cell;
 }
 
+/// The section number a course-text section starts with ("8. Wind effects" is 8); cases
+/// of no section go last.
+int section_number(const std::string& seed) {
+  if (seed.empty() || !std::isdigit(static_cast<unsigned char>(seed[0])))
+    return std::numeric_limits<int>::max();
+  return std::atoi(seed.c_str());
+}
+
+/// One table per course section, in the text's order: each case with its title and gates,
+/// and a column for each backend its section's cases run (not the 35 of the whole suite).
+std::string section_tables(const std::vector<CaseResults>& all) {
+  std::vector<std::string> seeds;
+  for (const CaseResults& r : all)
+    if (std::find(seeds.begin(), seeds.end(), r.scene->seed) == seeds.end())
+      seeds.push_back(r.scene->seed);
+  std::stable_sort(seeds.begin(), seeds.end(), [](const std::string& a, const std::string& b) {
+    return section_number(a) < section_number(b);
+  });
+  std::string out;
+  for (const std::string& seed : seeds) {
+    std::vector<std::string> backends;
+    for (const CaseResults& r : all)
+      if (r.scene->seed == seed)
+        for (const RunRecord& run : r.runs)
+          if (std::find(backends.begin(), backends.end(), run.backend) == backends.end())
+            backends.push_back(run.backend);
+    Table t;
+    t.headers = {"case", "title", "gates"};
+    t.headers.insert(t.headers.end(), backends.begin(), backends.end());
+    t.right_aligned.assign(t.headers.size(), false);
+    for (const CaseResults& r : all) {
+      if (r.scene->seed != seed) continue;
+      int passed = 0;
+      for (const GateResult& g : r.gates) passed += g.passed;
+      std::vector<std::string> row = {
+          fmt::format("[{0}]({0}.md)", r.scene->name), markdown_text(r.scene->title),
+          r.gates.empty() ? "none" : fmt::format("{}/{} pass", passed, r.gates.size())};
+      for (const std::string& b : backends) {
+        std::string cell = "-";
+        for (const RunRecord& run : r.runs)
+          if (run.backend == b && run.dt && *run.dt == r.scene->report_dt)
+            cell = index_cell(r, run);
+        row.push_back(cell);
+      }
+      t.rows.push_back(row);
+    }
+    out += "\n### " + (seed.empty() ? std::string("Cases of no course section") : seed) + "\n\n" +
+           render_markdown(t);
+  }
+  return out;
+}
+
 std::string index_page(const std::vector<CaseResults>& all,
                        const std::vector<std::string>& rotation_plots) {
-  // Columns: every backend that appears in any case, in first-seen order.
-  std::vector<std::string> backends;
-  for (const CaseResults& r : all)
-    for (const RunRecord& run : r.runs)
-      if (std::find(backends.begin(), backends.end(), run.backend) == backends.end())
-        backends.push_back(run.backend);
-  Table t;
-  t.headers = {"case", "gates"};
-  t.headers.insert(t.headers.end(), backends.begin(), backends.end());
-  t.right_aligned.assign(t.headers.size(), false);
-  for (const CaseResults& r : all) {
-    int passed = 0;
-    for (const GateResult& g : r.gates) passed += g.passed;
-    std::vector<std::string> row = {
-        fmt::format("[{0}]({0}.md)", r.scene->name),
-        r.gates.empty() ? "none" : fmt::format("{}/{} pass", passed, r.gates.size())};
-    for (const std::string& b : backends) {
-      std::string cell = "-";
-      for (const RunRecord& run : r.runs)
-        if (run.backend == b && run.dt && *run.dt == r.scene->report_dt) cell = index_cell(r, run);
-      row.push_back(cell);
-    }
-    t.rows.push_back(row);
-  }
-  Table titles;
-  titles.headers = {"case", "title", "course section"};
-  for (const CaseResults& r : all)
-    titles.rows.push_back({fmt::format("[{0}]({0}.md)", r.scene->name), r.scene->title,
-                           r.scene->seed.empty() ? "-" : r.scene->seed});
+  const std::string sections = section_tables(all);
   // The cases whose bodies turn: each page's rotation plot, gathered here (where drawn).
   std::string rotation;
   for (std::size_t i = 0; i < all.size(); ++i)
@@ -109,12 +136,14 @@ std::string index_page(const std::vector<CaseResults>& all,
          "settings used. Regenerate with `scripts/report`; only cost figures change.\n\n"
          "**[Claims ledger](claims.md)**: the course text's sentences, each with its verdict "
          "per backend and the numbers behind it.\n\n" +
-         sweeps + busy + render_markdown(titles) +
-         "\n## At report_dt\n\nEach cell: position_max against the reference at the case's "
+         sweeps + busy +
+         "\n## At report_dt, by course section\n\nOne table per section of the course text, "
+         "with the backends its cases run. Each cell: position_max against the reference at the "
+         "case's "
          "report_dt, the observed order of convergence p over the sweep (only where the sweep "
          "has an asymptotic range; the case page says why not), the median cost of one "
-         "step, and ✓ or ✗ where a gate covers the backend.\n\n" +
-         render_markdown(t) + rotation;
+         "step, and ✓ or ✗ where a gate covers the backend.\n" +
+         sections + rotation;
 }
 
 }  // namespace

@@ -164,6 +164,29 @@ TEST(Cli, ListSaysWhatWasBuiltAndWhoRunsWhat) {
   EXPECT_NE(o.out.find("unsupported: 3d"), std::string::npos) << o.out;
 }
 
+TEST(Cli, TheIndexHasOneTablePerCourseSectionWithItsOwnBackends) {
+  const std::string out = fresh_dir("report_sections");
+  // Given drag first, the springs still come first: the course text's order.
+  const Outcome o =
+      beachball("report " + test::source_path("cases/drag_fall.toml") + " " +
+                test::source_path("cases/spring_pair.toml") + " --out " + out + " --no-cost");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  std::ifstream index(out + "/README.md");
+  const std::string text((std::istreambuf_iterator<char>(index)), std::istreambuf_iterator<char>());
+  const std::size_t springs = text.find("\n### 7. Springs\n"),
+                    wind = text.find("\n### 8. Wind effects\n");
+  ASSERT_NE(springs, std::string::npos) << text;
+  ASSERT_NE(wind, std::string::npos) << text;
+  EXPECT_LT(springs, wind);
+  // The soft body runs only where there are springs: a column there, none under drag.
+  const std::string spring_table = text.substr(springs, wind - springs);
+  const std::string wind_table = text.substr(wind, text.find("\n## ", wind) - wind);
+  EXPECT_NE(spring_table.find("bullet-softbody"), std::string::npos) << spring_table;
+  EXPECT_EQ(wind_table.find("bullet-softbody"), std::string::npos) << wind_table;
+  EXPECT_NE(wind_table.find("(drag_fall.md)"), std::string::npos);
+  EXPECT_EQ(spring_table.find("(drag_fall.md)"), std::string::npos);
+}
+
 TEST(Cli, ReportWritesAnIndexPagesPlotsAndStability) {
   const std::string out = fresh_dir("report");
   const Outcome o =
