@@ -4,15 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "metrics/short_number.hpp"
+
 namespace bb {
 
 namespace {
-
-std::string number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", x);
-  return buffer;
-}
 
 enum class Use { InRange, Rounding, Saturated, Failed };
 
@@ -94,7 +90,7 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
                      ? "rounding: every error is at or below its rounding floor"
                  : fit.below_floor == 0 && fit.failed == 0
                      ? "saturated: every error is at or above a tenth of the motion's scale (" +
-                           number(saturation) + " m)"
+                           short_number(saturation) + " m)"
                      : "no error between the rounding floor and saturation" + others(fit);
     return fit;
   }
@@ -119,12 +115,12 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
   if (in_run < 3) {
     const double opening = slopes.empty() ? disagreeing.value_or(0.0) : slopes.front();
     if (disagreeing && opening < 0.0)
-      fit.reason = "rounding: the error grows as dt shrinks (local slope " + number(opening) +
-                   " from " + number(points[start].dt) + " s)";
+      fit.reason = "rounding: the error grows as dt shrinks (local slope " + short_number(opening) +
+                   " from " + short_number(points[start].dt) + " s)";
     else if (disagreeing)
       fit.reason = "not asymptotic: the local slopes from the smallest step in range, " +
-                   (slopes.empty() ? "" : number(slopes.front()) + " then ") +
-                   number(*disagreeing) + ", disagree";
+                   (slopes.empty() ? "" : short_number(slopes.front()) + " then ") +
+                   short_number(*disagreeing) + ", disagree";
     else
       fit.reason = "too few points: " + std::to_string(in_run) +
                    " in a row between the rounding floor and saturation, three needed" +
@@ -139,7 +135,7 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
   const double fitted = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   // An error that does not shrink with dt is held by something other than the step.
   if (fitted < kSmallestOrder) {
-    fit.reason = "not converging: the error barely shrinks with dt (slope " + number(fitted) +
+    fit.reason = "not converging: the error barely shrinks with dt (slope " + short_number(fitted) +
                  " over the " + std::to_string(in_run) + " smallest steps in range)";
     return fit;
   }

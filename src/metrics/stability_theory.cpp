@@ -4,18 +4,12 @@
 #include <limits>
 #include <sstream>
 
+#include "metrics/short_number.hpp"
 #include "metrics/spring_modes.hpp"
 
 namespace bb {
 
 namespace {
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(4);
-  s << x;
-  return s.str();
-}
 
 /// Springs: the integrator on the network's stiffest mode, with its damping where known.
 std::optional<TheoreticalLimit> spring_limit(const Scene& scene, const std::string& integrator) {
@@ -23,9 +17,9 @@ std::optional<TheoreticalLimit> spring_limit(const Scene& scene, const std::stri
   if (!mode) return std::nullopt;
   const double limit = linear_stability_limit(integrator, mode->omega, mode->damping_rate);
   std::string formula =
-      "stiffest mode omega_max = " + number(mode->omega) + " rad/s (" + mode->how + ")";
+      "stiffest mode omega_max = " + short_number(mode->omega, 4) + " rad/s (" + mode->how + ")";
   if (mode->damping_rate > 0.0)
-    formula += ", damping rate " + number(mode->damping_rate) + " /s";
+    formula += ", damping rate " + short_number(mode->damping_rate, 4) + " /s";
   else if (!mode->damping_known)
     formula += "; the springs' damping ratios differ, so damping is left out";
   if (limit == 0.0)

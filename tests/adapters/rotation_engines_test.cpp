@@ -239,23 +239,7 @@ std::string backend_test_name(const ::testing::TestParamInfo<std::string>& info)
 // engine turns it its own way per step (ODE's first-order quaternion update loses about
 // 1 % at 1/30 s), but none loses a whole turn of 360 degrees.
 TEST(FinalAngleOnEngines, EveryEngineKeepsEveryTurn) {
-  const Scene scene = test::scene_from(R"(name = "spin"
-dims = 2
-duration = 2.0
-sample = 0.5
-dt = [0.0333333333333333333]
-report_dt = 0.0333333333333333333
-gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 1.0
-position = [0.0, 2.0, 0.0]
-angular_velocity = [0.0, 0.0, -10.0]
-[[observe]]
-kind = "final_angle"
-body = "ball"
-)");
+  const Scene scene = test::scene_from(test::spinning_ball_case(-10.0, 0.0));
   const double expected = -20.0 * 180.0 / std::numbers::pi;
   int engines = 0;
   for (const std::string name : {"bullet", "bullet-float", "box2d", "ode"}) {

@@ -201,29 +201,8 @@ TEST(CourseFriction, ClampStopsTheBlockWithEveryIntegratorOnLevelGroundAndASlope
 // = 1.529 m from where the push found it, for every integrator with the clamp rule; and it
 // creeps nothing after the reference's stop.
 TEST(CourseFriction, ABlockPushedFromRestStopsWhereItsSlideEnds) {
-  const Scene scene = test::scene_from(R"(name = "pushed"
-dims = 2
-duration = 3.0
-sample = 0.0333333333333333333
-dt = [0.0166666666666666667]
-report_dt = 0.0166666666666666667
-[ground]
-friction_static = 0.4
-friction_kinetic = 0.3
-[[body]]
-name = "block"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 2.0
-position = [0.0, 0.5, 0.0]
-[[impulse]]
-body = "block"
-time = 0.5
-impulse = [6.0, 0.0, 0.0]
-[[observe]]
-kind = "stop_time"
-body = "block"
-)");
+  const Scene scene = test::scene_from(test::pushed_block_case(
+      "[[impulse]]\nbody = \"block\"\ntime = 0.5\nimpulse = [6.0, 0.0, 0.0]\n"));
   const double mu_g = 0.3 * 9.81, time = 0.5 + 3.0 / mu_g, distance = 9.0 / (2.0 * mu_g);
   const RunRecord ref = run_accuracy(ReferenceBackend(), scene, scene.report_dt);
   ASSERT_EQ(ref.status, RunStatus::Ok) << ref.reason;

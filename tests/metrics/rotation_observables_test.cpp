@@ -19,28 +19,7 @@ namespace {
 /// A free ball in 2D without gravity spinning at `spin` rad/s for 2 s, sampled every
 /// half second (tens of turns between two samples at 100 rad/s), stepped at 1/30 s.
 Scene spinning_ball(double spin) {
-  return test::scene_from(R"(name = "spin"
-dims = 2
-duration = 2.0
-sample = 0.5
-dt = [0.0333333333333333333]
-report_dt = 0.0333333333333333333
-gravity = [0.0, 0.0, 0.0]
-
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 1.0
-position = [0.0, 2.0, 0.0]
-angle = 30.0
-angular_velocity = [0.0, 0.0, )" +
-                          std::to_string(spin) +
-                          R"(]
-
-[[observe]]
-kind = "final_angle"
-body = "ball"
-)");
+  return test::scene_from(test::spinning_ball_case(spin, 30.0));
 }
 
 // The course turns a free ball by exactly its spin times the step, the reference to its

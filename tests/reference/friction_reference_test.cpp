@@ -192,32 +192,7 @@ velocity = [1.0, 0.0, 0.0]
 /// A 2 kg cube at rest on level ground (mu_s 0.4, mu_k 0.3) pushed along x by `impulse`
 /// N s at 0.5 s, observed for 3 s.
 Scene pushed_block(const std::string& impulses) {
-  return test::scene_from(R"(name = "pushed"
-dims = 2
-duration = 3.0
-sample = 0.0333333333333333333
-dt = [0.0166666666666666667]
-report_dt = 0.0166666666666666667
-[ground]
-friction_static = 0.4
-friction_kinetic = 0.3
-[[body]]
-name = "block"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 2.0
-position = [0.0, 0.5, 0.0]
-)" + impulses + R"(
-[[observe]]
-kind = "stop_time"
-body = "block"
-[[observe]]
-kind = "stop_distance"
-body = "block"
-[[observe]]
-kind = "rest_creep"
-body = "block"
-)");
+  return test::scene_from(test::pushed_block_case(impulses));
 }
 
 // A block at rest pushed at 0.5 s: its stop is the end of that motion, measured from where

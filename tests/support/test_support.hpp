@@ -112,4 +112,57 @@ inline std::string level_ground_case(const std::string& name, const std::string&
          ground;
 }
 
+/// A free ball in 2D without gravity, turned `angle` degrees and spinning at `spin` rad/s
+/// about z for 2 s, sampled every half second, stepped at 1/30 s, its final_angle observed.
+inline std::string spinning_ball_case(double spin, double angle) {
+  return std::string(R"(name = "spin"
+dims = 2
+duration = 2.0
+sample = 0.5
+dt = [0.0333333333333333333]
+report_dt = 0.0333333333333333333
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 2.0, 0.0]
+angle = )") +
+         std::to_string(angle) + "\nangular_velocity = [0.0, 0.0, " + std::to_string(spin) +
+         "]\n[[observe]]\nkind = \"final_angle\"\nbody = \"ball\"\n";
+}
+
+/// A 2 kg cube at rest on level ground (mu_s 0.4, mu_k 0.3), stepped at 1/60 s for 3 s,
+/// given `impulses` ([[impulse]] tables) and its stop_time, stop_distance and rest_creep
+/// observed.
+inline std::string pushed_block_case(const std::string& impulses) {
+  return R"(name = "pushed"
+dims = 2
+duration = 3.0
+sample = 0.0333333333333333333
+dt = [0.0166666666666666667]
+report_dt = 0.0166666666666666667
+[ground]
+friction_static = 0.4
+friction_kinetic = 0.3
+[[body]]
+name = "block"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 2.0
+position = [0.0, 0.5, 0.0]
+)" + impulses +
+         R"(
+[[observe]]
+kind = "stop_time"
+body = "block"
+[[observe]]
+kind = "stop_distance"
+body = "block"
+[[observe]]
+kind = "rest_creep"
+body = "block"
+)";
+}
+
 }  // namespace bb::test
