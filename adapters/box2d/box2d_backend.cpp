@@ -12,20 +12,28 @@
 #include "box2d_contacts.hpp"
 #include "box2d_hinges.hpp"
 #include "box2d_vectors.hpp"
+#include "physics/step_start.hpp"
 #include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
-#include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
-#include "scene/spring_forces.hpp"
 
 namespace bb {
 
 namespace {
 
+#ifdef BB_SPRINGS_BY_HAND
+constexpr bool kSpringsByHand = true;
+#else
+constexpr bool kSpringsByHand = false;
+#endif
+
 class Box2dSimulation : public Simulation {
  public:
   Box2dSimulation(const Scene& scene, double dt)
-      : scene_(scene), dt_seconds_(dt), dt_(float(dt)), world_(to_b2(scene.gravity)) {
+      : scene_(scene),
+        start_(scene, dt, {kSpringsByHand}),
+        dt_(float(dt)),
+        world_(to_b2(scene.gravity)) {
     velocity_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "velocity_iterations"));
     position_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "position_iterations"));
     world_.SetAllowSleeping(false);
@@ -56,27 +64,22 @@ class Box2dSimulation : public Simulation {
         b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z())};
         bodies_[i]->SetMassData(&mass);
       }
-#ifdef BB_SPRINGS_BY_HAND
-    springs_ = spring_network(scene);
-#else
-    make_spring_joints();
-#endif
+    if (!kSpringsByHand) make_spring_joints();
     make_box2d_hinges(scene, world_, bodies_);
   }
 
   void step() override {
-    // Impulses due at the start of this step, through the engine's own API.
-    for (; next_impulse_ < scene_.impulses.size() &&
-           std::llround(scene_.impulses[next_impulse_].time / dt_seconds_) <= steps_;
-         ++next_impulse_)
-      push(scene_.impulses[next_impulse_]);
-    ++steps_;
-    // The harness's forces from the engine's own current state, as a game would add them.
-    if (has_external_forces(scene_) || !springs_.empty()) {
+    // Impulses due at the start of this step, through the engine's own API; then the force
+    // model's loads from the engine's own current state, as a game would add them.
+    start_.impulses_due([this](const Impulse& imp) { push(imp); });
+    if (start_.has_loads()) {
       read(state_);
-      external_forces(scene_, state_, forces_, springs_.empty() ? nullptr : &springs_);
-      for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (!scene_.bodies[i].fixed) bodies_[i]->ApplyForceToCenter(to_b2(forces_[i]), true);
+      const Loads& loads = start_.loads(state_);
+      for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (scene_.bodies[i].fixed) continue;
+        bodies_[i]->ApplyForceToCenter(to_b2(loads.force[i]), true);
+        if (start_.torques()) bodies_[i]->ApplyTorque(float(loads.torque[i].z()), true);
+      }
     }
     world_.Step(dt_, velocity_iterations_, position_iterations_);
   }
@@ -162,7 +165,7 @@ class Box2dSimulation : public Simulation {
   }
 
   const Scene& scene_;
-  double dt_seconds_;  ///< the step as the case gives it, for impulse times
+  StepStart start_;  ///< impulses due and the force model's loads
   float dt_;
   int velocity_iterations_ = 8;
   int position_iterations_ = 3;
@@ -171,12 +174,8 @@ class Box2dSimulation : public Simulation {
   std::unique_ptr<Box2dContacts> contacts_;
   b2World world_;
   std::vector<b2Body*> bodies_;
-  long steps_ = 0;                     ///< steps taken; the next starts at steps_ * dt
-  std::size_t next_impulse_ = 0;       ///< the first impulse not applied yet
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
-  std::vector<Vec3> forces_;
-  SpringNetwork springs_;         ///< springs added by hand (box2d/force); empty otherwise
-  float first_stiffness_ = 0.0f;  ///< the first joint's stiffness as Box2D holds it
+  float first_stiffness_ = 0.0f;       ///< the first joint's stiffness as Box2D holds it
 };
 
 class Box2dBackend : public Backend {

@@ -8,10 +8,10 @@ namespace bb {
 
 /// Everything but 3D: Box2D is a 2D engine.
 inline FeatureSet box2d_supports() {
-  return {Feature::Gravity,     Feature::Drag,    Feature::Magnus,        Feature::Wind,
-          Feature::Rotation,    Feature::Boxes,   Feature::GroundContact, Feature::BodyContact,
-          Feature::Restitution, Feature::Impulse, Feature::Springs,       Feature::Friction,
-          Feature::Hinge};
+  return force_stage_features() |
+         FeatureSet{Feature::Rotation,    Feature::Boxes,       Feature::GroundContact,
+                    Feature::BodyContact, Feature::Restitution, Feature::Impulse,
+                    Feature::Springs,     Feature::Friction,    Feature::Hinge};
 }
 
 inline EngineDescription box2d_engine() {

@@ -17,9 +17,9 @@
 #include "bullet_settings.hpp"
 #include "bullet_springs.hpp"
 #include "bullet_vectors.hpp"
+#include "physics/step_start.hpp"
 #include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
-#include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
 
 #ifndef BB_BULLET_SPRINGS_BY_HAND
@@ -84,19 +84,18 @@ class BulletSimulation : public Simulation {
   }
 
   void step() override {
-    // Impulses due at the start of this step, through the engine's own API.
-    for (; next_impulse_ < scene_.impulses.size() &&
-           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
-         ++next_impulse_)
-      push(scene_.impulses[next_impulse_]);
-    ++steps_;
-    // The harness's forces from the engine's own current state, as a game would add them;
-    // in bullet/force the springs too.
-    if (has_external_forces(scene_) || (kSpringsByHand && !network_.empty())) {
+    // Impulses due at the start of this step, through the engine's own API; then the force
+    // model's loads from the engine's own current state, as a game would add them (in
+    // bullet/force the springs too).
+    start_.impulses_due([this](const Impulse& imp) { push(imp); });
+    if (start_.has_loads()) {
       read(state_);
-      external_forces(scene_, state_, forces_, kSpringsByHand ? &network_ : nullptr);
-      for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (!scene_.bodies[i].fixed) bodies_[i]->applyCentralForce(to_bt(forces_[i]));
+      const Loads& loads = start_.loads(state_);
+      for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (scene_.bodies[i].fixed) continue;
+        bodies_[i]->applyCentralForce(to_bt(loads.force[i]));
+        if (start_.torques()) bodies_[i]->applyTorque(to_bt(loads.torque[i]));
+      }
     }
     // One fixed substep of exactly dt: no interpolation, no accumulator.
     world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_));
@@ -126,7 +125,7 @@ class BulletSimulation : public Simulation {
                              "(gDeactivationTime) would freeze, a slow oscillator with it")});
     if (joints_) joints_->add_settings(s);
     if (hinges_) hinges_->add_settings(s);
-    if (kSpringsByHand && !network_.empty())
+    if (kSpringsByHand && !scene_.springs.empty())
       s.push_back({"springs", std::string(kSpringsByHandMethod)});
     if (contacts_)
       add_contact_settings(scene_, world_.getSolverInfo(), shape_figures_, multipoint_, s);
@@ -238,13 +237,10 @@ class BulletSimulation : public Simulation {
   std::unique_ptr<btCollisionShape> ground_shape_;
   std::unique_ptr<btRigidBody> ground_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;
-  std::unique_ptr<BulletSpringJoints> joints_;  ///< the springs as constraints, or none
-  std::unique_ptr<BulletHingeJoints> hinges_;   ///< the hinges as constraints, or none
-  SpringNetwork network_ = kSpringsByHand ? spring_network(scene_) : SpringNetwork{};
-  State state_{scene_.bodies.size()};  ///< read before each step for the forces
-  std::vector<Vec3> forces_;
-  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
-  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
+  std::unique_ptr<BulletSpringJoints> joints_;      ///< the springs as constraints, or none
+  std::unique_ptr<BulletHingeJoints> hinges_;       ///< the hinges as constraints, or none
+  StepStart start_{scene_, dt_, {kSpringsByHand}};  ///< impulses due, the force model's loads
+  State state_{scene_.bodies.size()};               ///< read before each step for the forces
 };
 
 class BulletBackend : public Backend {

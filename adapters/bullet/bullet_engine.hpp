@@ -10,10 +10,11 @@ namespace bb {
 
 /// Every feature: the rigid-body builds.
 inline FeatureSet bullet_rigid_supports() {
-  return {Feature::ThreeD,      Feature::Gravity,     Feature::Drag,    Feature::Magnus,
-          Feature::Wind,        Feature::Rotation,    Feature::Boxes,   Feature::GroundContact,
-          Feature::BodyContact, Feature::Restitution, Feature::Impulse, Feature::Springs,
-          Feature::Friction,    Feature::Hinge};
+  return force_stage_features() | FeatureSet{Feature::ThreeD,      Feature::Rotation,
+                                             Feature::Boxes,       Feature::GroundContact,
+                                             Feature::BodyContact, Feature::Restitution,
+                                             Feature::Impulse,     Feature::Springs,
+                                             Feature::Friction,    Feature::Hinge};
 }
 
 inline EngineDescription bullet_engine() {

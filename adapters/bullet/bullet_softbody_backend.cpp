@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bullet_vectors.hpp"
+#include "physics/step_start.hpp"
 #include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
@@ -74,14 +75,10 @@ class SoftBodySimulation : public Simulation {
   void step() override {
     // Impulses due at the start of this step: J / m added to the node's velocity (a point
     // takes no angular impulse, wherever J acts).
-    for (; next_impulse_ < scene_.impulses.size() &&
-           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
-         ++next_impulse_) {
-      const Impulse& imp = scene_.impulses[next_impulse_];
+    start_.impulses_due([this](const Impulse& imp) {
       btSoftBody::Node& node = body_->m_nodes[imp.body];
       body_->addVelocity(to_bt(imp.impulse) * node.m_im, imp.body);
-    }
-    ++steps_;
+    });
     world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_));
   }
 
@@ -158,8 +155,8 @@ class SoftBodySimulation : public Simulation {
   btSoftRigidDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &configuration_};
   std::unique_ptr<btSoftBody> body_;
   double kLST_min_ = 0.0, kLST_max_ = 0.0;
-  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
-  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
+  /// Impulses due (its links are the springs, and it takes no other force).
+  StepStart start_{scene_, dt_, {false}};
 };
 
 class SoftBodyBackend : public Backend {

@@ -15,9 +15,9 @@
 #include "../point_body.hpp"
 #include "ode_contacts.hpp"
 #include "ode_hinges.hpp"
+#include "physics/step_start.hpp"
 #include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
-#include "scene/external_forces.hpp"
 #include "scene/plugin_api.hpp"
 
 namespace bb {
@@ -77,11 +77,18 @@ Vec3 from_ode(const dReal* v) {
   return {v[0], v[1], v[2]};
 }
 
+#ifdef BB_SPRINGS_BY_HAND
+constexpr bool kSpringsByHand = true;
+#else
+constexpr bool kSpringsByHand = false;
+#endif
+
 class OdeSimulation : public Simulation {
  public:
   OdeSimulation(const Scene& scene, double dt)
       : scene_(scene),
         dt_(dt),
+        start_(scene, dt, {kSpringsByHand}),
         world_(dWorldCreate()),
         threading_(dThreadingAllocateSelfThreadedImplementation()) {
     // ODE's default stepping context is one shared object; worlds stepped on different
@@ -130,11 +137,7 @@ class OdeSimulation : public Simulation {
       contacts_ = std::make_unique<OdeContacts>(scene, world_, bodies_,
                                                 engine_setting(scene, "ode", "bounce_vel"));
     }
-#ifdef BB_SPRINGS_BY_HAND
-    springs_ = spring_network(scene);
-#else
-    make_spring_joints();
-#endif
+    if (!kSpringsByHand) make_spring_joints();
     make_ode_hinges(scene, world_, bodies_);
   }
   ~OdeSimulation() override {
@@ -146,19 +149,18 @@ class OdeSimulation : public Simulation {
   OdeSimulation& operator=(const OdeSimulation&) = delete;
 
   void step() override {
-    // Impulses due at the start of this step change velocities (and spins) at once.
-    for (; next_impulse_ < scene_.impulses.size() &&
-           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
-         ++next_impulse_)
-      push(scene_.impulses[next_impulse_]);
-    ++steps_;
-    // The harness's forces from the engine's own current state, as a game would add them.
-    if (has_external_forces(scene_) || !springs_.empty()) {
+    // Impulses due at the start of this step change velocities (and spins) at once; then
+    // the force model's loads from the engine's own current state, as a game would add them.
+    start_.impulses_due([this](const Impulse& imp) { push(imp); });
+    if (start_.has_loads()) {
       read(state_);
-      external_forces(scene_, state_, forces_, springs_.empty() ? nullptr : &springs_);
-      for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (!scene_.bodies[i].fixed)
-          dBodyAddForce(bodies_[i], forces_[i].x(), forces_[i].y(), forces_[i].z());
+      const Loads& loads = start_.loads(state_);
+      for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (scene_.bodies[i].fixed) continue;
+        const Vec3 &f = loads.force[i], &t = loads.torque[i];
+        dBodyAddForce(bodies_[i], f.x(), f.y(), f.z());
+        if (start_.torques()) dBodyAddTorque(bodies_[i], t.x(), t.y(), t.z());
+      }
     }
     if (contacts_) contacts_->collide();
     if (quick_step_)
@@ -262,15 +264,14 @@ class OdeSimulation : public Simulation {
   std::vector<dBodyID> planar_;  ///< moving, unhinged bodies of a 2D scene
   const Scene& scene_;
   dReal dt_;
+  StepStart start_;  ///< impulses due and the force model's loads
   bool quick_step_ = false;
   bool gyroscopic_ = true;  ///< dBodySetGyroscopicMode of every moving body
   dWorldID world_;
   dThreadingImplementationID threading_;
   std::vector<dBodyID> bodies_;
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
-  std::vector<Vec3> forces_;
   std::unique_ptr<OdeContacts> contacts_;
-  SpringNetwork springs_;  ///< springs added by hand (ode/force); empty otherwise
   double spring_erp_ = 0.0, spring_cfm_ = 0.0;  ///< of the first spring joint, for settings
 
   /// Each spring as a distance joint held at its rest length, softened into a spring of
@@ -293,9 +294,6 @@ class OdeSimulation : public Simulation {
       if (spring_cfm_ == 0.0) spring_erp_ = erp, spring_cfm_ = cfm;
     }
   }
-  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
-  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
-
   /// An impulse J at a point: v += J / m and omega += I_world^-1 (r x J).
   void push(const Impulse& imp) {
     const std::size_t i = static_cast<std::size_t>(imp.body);

@@ -8,6 +8,8 @@
 #include "course/hinge_turning.hpp"
 #include "course/integrators.hpp"
 #include "course/rigid_rotation.hpp"
+#include "physics/equations_of_motion.hpp"
+#include "physics/step_start.hpp"
 #include "scene/contact_pairs.hpp"
 #include "scene/motion.hpp"
 
@@ -33,6 +35,7 @@ class CourseSimulation : public Simulation {
         contacts_(scene, phases_, dt),
         friction_(scene, phases_.friction, dt),
         hinges_(scene),
+        start_(scene, dt),
         equations_(scene) {
     const State start = initial_state(scene);
     for (const BodyState& b : start) {
@@ -42,15 +45,21 @@ class CourseSimulation : public Simulation {
       omega_.push_back(b.angular_velocity);
       spins_ = spins_ || b.angular_velocity.norm() > 0.0;
     }
-    // A body whose inertia differs along its axes turns by the seed's rigid rotation.
+    // A body whose inertia differs along its axes, or that a torque turns, turns by the
+    // seed's rotation with physics (L += T dt).
+    torques_ = equations_.forces().torques();
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-      const Vec3 principal = principal_inertia(scene.bodies[i]);
+      const Body& b = scene.bodies[i];
+      const Vec3 principal = principal_inertia(b);
       principal_.push_back(principal);
-      rigid_.push_back(!scene.bodies[i].fixed && principal.maxCoeff() > principal.minCoeff());
+      const bool turned = torques_ && !b.torque.isZero() && principal.minCoeff() > 0.0;
+      rigid_.push_back(!b.fixed && (principal.maxCoeff() > principal.minCoeff() || turned));
+      spins_ = spins_ || (!b.fixed && turned);
       momentum_.push_back(course::world_inertia(principal, orientation_[i]) * omega_[i]);
     }
     work_.resize(start.size());
     start_a_.resize(start.size());
+    torque_.assign(start.size(), Vec3::Zero());
     settings_ = {{"integrator", variant.integrator}};
     if (!contacts_.empty()) settings_.push_back({"ground_rule", variant.ground});
     record_contact_rules(variant);
@@ -74,6 +83,12 @@ class CourseSimulation : public Simulation {
                          "step; after the step, a velocity along the ground that turned back "
                          "anyway is set to 0")});
     }
+    for (const Hinge& h : scene.hinges)
+      if (!scene.bodies[h.body].torque.isZero())
+        throw UnsupportedScene("the course's hinge (seed section 5) turns body '" +
+                               scene.bodies[h.body].name +
+                               "' by the torque of the forces at its centre; a torque of its "
+                               "own is not modelled there");
     if (!hinges_.empty()) {
       settings_.push_back(
           {"hinge", std::string("seed section 5, the plank on an axis: L += T dt (T the torque "
@@ -101,11 +116,12 @@ class CourseSimulation : public Simulation {
 
   void step() override {
     // Impulses due at the start of this step change velocities (and spins) at once.
-    for (; next_impulse_ < scene_.impulses.size() &&
-           std::llround(scene_.impulses[next_impulse_].time / dt_) <= steps_;
-         ++next_impulse_)
-      push(scene_.impulses[next_impulse_]);
-    ++steps_;
+    start_.impulses_due([this](const Impulse& imp) { push(imp); });
+    // The torques where the step starts turn the bodies over it (L += T dt).
+    if (torques_) {
+      equations_.accelerations(points_.x, points_.v, omega_, orientation_, start_a_);
+      torque_ = equations_.torques();
+    }
     // Friction acts on the bodies in contact with the ground as the step starts; the clamp
     // rule stops there a slide that the step would turn back.
     if (!friction_.empty()) {
@@ -143,12 +159,12 @@ class CourseSimulation : public Simulation {
     // Seed section 5. A sphere's spin is kinematic: each frame the orientation is
     // multiplied on the left by the rotation the spin makes in one step (exact for a
     // torque-free sphere). A body whose inertia differs along its axes keeps its angular
-    // momentum instead, and its spin follows from it (rigid_rotation.hpp); nothing here
-    // exerts a torque on it yet.
+    // momentum instead, and its spin follows from it (rigid_rotation.hpp), as does a body
+    // a torque turns.
     if (spins_)
       for (std::size_t i = 0; i < omega_.size(); ++i) {
         if (rigid_[i]) {
-          course::rotate_rigid(principal_[i], Vec3::Zero(), dt_, momentum_[i], orientation_[i],
+          course::rotate_rigid(principal_[i], torque_[i], dt_, momentum_[i], orientation_[i],
                                omega_[i]);
           continue;
         }
@@ -207,6 +223,7 @@ class CourseSimulation : public Simulation {
   std::vector<Vec3> hinge_a_, hinge_x_;  ///< accelerations and positions at the step's start
   std::vector<Vec3> start_a_;            ///< accelerations at the step's start, for the clamp stop
   std::vector<Quat> hinge_q_;            ///< orientations at the step's start
+  StepStart start_;                      ///< impulses due
   EquationsOfMotion equations_;
   course::PointState points_;
   course::Workspace work_;
@@ -216,19 +233,20 @@ class CourseSimulation : public Simulation {
   std::vector<Vec3> principal_;  ///< principal moments of inertia, kg m^2
   std::vector<char> rigid_;      ///< per body: turned by rigid rotation, not kinematically
   std::vector<Vec3> momentum_;   ///< angular momentum, world frame (rigid bodies)
+  std::vector<Vec3> torque_;     ///< N m, world frame, at the step's start
+  bool torques_ = false;         ///< some term gives a torque
   bool spins_ = false;
-  long steps_ = 0;                ///< steps taken; the next one starts at steps_ * dt
-  std::size_t next_impulse_ = 0;  ///< the first impulse not applied yet
   Settings settings_;
 };
 
 }  // namespace
 
 FeatureSet CourseBackend::supports() const {
-  return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
-          Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
-          Feature::Restitution, Feature::Impulse,  Feature::Springs,       Feature::Friction,
-          Feature::Boxes,       Feature::Hinge};
+  return force_stage_features() | FeatureSet{Feature::ThreeD,        Feature::Rotation,
+                                             Feature::GroundContact, Feature::BodyContact,
+                                             Feature::Restitution,   Feature::Impulse,
+                                             Feature::Springs,       Feature::Friction,
+                                             Feature::Boxes,         Feature::Hinge};
 }
 
 std::unique_ptr<Simulation> CourseBackend::start(const Scene& scene, double dt) const {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/state_forces.hpp"
 #include "reference/hinge_motion.hpp"
-#include "scene/air_forces.hpp"
 
 namespace bb {
 
@@ -16,11 +16,9 @@ constexpr double kTurn = std::numbers::pi / 4.0;
 
 }  // namespace
 
-Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& s) {
+Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& s, const Vec3& force) {
   const Body& body = scene.bodies[hinge.body];
-  const Vec3 applied = body.mass * scene.gravity +
-                       air_force(scene, body, s.velocity, s.angular_velocity) +
-                       panel_wind_force(body, s.orientation);
+  const Vec3 applied = body.mass * scene.gravity + force;
   const HingeAccelerations a =
       hinge_accelerations(body, s.orientation, s.position, s.angular_velocity, applied, hinge);
   return body.mass * a.linear - applied;
@@ -35,11 +33,13 @@ std::optional<ObservableValue> measure_hinge(const Scene& scene, const Observe& 
   const Quat start = scene.bodies[observe.body].orientation;
   // The turn from the start, radians, and the hinge force, at each sample in order.
   double turn_before = 0.0, force_before = 0.0;
+  StateForces forces(scene);
   for (std::size_t n = 0; n < trajectory.states.size(); ++n) {
     const BodyState& s = trajectory.states[n][observe.body];
     const double turn =
         2.0 * std::acos(std::min(1.0, std::abs((start.conjugate() * s.orientation).w())));
-    const double force = hinge_force(scene, *h, s).norm();
+    const Vec3& applied = forces.at(trajectory.states[n]).force[observe.body];
+    const double force = hinge_force(scene, *h, s, applied).norm();
     if (n > 0 && turn >= kTurn && turn_before < kTurn)
       return ObservableValue{
           force_before + (force - force_before) * (kTurn - turn_before) / (turn - turn_before), ""};

@@ -10,10 +10,11 @@
 
 namespace bb {
 
-/// The force (N) hinge `hinge` exerts on its body in `state`: m a - F with F gravity, air
-/// and the wind on a panel at its centre, a = alpha x r + omega x (omega x r) from the
+/// The force (N) hinge `hinge` exerts on its body in `state`: m a - F with F gravity plus
+/// `force` (the force model's, at its centre), a = alpha x r + omega x (omega x r) from the
 /// torque of F about the axis. Exact for a body turning free of anything else.
-Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& state);
+Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& state,
+                 const Vec3& force = Vec3::Zero());
 
 /// The value of `observe` on `trajectory`, or nullopt when its kind is not this one:
 /// hinge_force (N), the hinge's force on the body when it has turned 45 degrees from its

@@ -5,7 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <memory>
 
-#include "reference/air_force_jacobian.hpp"
+#include "physics/force_model.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/peak_watch.hpp"
 #include "reference/scene_model.hpp"
@@ -46,21 +46,29 @@ double spring_rate(const Scene& scene) {
   return rate;
 }
 
-/// The fastest rate (1/s) at which the air changes a body's velocity at state y: the
-/// largest singular value of dF/dv / m over the moving bodies, or the springs' rate when
-/// larger. Drag on a light body or a stiff spring makes it large; it is what limits an
-/// explicit method's step.
+/// The fastest rate (1/s) at which the forces other than the springs change a body's
+/// velocity at state y: the largest singular value of dF/dv / m over the moving bodies (the
+/// force model's own derivatives), or the springs' rate when larger. Drag on a light body or
+/// a stiff spring makes it large; it is what limits an explicit method's step.
 double fastest_rate(const Scene& scene, const SceneModel& model, const std::vector<double>& y) {
   State state(scene.bodies.size());
   model.read(y.data(), state);
   double rate = spring_rate(scene);
+  std::vector<Vec3> x, v, w;
+  std::vector<Quat> q;
+  for (const BodyState& s : state)
+    x.push_back(s.position), v.push_back(s.velocity), w.push_back(s.angular_velocity),
+        q.push_back(s.orientation);
+  ForceJacobian jacobian;
+  ForceModel(scene, {false}).jacobian({x.data(), v.data(), q.data(), w.data()}, jacobian);
+  // Each body's own dF/dv, summed over the terms.
+  std::vector<Eigen::Matrix3d> by_velocity(state.size(), Eigen::Matrix3d::Zero());
+  for (const JacobianBlock& b : jacobian.blocks())
+    if (b.wrt == Wrt::Velocity && b.body == b.by_body) by_velocity[b.body] += b.value;
   for (std::size_t i = 0; i < state.size(); ++i) {
     const Body& body = scene.bodies[i];
     if (body.fixed) continue;
-    const Vec3& v = state[i].velocity;
-    const Vec3& w = state[i].angular_velocity;
-    const AirForceJacobian j = air_force_jacobian(scene, body, v, w);
-    rate = std::max(rate, j.by_velocity.operatorNorm() / body.mass);
+    rate = std::max(rate, by_velocity[i].operatorNorm() / body.mass);
   }
   return rate;
 }
@@ -229,10 +237,11 @@ class ReferenceSimulation : public Simulation {
 }  // namespace
 
 FeatureSet ReferenceBackend::supports() const {
-  return {Feature::ThreeD,      Feature::Gravity,  Feature::Drag,          Feature::Magnus,
-          Feature::Wind,        Feature::Rotation, Feature::GroundContact, Feature::BodyContact,
-          Feature::Restitution, Feature::Impulse,  Feature::Boxes,         Feature::Springs,
-          Feature::Friction,    Feature::Hinge};
+  return force_stage_features() | FeatureSet{Feature::ThreeD,        Feature::Rotation,
+                                             Feature::GroundContact, Feature::BodyContact,
+                                             Feature::Restitution,   Feature::Impulse,
+                                             Feature::Boxes,         Feature::Springs,
+                                             Feature::Friction,      Feature::Hinge};
 }
 
 std::pair<std::string, std::string> ReferenceBackend::library_version() const {

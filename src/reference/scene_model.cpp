@@ -6,13 +6,11 @@
 
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
-#include "reference/air_force_jacobian.hpp"
-#include "reference/cross_matrix.hpp"
+#include "physics/cross_matrix.hpp"
 #include "reference/gsl_reference.hpp"
 #include "reference/hinge_motion.hpp"
 #include "reference/scene_model_state.hpp"
 #include "reference/sliding_modes.hpp"
-#include "scene/air_forces.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -79,6 +77,27 @@ std::string hinge_reason(const Scene& scene) {
   return "";
 }
 
+/// Why the reference cannot turn a body by its torque exactly ("" when it can): the torque
+/// is exact in free flight; at a contact or on a hinge its turn has no event model.
+std::string torque_reason(const Scene& scene) {
+  const std::vector<ContactPair> pairs = contact_pairs(scene);
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& b = scene.bodies[i];
+    if (b.torque.isZero()) continue;
+    const int body = static_cast<int>(i);
+    for (const Hinge& h : scene.hinges)
+      if (h.body == body)
+        return "body '" + b.name + "' has a torque of its own and turns on the [[hinge]] at line " +
+               std::to_string(h.line) + ": not modelled by the reference";
+    for (const ContactPair& p : pairs)
+      if (p.a == body || p.b == body)
+        return "body '" + b.name +
+               "' has a torque of its own and can touch something: a turning body's contacts "
+               "have no event model in the reference";
+  }
+  return "";
+}
+
 /// What `body` is, in a reason: "ball", "box" or "point".
 std::string shape_word(const Body& body) {
   if (body.shape == Shape::Sphere) return "ball";
@@ -132,6 +151,7 @@ std::string SceneModel::beyond_exact_answer(const Scene& scene) {
            "event model in the reference";
   }
   if (const std::string why = hinge_reason(scene); !why.empty()) return why;
+  if (const std::string why = torque_reason(scene); !why.empty()) return why;
   const bool touching = scene.ground || !scene.contacts.empty();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];
@@ -169,10 +189,13 @@ SceneModel::SceneModel(const Scene& scene)
     : scene_(scene),
       resting_(scene.bodies.size(), false),
       after_bounce_(scene.bodies.size(), false),
-      springs_(spring_network(scene)),
+      forces_(scene),
       x_(scene.bodies.size()),
       v_(scene.bodies.size()),
+      w_(scene.bodies.size()),
+      q_(scene.bodies.size()),
       force_(scene.bodies.size()),
+      torque_(scene.bodies.size()),
       accelerations_(scene.bodies.size()),
       applied_(scene.bodies.size()),
       slides_(scene.bodies.size()),
@@ -253,11 +276,11 @@ void SceneModel::read(const double* y, State& out) const {
 
 void SceneModel::linear_accelerations(const double* y) {
   const int n = static_cast<int>(scene_.bodies.size());
-  for (int i = 0; i < n; ++i) force_[i].setZero();
-  if (!springs_.empty()) {
-    for (int i = 0; i < n; ++i) x_[i] = position(y, i), v_[i] = velocity(y, i);
-    add_spring_forces(springs_, x_.data(), v_.data(), force_.data());
+  for (int i = 0; i < n; ++i) {
+    x_[i] = position(y, i), v_[i] = velocity(y, i);
+    q_[i] = orientation(y, i).normalized(), w_[i] = spin(y, i);
   }
+  forces_.evaluate({x_.data(), v_.data(), q_.data(), w_.data()}, force_.data(), torque_.data());
   for (int i = 0; i < n; ++i) {
     const Body& body = scene_.bodies[i];
     held_[i] = false;
@@ -265,9 +288,7 @@ void SceneModel::linear_accelerations(const double* y) {
       accelerations_[i].setZero();
       continue;
     }
-    Vector3d a = scene_.gravity + (force_[i] + air_force(scene_, body, velocity(y, i), spin(y, i)) +
-                                   panel_wind_force(body, orientation(y, i).normalized())) /
-                                      body.mass;
+    Vector3d a = forces_.gravity() + force_[i] / body.mass;
     applied_[i] = a;
     // A body resting on the ground is held there: the ground takes any push into it, and
     // its friction holds the body (stuck) or acts against its sliding, mu_k N.
@@ -312,6 +333,10 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
     const Quaterniond dq = q * Quaterniond(0.0, own.x(), own.y(), own.z());
     d[6] = 0.5 * dq.w(), d[7] = 0.5 * dq.x(), d[8] = 0.5 * dq.y(), d[9] = 0.5 * dq.z();
     Vec(d + 10) = angular_acceleration(body, own);
+    // A torque (world frame) turns the body: I^-1 R^T T in its own frame.
+    if (forces_.torques() && !torque_[i].isZero())
+      Vec(d + 10) +=
+          (q.normalized().conjugate() * torque_[i]).cwiseQuotient(principal_inertia(body));
     // On a hinge the body turns about the axis only: the forces at its centre act through
     // their torque about the axis, and the centre moves on a circle. (The Jacobian treats
     // it as free: only msbdf uses that, and a hinged scene here is never stiff.) The world
@@ -327,34 +352,35 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
   }
 }
 
-void SceneModel::add_spring_jacobian(const double* y, double* dfdy) const {
+void SceneModel::add_force_jacobian(const double* y, double* dfdy) {
   const auto n = static_cast<Eigen::Index>(dimension());
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> j(dfdy, n, n);
-  for (std::size_t k = 0; k < springs_.size(); ++k) {
-    const int a = springs_.a[k], b = springs_.b[k];
-    const Vector3d d = Vector3d(position(y, b)) - Vector3d(position(y, a));
-    const double length = d.norm();
-    if (length == 0.0) continue;
-    const Vector3d u = d / length, dv = Vector3d(velocity(y, b)) - Vector3d(velocity(y, a));
-    const double stiffness = springs_.stiffness[k], damping = springs_.damping[k];
-    const double tension = stiffness * (length - springs_.rest_length[k]) + damping * dv.dot(u);
-    // F_a = tension u with d = x_b - x_a: dF_a/dd = k u u^T + c u dv^T P / l + tension P / l,
-    // P = I - u u^T the projection across the spring; dF_a/dv_b = c u u^T; F_b = -F_a.
-    const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - u * u.transpose();
-    const Eigen::Matrix3d by_d = stiffness * u * u.transpose() +
-                                 (damping / length) * u * dv.transpose() * across +
-                                 (tension / length) * across;
-    const Eigen::Matrix3d by_dv = damping * u * u.transpose();
-    for (const auto& [body, sign] : {std::pair{a, 1.0}, std::pair{b, -1.0}}) {
-      const Body& moving = scene_.bodies[body];
-      if (moving.fixed) continue;
-      const Eigen::Matrix3d p = resting_projection(body) * (sign / moving.mass);
-      const auto row = static_cast<Eigen::Index>(at(body) + 3);
-      const auto xa = static_cast<Eigen::Index>(at(a)), xb = static_cast<Eigen::Index>(at(b));
-      j.block<3, 3>(row, xb) += p * by_d;
-      j.block<3, 3>(row, xa) -= p * by_d;
-      j.block<3, 3>(row, xb + 3) += p * by_dv;
-      j.block<3, 3>(row, xa + 3) -= p * by_dv;
+  forces_.jacobian({x_.data(), v_.data(), q_.data(), w_.data()}, force_jacobian_);
+  for (const JacobianBlock& block : force_jacobian_.blocks()) {
+    const Body& moving = scene_.bodies[block.body];
+    if (moving.fixed) continue;
+    // dv/dt = g + F / m, projected onto the ground's plane while resting.
+    const Eigen::Matrix3d project = resting_projection(block.body);
+    const auto row = static_cast<Eigen::Index>(at(block.body) + 3);
+    const auto col = static_cast<Eigen::Index>(at(block.by_body));
+    if (block.wrt == Wrt::Position) j.block<3, 3>(row, col) += project * block.value / moving.mass;
+    if (block.wrt == Wrt::Velocity)
+      j.block<3, 3>(row, col + 3) += project * block.value / moving.mass;
+    if (block.wrt != Wrt::Spin) continue;
+    // The force sees the world's spin R(q) w, w the integrated spin in the body's frame.
+    const Quaterniond q = orientation(y, block.by_body);
+    const Vector3d own = body_spin(y, block.by_body);
+    const Eigen::Matrix3d turn = q.normalized().toRotationMatrix();
+    j.block<3, 3>(row, col + 10) += project * block.value * turn / moving.mass;
+    // d(R(q) w)/dq by central differences (R of the normalised q).
+    for (int c = 0; c < 4; ++c) {
+      double up[4] = {q.w(), q.x(), q.y(), q.z()}, down[4] = {q.w(), q.x(), q.y(), q.z()};
+      const double h = 1e-7 * std::max(1.0, std::abs(up[c]));
+      up[c] += h, down[c] -= h;
+      const Vector3d plus = Quaterniond(up[0], up[1], up[2], up[3]).normalized() * own;
+      const Vector3d minus = Quaterniond(down[0], down[1], down[2], down[3]).normalized() * own;
+      j.block<3, 1>(row, col + 6 + c) +=
+          project * block.value * (plus - minus) / (2.0 * h * moving.mass);
     }
   }
 }
@@ -370,29 +396,10 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
     const Body& body = scene_.bodies[i];
     if (body.fixed) continue;
     const auto o = static_cast<Eigen::Index>(at(i));
-    const Vector3d v = velocity(y, i), own = body_spin(y, i);
+    const Vector3d own = body_spin(y, i);
     const Quaterniond q = orientation(y, i);
-    const Eigen::Matrix3d turn = q.normalized().toRotationMatrix();
     // dx/dt = v.
     j.block<3, 3>(o, o + 3).setIdentity();
-    // dv/dt = g + (F_springs + F_air(v, omega)) / m, projected onto the ground's plane while
-    // resting; the springs' part is added below. The air sees the world's spin R(q) w.
-    const AirForceJacobian air = air_force_jacobian(scene_, body, v, turn * own);
-    const Eigen::Matrix3d project = resting_projection(i);
-    j.block<3, 3>(o + 3, o + 3) = project * air.by_velocity / body.mass;
-    j.block<3, 3>(o + 3, o + 10) = project * air.by_spin * turn / body.mass;
-    if (!air.by_spin.isZero()) {
-      // d(R(q) w)/dq by central differences (R of the normalised q).
-      for (int c = 0; c < 4; ++c) {
-        double up[4] = {q.w(), q.x(), q.y(), q.z()}, down[4] = {q.w(), q.x(), q.y(), q.z()};
-        const double h = 1e-7 * std::max(1.0, std::abs(up[c]));
-        up[c] += h, down[c] -= h;
-        const Vector3d plus = Quaterniond(up[0], up[1], up[2], up[3]).normalized() * own;
-        const Vector3d minus = Quaterniond(down[0], down[1], down[2], down[3]).normalized() * own;
-        j.block<3, 1>(o + 3, o + 6 + c) =
-            project * air.by_spin * (plus - minus) / (2.0 * h * body.mass);
-      }
-    }
     // dq/dt = 1/2 q (0, w): w' = -w.q_v / 2, q_v' = (q_w w + q_v x w) / 2.
     const Vector3d qv(q.x(), q.y(), q.z());
     j.block<1, 3>(o + 6, o + 7) = -0.5 * own.transpose();
@@ -403,7 +410,8 @@ void SceneModel::jacobian(double, const double* y, double* dfdy, double* dfdt) {
     // Euler's equations in the body frame depend on the body's spin alone.
     j.block<3, 3>(o + 10, o + 10) = angular_acceleration_by_spin(body, own);
   }
-  add_spring_jacobian(y, dfdy);
+  // dv/dt = g + F(x, v, omega) / m: the force model's derivatives.
+  add_force_jacobian(y, dfdy);
 }
 
 }  // namespace bb

@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
+#include "physics/force_model.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/sliding_modes.hpp"
 #include "scene/backend.hpp"
 #include "scene/event_trace.hpp"
 #include "scene/scene.hpp"
-#include "scene/spring_forces.hpp"
 #include "scene/state.hpp"
 
 namespace bb {
@@ -88,13 +88,14 @@ class SceneModel : public HybridModel {
   /// A hinged body landing on the ground at time t: Newton's restitution about the axis,
   /// omega -> -e omega; a rebound too short to leave, or none, leaves it held there.
   void land(const ContactPair& pair, double* y, double t);
-  /// Each body's linear acceleration at `y` into accelerations_: gravity, air, springs, and
-  /// a resting body held on the ground.
+  /// Each body's linear acceleration at `y` into accelerations_: gravity, the force model's
+  /// forces (its torques into torque_), and a resting body held on the ground.
   void linear_accelerations(const double* y);
   /// The projection a resting body's acceleration goes through (the identity otherwise).
   Eigen::Matrix3d resting_projection(int body) const;
-  /// Adds the springs' derivatives to the Jacobian's velocity rows.
-  void add_spring_jacobian(const double* y, double* dfdy) const;
+  /// Adds the force model's derivatives to the Jacobian's velocity rows (after
+  /// linear_accelerations() at the same y).
+  void add_force_jacobian(const double* y, double* dfdy);
   Eigen::Vector3d momentum(const double* y) const;  ///< N s, of every moving body
   contact::Proximity proximity(const ContactPair& pair, const double* y) const;
   /// Newton's restitution along the contact normal; the ground and fixed bodies do not move.
@@ -114,8 +115,11 @@ class SceneModel : public HybridModel {
   std::vector<bool> resting_;       ///< per body: resting on the ground
   std::vector<bool> after_bounce_;  ///< per body: an apex is awaited
   EventTrace trace_;
-  SpringNetwork springs_;
-  std::vector<Eigen::Vector3d> x_, v_, force_;  ///< buffers for the spring forces
+  ForceModel forces_;
+  std::vector<Eigen::Vector3d> x_, v_, w_;       ///< the state as arrays, for the force model
+  std::vector<Eigen::Quaterniond> q_;            ///< (w_: world spins, q_: normalised)
+  std::vector<Eigen::Vector3d> force_, torque_;  ///< N and N m, from the force model
+  ForceJacobian force_jacobian_;
   std::vector<Eigen::Vector3d> accelerations_;  ///< m/s^2, from linear_accelerations()
   std::vector<Eigen::Vector3d> applied_;        ///< m/s^2, the same before the ground acts
   std::vector<SlideDecision> slides_;           ///< per body: stuck, sliding or free

@@ -8,10 +8,10 @@ namespace bb {
 
 DivergenceBounds divergence_bounds(const Scene& scene) {
   // Fastest plausible speed: the largest over the bodies of the speed it starts with and
-  // gets from its impulses (J / m each), plus the speed its spin gives its surface (its
-  // initial spin and the impulses' angular impulses over its smallest moment, times its
-  // reach); plus the wind, plus what gravity adds over the whole run. A spin's energy is
-  // within 1/2 m (w reach)^2, since no moment exceeds m reach^2.
+  // gets from its impulses (J / m each) and its constant force (F t / m), plus the speed its spin
+  // gives its surface (its initial spin and the impulses' angular impulses over its smallest
+  // moment, times its reach); plus the wind, plus what gravity adds over the whole run. A spin's
+  // energy is within 1/2 m (w reach)^2, since no moment exceeds m reach^2.
   double speed = 0.0, size = 1.0, mass = 0.0;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];
@@ -21,6 +21,9 @@ DivergenceBounds divergence_bounds(const Scene& scene) {
       if (h.body == static_cast<int>(i)) reach += (b.position - h.anchor).norm();
     const double moment = principal_inertia(b).minCoeff();
     double v = b.velocity.norm(), w = b.angular_velocity.norm();
+    // A constant force and torque add to the speed and the spin over the whole run.
+    if (!b.fixed) v += b.force.norm() / b.mass * scene.duration;
+    if (moment > 0.0) w += b.torque.norm() / moment * scene.duration;
     for (const Impulse& imp : scene.impulses) {
       if (imp.body != static_cast<int>(i)) continue;
       v += imp.impulse.norm() / b.mass;
@@ -64,8 +67,10 @@ std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds
     if ((s.position - scene.bodies[i].position).norm() > bounds.travel) {
       std::ostringstream m;
       m << "body '" << name << "' moved more than " << bounds.travel
-        << " m from its start, ten times what gravity, the initial speeds and spins and the "
-           "impulses allow";
+        << " m from its start, ten times what gravity, the initial speeds and spins"
+        << (scene.features().has(Feature::AppliedForce) ? ", the impulses and the constant forces"
+                                                        : " and the impulses")
+        << " allow";
       return m.str();
     }
   }

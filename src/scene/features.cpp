@@ -35,6 +35,8 @@ std::string feature_name(Feature f) {
       return "hinge";
     case Feature::Impulse:
       return "impulse";
+    case Feature::AppliedForce:
+      return "applied-force";
     case Feature::Rotation:
       return "rotation";
     case Feature::Boxes:

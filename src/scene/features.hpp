@@ -22,6 +22,7 @@ enum class Feature {
   Rotation,       ///< a body that spins (non-zero angular velocity)
   Boxes,          ///< box-shaped bodies
   Impulse,        ///< instantaneous pushes at given times
+  AppliedForce,   ///< a constant force or torque on some body
   Count
 };
 
@@ -36,6 +37,12 @@ class FeatureSet {
   /// Features in `this` that `other` lacks.
   std::vector<Feature> missing_from(const FeatureSet& other) const;
   bool operator==(const FeatureSet&) const = default;
+  /// Every feature of either set.
+  FeatureSet operator|(const FeatureSet& other) const {
+    FeatureSet out = *this;
+    out.bits_ |= other.bits_;
+    return out;
+  }
 
  private:
   std::bitset<static_cast<std::size_t>(Feature::Count)> bits_;
@@ -43,6 +50,12 @@ class FeatureSet {
 
 /// Short lower-case name, e.g. "ground-contact".
 std::string feature_name(Feature f);
+/// What a backend simulates by taking the force model's loads before each step
+/// (physics/step_start.hpp): gravity and every force term.
+inline FeatureSet force_stage_features() {
+  return {Feature::Gravity, Feature::Drag, Feature::Magnus, Feature::Wind, Feature::AppliedForce};
+}
+
 /// Every feature in order, for listings.
 std::vector<Feature> all_features();
 

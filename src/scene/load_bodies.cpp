@@ -102,6 +102,24 @@ void read_air_coefficients(TomlReader& r, const Scene& scene, Body& b) {
            r.where() + " has air coefficients but the case has no [air] section");
 }
 
+/// A constant force and torque ([[body]] `force`, `torque`, world frame).
+void read_applied_load(TomlReader& r, const Scene& scene, Body& b) {
+  b.force = r.vec3_or("force", {});
+  require_planar(r, scene, "force", b.force);
+  require_vector_range(r, "force", b.force, VectorKind::Force);
+  b.torque = r.vec3_or("torque", {});
+  if (scene.dims == 2 && (b.torque.x() != 0.0 || b.torque.y() != 0.0))
+    r.fail(r.line_of("torque"), "a 2D body turns about z only: 'torque' must be [0, 0, tz]");
+  require_vector_range(r, "torque", b.torque, VectorKind::Torque);
+  if (!b.torque.isZero(0.0) && b.shape == Shape::Point)
+    r.fail(r.line_of("torque"),
+           "a point does not turn, so a torque on '" + b.name + "' has nothing to act on");
+  for (const char* key : {"force", "torque"})
+    if (b.fixed && r.has(key) && !(key[0] == 'f' ? b.force : b.torque).isZero(0.0))
+      r.fail(r.line_of(key), r.where() + " is fixed (it never moves): a '" + key +
+                                 "' on it moves nothing; leave it out");
+}
+
 }  // namespace
 
 void read_bodies(TomlReader& root, Scene& scene) {
@@ -132,6 +150,7 @@ void read_bodies(TomlReader& root, Scene& scene) {
     read_orientation(r, scene, b);
     refuse_motion_of_fixed(r, b);
     read_air_coefficients(r, scene, b);
+    read_applied_load(r, scene, b);
     refuse_ground_overlap(r, scene, b, r.line_of("position"));
     r.finish();
     scene.bodies.push_back(b);

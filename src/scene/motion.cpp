@@ -1,15 +1,6 @@
 #include "scene/motion.hpp"
 
-#include "scene/air_forces.hpp"
-
 namespace bb {
-
-EquationsOfMotion::EquationsOfMotion(const Scene& scene)
-    : scene_(scene), springs_(spring_network(scene)) {
-  for (const Body& b : scene.bodies) inverse_mass_.push_back(b.fixed ? 0.0 : 1.0 / b.mass);
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-    if (!scene.bodies[i].wind_force.isZero()) panels_.push_back(static_cast<int>(i));
-}
 
 double kinetic_energy(const Body& body, const BodyState& s) {
   if (body.fixed) return 0.0;

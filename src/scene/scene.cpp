@@ -32,6 +32,7 @@ FeatureSet Scene::features() const {
     if (b.angular_velocity.norm() > 0.0) f.add(Feature::Rotation);
     if (b.shape == Shape::Box) f.add(Feature::Boxes);
     if (b.wind_force.norm() > 0.0) f.add(Feature::Wind);
+    if (b.force.norm() > 0.0 || b.torque.norm() > 0.0) f.add(Feature::AppliedForce);
   }
   if (drag) f.add(Feature::Drag);
   if (magnus_used) f.add(Feature::Magnus);

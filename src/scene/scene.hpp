@@ -33,6 +33,8 @@ struct Body {
   /// box feels its part along the face's normal, (F.n) n, at its centre (seed section 8,
   /// the falling wall: F_w cos(phi) as the wall tips).
   Vec3 wind_force;
+  Vec3 force;          ///< newtons, world frame: a constant push at the centre
+  Vec3 torque;         ///< newton metres, world frame: a constant turn about the centre
   bool fixed = false;  ///< infinite mass, never moves
   int line = 0;        ///< line of the [[body]] header in the case file
 };

@@ -54,6 +54,8 @@ std::conditional_t<std::is_const_v<S>, const double*, double*> target(
     if (p[2] == "angular_velocity") return &b.angular_velocity[c];
     if (p[2] == "half_extents") return &b.half_extents[c];
     if (p[2] == "wind_force") return &b.wind_force[c];
+    if (p[2] == "force") return &b.force[c];
+    if (p[2] == "torque") return &b.torque[c];
     return nullptr;
   }
   if (p[0] == "ground" && p.size() == 2 && scene.ground) {
@@ -90,7 +92,8 @@ std::optional<VectorKind> swept_vector_kind(const std::vector<std::string>& p) {
   if (p[2] == "position") return VectorKind::Position;
   if (p[2] == "velocity") return VectorKind::Velocity;
   if (p[2] == "angular_velocity") return VectorKind::AngularVelocity;
-  if (p[2] == "wind_force") return VectorKind::Force;
+  if (p[2] == "wind_force" || p[2] == "force") return VectorKind::Force;
+  if (p[2] == "torque") return VectorKind::Torque;
   return std::nullopt;  // half_extents are sizes
 }
 
@@ -102,12 +105,14 @@ Vec3 swept_vector(const Scene& scene, const std::vector<std::string>& p) {
   if (p[2] == "position") return b.position;
   if (p[2] == "velocity") return b.velocity;
   if (p[2] == "angular_velocity") return b.angular_velocity;
+  if (p[2] == "force") return b.force;
+  if (p[2] == "torque") return b.torque;
   return b.wind_force;
 }
 
 const char* kKnownPaths =
     "body.<name>.mass|radius|drag_coefficient|magnus, "
-    "body.<name>.position|velocity|angular_velocity|half_extents|wind_force.x|y|z, "
+    "body.<name>.position|velocity|angular_velocity|half_extents|wind_force|force|torque.x|y|z, "
     "ground.restitution|friction_static|friction_kinetic|normal (an angle in degrees), "
     "air.density, air.wind.x|y|z, gravity.x|y|z";
 
@@ -130,12 +135,14 @@ std::string sweep_path_problem(const Scene& scene, const std::string& path) {
       return "'" + path + "': body '" + b.name + "' is fixed; only its position can be swept";
     if (p[2] == "radius" && b.shape != Shape::Sphere)
       return "'" + path + "': body '" + b.name + "' is not a sphere";
+    if (p[2] == "torque" && b.shape == Shape::Point)
+      return "'" + path + "': body '" + b.name + "' is a point, which does not turn";
     if ((p[2] == "half_extents" || p[2] == "wind_force") && b.shape != Shape::Box)
       return "'" + path + "': body '" + b.name + "' is not a box";
     if (scene.dims == 2 && p.size() == 4 && p[2] != "half_extents" && p[2] != "angular_velocity" &&
-        p[3] == "z")
+        p[2] != "torque" && p[3] == "z")
       return "'" + path + "': a 2D case keeps z at 0";
-    if (scene.dims == 2 && p[2] == "angular_velocity" && p[3] != "z")
+    if (scene.dims == 2 && (p[2] == "angular_velocity" || p[2] == "torque") && p[3] != "z")
       return "'" + path + "': a 2D body turns about z only";
   }
   if (scene.dims == 2 && p.back() == "z" && (p[0] == "gravity" || p[0] == "air"))

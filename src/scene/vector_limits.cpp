@@ -15,6 +15,7 @@ const VectorLimit& vector_limit(VectorKind kind) {
   static const VectorLimit gravity{0.0, 1e4, "m/s^2", "gravity"};
   static const VectorLimit wind{0.0, 1e5, "m/s", "a wind"};
   static const VectorLimit force{0.0, 1e9, "N", "a force"};
+  static const VectorLimit torque{0.0, 1e9, "N m", "a torque"};
   static const VectorLimit impulse{0.0, 1e9, "N s", "an impulse"};
   switch (kind) {
     case VectorKind::Position:
@@ -31,6 +32,8 @@ const VectorLimit& vector_limit(VectorKind kind) {
       return wind;
     case VectorKind::Force:
       return force;
+    case VectorKind::Torque:
+      return torque;
     case VectorKind::Impulse:
       break;
   }

@@ -17,7 +17,8 @@ enum class VectorKind {
   Direction,        ///< the ground's normal, hinge axes: only the direction counts
   Gravity,
   Wind,     ///< the air's wind
-  Force,    ///< a box's wind_force
+  Force,    ///< a box's wind_force, a body's force
+  Torque,   ///< a body's torque
   Impulse,  ///< an [[impulse]]
 };
 
@@ -30,8 +31,9 @@ struct VectorLimit {
 
 /// The range of `kind`: positions within 1e6 m of the origin (where a double still resolves
 /// the 1e-9 m overlap rounding), velocities and winds up to 1e5 m/s, spins up to 1e5 rad/s,
-/// gravity up to 1e4 m/s^2 (a thousand g), forces up to 1e9 N, impulses up to 1e9 N s, and
-/// directions between 1e-9 and 1e9 long (their squares neither underflow nor overflow).
+/// gravity up to 1e4 m/s^2 (a thousand g), forces up to 1e9 N, torques up to 1e9 N m, impulses up
+/// to 1e9 N s, and directions between 1e-9 and 1e9 long (their squares neither underflow nor
+/// overflow).
 const VectorLimit& vector_limit(VectorKind kind);
 
 /// Why `v` cannot be a vector of `kind` ("has a norm of 1e+160 m; a position is at most

@@ -5,7 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/external_forces.hpp"
+#include "physics/equations_of_motion.hpp"
+#include "physics/state_forces.hpp"
 #include "scene/load_case.hpp"
 #include "scene/motion.hpp"
 #include "support/test_support.hpp"
@@ -25,12 +26,12 @@ TEST(SpringForces, HookeAndDamperAlongTheSpringEqualAndOpposite) {
   // The engines' layout gives the same forces.
   State state(2);
   for (int i = 0; i < 2; ++i) state[i].position = x[i], state[i].velocity = v[i];
-  std::vector<Vec3> by_hand;
-  external_forces(scene, state, by_hand, &springs);
-  for (int i = 0; i < 2; ++i) EXPECT_EQ(by_hand[i], f[i]);
-  // Without the network, engines that build their own joints add nothing for springs.
-  external_forces(scene, state, by_hand);
-  for (int i = 0; i < 2; ++i) EXPECT_EQ(by_hand[i], Vec3::Zero());
+  StateForces by_hand(scene);
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(by_hand.at(state).force[i], f[i]);
+  // Without the springs, engines that build their own joints add nothing for them.
+  StateForces joints(scene, {false});
+  EXPECT_TRUE(joints.model().empty());
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(joints.at(state).force[i], Vec3::Zero());
 }
 
 TEST(SpringForces, TheEquationsOfMotionAndTheEnergyCarryTheSprings) {
@@ -41,9 +42,9 @@ TEST(SpringForces, TheEquationsOfMotionAndTheEnergyCarryTheSprings) {
   const std::vector<Quat> q(start.size(), Quat::Identity());
   for (const BodyState& s : start) x.push_back(s.position), v.push_back(s.velocity);
   equations.accelerations(x, v, omega, q, a);
-  std::vector<Vec3> by_hand;
+  StateForces forces(scene);
+  const std::vector<Vec3>& by_hand = forces.at(start).force;
   const SpringNetwork springs = spring_network(scene);
-  external_forces(scene, start, by_hand, &springs);
   for (std::size_t i = 0; i < start.size(); ++i) {
     if (scene.bodies[i].fixed) {
       EXPECT_EQ(a[i], Vec3::Zero());

@@ -1,4 +1,4 @@
-// The matrix of a cross product, for the reference's analytic Jacobians.
+// The matrix of a cross product, for the analytic Jacobians of the forces.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,0 +1,51 @@
+// The Magnus force of a spinning ball (seed section 8): F = k (omega x (v - w)), w the wind.
+#include "physics/cross_matrix.hpp"
+#include "physics/force_term.hpp"
+
+namespace bb {
+
+namespace {
+
+class MagnusTerm : public ForceTerm {
+ public:
+  explicit MagnusTerm(const Scene& scene) : wind_(scene.air->wind) {
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+      if (scene.bodies[i].magnus != 0.0) {
+        bodies_.push_back(static_cast<int>(i));
+        k_.push_back(scene.bodies[i].magnus);
+      }
+  }
+  bool empty() const { return bodies_.empty(); }
+
+  void add(const BodyStates& s, Vec3* force, Vec3*) const override {
+    for (std::size_t j = 0; j < bodies_.size(); ++j) {
+      const int i = bodies_[j];
+      force[i] += s.spin[i].cross(s.velocity[i] - wind_) * k_[j];
+    }
+  }
+
+  void add_jacobian(const BodyStates& s, ForceJacobian& out) const override {
+    for (std::size_t j = 0; j < bodies_.size(); ++j) {
+      const int i = bodies_[j];
+      // d(k omega x u)/du = k skew(omega); d(k omega x u)/domega = -k skew(u).
+      out.add(i, i, Wrt::Velocity, k_[j] * skew(s.spin[i]));
+      out.add(i, i, Wrt::Spin, -(k_[j] * skew(s.velocity[i] - wind_)));
+    }
+  }
+
+ private:
+  Vec3 wind_;
+  std::vector<int> bodies_;  ///< bodies with a Magnus coefficient
+  std::vector<double> k_;    ///< per body: kg
+};
+
+}  // namespace
+
+std::unique_ptr<ForceTerm> make_magnus_term(const Scene& scene, const ForceOptions&) {
+  if (!scene.air) return nullptr;
+  auto term = std::make_unique<MagnusTerm>(scene);
+  if (term->empty()) return nullptr;
+  return term;
+}
+
+}  // namespace bb
