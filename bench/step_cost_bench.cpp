@@ -4,10 +4,12 @@
 // the timer, so every step is a step of the case.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
-#include "cli/commands.hpp"
 #include "run/registry.hpp"
+#include "scene/load_case.hpp"
 
 namespace {
 
@@ -30,12 +32,23 @@ void step_cost(benchmark::State& state, const bb::Backend* backend, const bb::Sc
   state.counters["dt_s"] = dt;
 }
 
+/// Every case of the bundled suite, in name order.
+std::vector<bb::Scene> bundled_cases() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(BEACHBALL_CASES_DIR))
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  std::vector<bb::Scene> scenes;
+  for (const auto& f : files) scenes.push_back(bb::load_case(f.string()));
+  return scenes;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   // The bundled suite and the engine plugins next to this program.
-  static const std::vector<bb::Scene> scenes = bb::cli::load_cases({});
+  static const std::vector<bb::Scene> scenes = bundled_cases();
   static const bb::Registry registry = bb::Registry::load();
   static std::vector<bb::BackendSet> sets;
   for (const bb::Scene& scene : scenes) {

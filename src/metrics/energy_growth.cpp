@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "metrics/short_number.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -67,20 +67,21 @@ GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
 
   if (last > 10.0 * whole.scale && last > 2.0 * first && levelled_off(whole))
     return {Growth::Runaway, false,
-            "energy ran away: its rise above the start went from " + short_number(first) +
+            "energy ran away: its rise above the start went from " + significant_digits(first) +
                 " J at the end of the first of the run's " + std::to_string(all) + " windows to " +
-                short_number(last) + " J, more than ten times the " + short_number(whole.scale) +
+                significant_digits(last) + " J, more than ten times the " +
+                significant_digits(whole.scale) +
                 " J the scene's physics can trade, and levelled off on the way: held by the "
                 "motion's nonlinearity (a spring folding through itself), not by the step"};
   // Too few steps to tell how it grows: only a rise far beyond the physics counts.
   if (all < kGrowthWindows) {
     const std::string few = "too few steps (" + std::to_string(all) +
                             ") to tell how the energy grows; its rise above the start reached " +
-                            short_number(last) + " J";
+                            significant_digits(last) + " J";
     if (last > 10.0 * whole.scale && last > 2.0 * first)
       return {Growth::Runaway, false,
-              few + ", more than ten times the " + short_number(whole.scale) +
-                  " J the scene's physics can trade, from " + short_number(first) +
+              few + ", more than ten times the " + significant_digits(whole.scale) +
+                  " J the scene's physics can trade, from " + significant_digits(first) +
                   " J after its first step"};
     return {Growth::Bounded, true, few};
   }
@@ -100,7 +101,7 @@ GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
     return {Growth::Drift, true,
             "energy drifts: its rise above the start began in the last " + std::to_string(windows) +
                 " of the run's " + std::to_string(all) +
-                " windows, too late to tell how it grows, and reached " + short_number(last) +
+                " windows, too late to tell how it grows, and reached " + significant_digits(last) +
                 " J"};
   // Two quarters in a row. The first quarter also holds how the motion starts (a transient,
   // a swing building up): growth there counts only from twice what steady drift gives.
@@ -111,33 +112,34 @@ GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
     if (!before || !now || *before <= first_threshold || *now <= threshold || *now < 0.85 * *before)
       continue;
     const int from = quarter(q - 1, windows).first, to = quarter(q, windows).second;
-    return {Growth::Compounds, false,
-            "energy grows without bound, compounding: over quarters " + std::to_string(q - 1) +
-                " and " + std::to_string(q) + " of the run its rise above the start grew " +
-                short_number(std::exp(*before)) + " and " + short_number(std::exp(*now)) +
-                " times faster than steady drift would, from " + short_number(h.level[from - 1]) +
-                " J to " + short_number(h.level[to - 1]) + " J" +
-                (to < windows ? ", and " + short_number(last) + " J at the end" : "")};
+    return {
+        Growth::Compounds, false,
+        "energy grows without bound, compounding: over quarters " + std::to_string(q - 1) +
+            " and " + std::to_string(q) + " of the run its rise above the start grew " +
+            significant_digits(std::exp(*before)) + " and " + significant_digits(std::exp(*now)) +
+            " times faster than steady drift would, from " + significant_digits(h.level[from - 1]) +
+            " J to " + significant_digits(h.level[to - 1]) + " J" +
+            (to < windows ? ", and " + significant_digits(last) + " J at the end" : "")};
   }
   // The rise in the last quarter, beside the whole rise: under 5 percent is levelling off.
   if (last - whole.level[quarter(4, all).first - 1] <= 0.05 * last)
-    return {
-        Growth::Bounded, true,
-        "energy bounded: its rise above the start levelled off at " + short_number(last) + " J"};
+    return {Growth::Bounded, true,
+            "energy bounded: its rise above the start levelled off at " + significant_digits(last) +
+                " J"};
 
   // How it grew over the second half, as a power of the elapsed time (when it had begun).
   const int half = windows / 2;
   const double middle = h.level[half - 1];
   const std::string power =
       middle > 0.0 ? ", as the elapsed time to the power " +
-                         short_number(std::log(last / middle) /
-                                      std::log(static_cast<double>(h.steps.back()) /
-                                               static_cast<double>(h.steps[half - 1]))) +
+                         significant_digits(std::log(last / middle) /
+                                            std::log(static_cast<double>(h.steps.back()) /
+                                                     static_cast<double>(h.steps[half - 1]))) +
                          " over the second half"
                    : "";
   return {Growth::Drift, true,
-          "energy drifts: its rise above the start grew to " + short_number(last) + " J" + power +
-              ": drift that adds, not growth that compounds"};
+          "energy drifts: its rise above the start grew to " + significant_digits(last) + " J" +
+              power + ": drift that adds, not growth that compounds"};
 }
 
 }  // namespace bb

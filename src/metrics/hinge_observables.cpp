@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/hinge_motion.hpp"
 #include "physics/state_forces.hpp"
-#include "reference/hinge_motion.hpp"
 
 namespace bb {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "metrics/short_number.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -90,7 +90,7 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
                      ? "rounding: every error is at or below its rounding floor"
                  : fit.below_floor == 0 && fit.failed == 0
                      ? "saturated: every error is at or above a tenth of the motion's scale (" +
-                           short_number(saturation) + " m)"
+                           significant_digits(saturation) + " m)"
                      : "no error between the rounding floor and saturation" + others(fit);
     return fit;
   }
@@ -115,12 +115,13 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
   if (in_run < 3) {
     const double opening = slopes.empty() ? disagreeing.value_or(0.0) : slopes.front();
     if (disagreeing && opening < 0.0)
-      fit.reason = "rounding: the error grows as dt shrinks (local slope " + short_number(opening) +
-                   " from " + short_number(points[start].dt) + " s)";
+      fit.reason = "rounding: the error grows as dt shrinks (local slope " +
+                   significant_digits(opening) + " from " + significant_digits(points[start].dt) +
+                   " s)";
     else if (disagreeing)
       fit.reason = "not asymptotic: the local slopes from the smallest step in range, " +
-                   (slopes.empty() ? "" : short_number(slopes.front()) + " then ") +
-                   short_number(*disagreeing) + ", disagree";
+                   (slopes.empty() ? "" : significant_digits(slopes.front()) + " then ") +
+                   significant_digits(*disagreeing) + ", disagree";
     else
       fit.reason = "too few points: " + std::to_string(in_run) +
                    " in a row between the rounding floor and saturation, three needed" +
@@ -135,8 +136,9 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
   const double fitted = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   // An error that does not shrink with dt is held by something other than the step.
   if (fitted < kSmallestOrder) {
-    fit.reason = "not converging: the error barely shrinks with dt (slope " + short_number(fitted) +
-                 " over the " + std::to_string(in_run) + " smallest steps in range)";
+    fit.reason = "not converging: the error barely shrinks with dt (slope " +
+                 significant_digits(fitted) + " over the " + std::to_string(in_run) +
+                 " smallest steps in range)";
     return fit;
   }
   fit.used = in_run;

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "course/course_backend.hpp"
+#include "course/stability_theory.hpp"
 #include "metrics/energy_growth.hpp"
-#include "metrics/stability_theory.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
 #include "run/child_pool.hpp"

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,6 +41,14 @@ inline std::string short_number(double x) {
   std::ostringstream s;
   s << x;
   return s.str();
+}
+
+/// `x` with `digits` significant digits, as printf's "%.*g" writes it (the metrics'
+/// reasons and notes).
+inline std::string significant_digits(double x, int digits = 3) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+  return buffer;
 }
 
 /// A step as people write it: "1/60" when 1/dt is a whole number, else seconds (6 digits).

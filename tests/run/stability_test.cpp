@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "course/course_backend.hpp"
-#include "metrics/spring_modes.hpp"
-#include "metrics/stability_theory.hpp"
+#include "course/spring_modes.hpp"
+#include "course/stability_theory.hpp"
 #include "scene/case_error.hpp"
 #include "scene/load_case.hpp"
 #include "support/course_support.hpp"

@@ -1,6 +1,7 @@
-// A rigid body turning about a fixed world axis (a [[hinge]]), for the reference: it has
-// one degree of freedom, the angle about the axis, and its centre moves on a circle about
-// the anchor. Forces acting at the centre turn it through their torque about the axis.
+// A rigid body turning about a fixed world axis (a [[hinge]]), for the reference and the
+// hinge force observable: it has one degree of freedom, the angle about the axis, and its
+// centre moves on a circle about the anchor. Forces acting at the centre turn it through
+// their torque about the axis.
 #pragma once
 
 #include <Eigen/Geometry>

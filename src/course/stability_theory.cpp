@@ -1,11 +1,11 @@
-#include "metrics/stability_theory.hpp"
+#include "course/stability_theory.hpp"
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "metrics/short_number.hpp"
-#include "metrics/spring_modes.hpp"
+#include "course/spring_modes.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -16,10 +16,10 @@ std::optional<TheoreticalLimit> spring_limit(const Scene& scene, const std::stri
   const auto mode = stiffest_mode(scene);
   if (!mode) return std::nullopt;
   const double limit = linear_stability_limit(integrator, mode->omega, mode->damping_rate);
-  std::string formula =
-      "stiffest mode omega_max = " + short_number(mode->omega, 4) + " rad/s (" + mode->how + ")";
+  std::string formula = "stiffest mode omega_max = " + significant_digits(mode->omega, 4) +
+                        " rad/s (" + mode->how + ")";
   if (mode->damping_rate > 0.0)
-    formula += ", damping rate " + short_number(mode->damping_rate, 4) + " /s";
+    formula += ", damping rate " + significant_digits(mode->damping_rate, 4) + " /s";
   else if (!mode->damping_known)
     formula += "; the springs' damping ratios differ, so damping is left out";
   if (limit == 0.0)

@@ -1,4 +1,4 @@
-#include "reference/hinge_motion.hpp"
+#include "physics/hinge_motion.hpp"
 
 namespace bb {
 

@@ -1,4 +1,4 @@
-#include "metrics/spring_modes.hpp"
+#include "course/spring_modes.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
