@@ -30,7 +30,10 @@ inline EngineDescription box2d_engine() {
             "is off)"}},
           true,
           {{"box2d/force", {Feature::Springs}}},
-          {{"box2d", box2d_supports()}, {"box2d/force", box2d_supports()}}};
+          {{"box2d", box2d_supports()}, {"box2d/force", box2d_supports()}},
+          false,
+          {"box2d", "box2d/force"},
+          {{"hinge", "b2RevoluteJoint"}}};
 }
 
 }  // namespace bb

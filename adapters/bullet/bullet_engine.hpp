@@ -51,7 +51,13 @@ inline EngineDescription bullet_engine() {
            {"bullet/force", bullet_rigid_supports()},
            // One soft body of point masses and springs: no shapes, no contacts, no air.
            {"bullet-softbody",
-            FeatureSet{Feature::ThreeD, Feature::Gravity, Feature::Springs, Feature::Impulse}}}};
+            FeatureSet{Feature::ThreeD, Feature::Gravity, Feature::Springs, Feature::Impulse}}},
+          false,
+          {"bullet-float"},
+          {{"gyroscopic", "BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY on every moving body"},
+           {"hinge", "btHingeConstraint"},
+           {"plane_2d", "setLinearFactor(1, 1, 0)"}},
+          {"hinge_erp", "hinge_cfm"}};
 }
 
 }  // namespace bb

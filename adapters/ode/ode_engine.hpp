@@ -36,7 +36,13 @@ inline EngineDescription ode_engine() {
             "(dWorldSetContactSurfaceLayer; ODE's default)"}},
           true,
           {{"ode/force", {Feature::Springs}}},
-          {{"ode", ode_supports()}, {"ode/force", ode_supports()}}};
+          {{"ode", ode_supports()}, {"ode/force", ode_supports()}},
+          true,
+          {},
+          {{"gyroscopic", "dBodySetGyroscopicMode(body, 1)"},
+           {"hinge", "dJointCreateHinge"},
+           {"plane_2d", "put back in the plane"}},
+          {"hinge_erp", "hinge_cfm"}};
 }
 
 }  // namespace bb

@@ -36,6 +36,17 @@ struct EngineDescription {
   /// returns this); known here so that a case naming a backend that cannot run it is refused
   /// at load, built or not.
   std::map<std::string, FeatureSet> supports = {};
+  /// What the engine does differently, declared here so that tests expect it from the
+  /// description, never from the engine's name:
+  /// the friction limit is a pyramid (a row per tangent axis: a diagonal slide meets
+  /// sqrt(2) mu N) rather than a circle (one row along the slide);
+  bool friction_pyramid = false;
+  /// the backends that compute in single precision;
+  std::vector<std::string> single_precision = {};
+  /// per engine_settings key, words its text always holds (the engine's own API, named);
+  std::map<std::string, std::string> names_in_settings = {};
+  /// the number settings a scene with a hinge reports (a soft joint's ERP and CFM).
+  std::vector<std::string> hinge_numbers = {};
 };
 
 /// What backend `name` of the catalogue supports (none for a name it does not know).

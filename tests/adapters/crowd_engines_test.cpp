@@ -33,6 +33,14 @@ Found find_backend(const Scene& scene, const std::string& name) {
 
 class CrowdEngines : public ::testing::TestWithParam<std::string> {};
 
+/// The course's two crowd rules and every rigid engine the adapters describe.
+std::vector<std::string> crowd_backends() {
+  std::vector<std::string> out = {"course/semi-implicit-euler+kinematic",
+                                  "course/semi-implicit-euler+shared"};
+  for (const std::string& e : test::rigid_engines()) out.push_back(e);
+  return out;
+}
+
 TEST_P(CrowdEngines, EveryBallStaysInTheBoxAndThePlane) {
   const Scene scene = load_case(test::source_path("cases/many_beachballs.toml"));
   ASSERT_EQ(scene.dims, 2);
@@ -57,10 +65,7 @@ TEST_P(CrowdEngines, EveryBallStaysInTheBoxAndThePlane) {
   EXPECT_LT(off_plane, 1e-9) << GetParam();
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, CrowdEngines,
-                         ::testing::Values("course/semi-implicit-euler+kinematic",
-                                           "course/semi-implicit-euler+shared", "bullet",
-                                           "bullet-float", "box2d", "ode"),
+INSTANTIATE_TEST_SUITE_P(Engines, CrowdEngines, ::testing::ValuesIn(crowd_backends()),
                          [](const auto& info) {
                            std::string name = info.param;
                            for (char& c : name)
@@ -100,12 +105,13 @@ Scene throw_scene(int dims) {
 
 TEST(CrowdEngines, EngineSettingsSayHowA2DSceneIsHeldInThePlane) {
   const Scene flat = throw_scene(2), solid = throw_scene(3);
-  const std::pair<const char*, const char*> engines[] = {
-      {"bullet", "setLinearFactor(1, 1, 0)"},
-      {"bullet-float", "setLinearFactor(1, 1, 0)"},
-      {"ode", "put back in the plane"}};
-  for (const auto& [name, mechanism] : engines) {
+  // Every 3D engine holds a 2D scene in the plane its own way, named as its description
+  // declares ("plane_2d").
+  for (const std::string& name : test::rigid_engines_with(Feature::ThreeD)) {
     SCOPED_TRACE(name);
+    const EngineDescription& described = *test::description_of(name);
+    ASSERT_TRUE(described.names_in_settings.count("plane_2d")) << name;
+    const std::string& mechanism = described.names_in_settings.at("plane_2d");
     const Found found = find_backend(flat, name);
     const Backend* backend = found.backend;
     if (backend == nullptr) continue;  // not built

@@ -17,9 +17,7 @@ namespace {
 using test::engine;
 using test::registry;
 
-bool single_precision(const std::string& name) {
-  return name == "bullet-float" || name == "box2d";
-}
+using test::single_precision;
 
 struct EngineCase {
   std::string engine;
@@ -60,10 +58,13 @@ TEST_P(EngineConvergence, ConvergesAndStepsLikeSemiImplicitEuler) {
 
 std::vector<EngineCase> engine_cases() {
   std::vector<EngineCase> out;
-  for (const char* e : {"bullet", "bullet-float", "box2d", "ode"})
+  for (const std::string& e : test::rigid_engines())
     for (const char* c : {"drag_fall", "beachball_shells", "three_beachballs_2", "magnus_throw"})
-      // Box2D is 2D only; Engines.Box2dSaysItCannotRunA3dCase covers the 3D case.
-      if (std::string(e) != "box2d" || std::string(c) != "beachball_shells") out.push_back({e, c});
+      // The 3D case only on an engine that declares 3D (Box2D is 2D only;
+      // Engines.Box2dSaysItCannotRunA3dCase covers it there).
+      if (test::description_of(e)->supports.at(e).has(Feature::ThreeD) ||
+          std::string(c) != "beachball_shells")
+        out.push_back({e, c});
   return out;
 }
 
@@ -75,7 +76,9 @@ INSTANTIATE_TEST_SUITE_P(DragCases, EngineConvergence, ::testing::ValuesIn(engin
                          });
 
 TEST(Engines, TheStandardEnginesAreBuilt) {
-  for (const char* name : {"bullet", "bullet-float", "box2d", "ode"})
+  // Every rigid engine the adapters describe (the catalogue names them, built or not).
+  ASSERT_FALSE(test::rigid_engines().empty());
+  for (const std::string& name : test::rigid_engines())
     EXPECT_NE(engine(name), nullptr) << name << " plugin missing from " << plugin_folder();
 }
 

@@ -207,8 +207,11 @@ TEST_P(FrictionEngines, HoldsTheBoxOnASlopeBelowTheKineticAngle) {
 // every engine is at rest but for a crawl below 3.5e-4 m/s: bullet-float's one row turns to
 // a fixed direction (x) below sqrt(FLT_EPSILON) m/s and leaves 5.5e-5 m/s along z.
 TEST_P(FrictionEngines, ADiagonalSlideShowsTheShapeOfTheFrictionLimit) {
-  if (GetParam() == "box2d") GTEST_SKIP() << "box2d is 2D only";
-  const double expected = GetParam() == "ode" ? 1.0 / std::numbers::sqrt2 : 1.0;
+  if (!backend().supports().has(Feature::ThreeD))
+    GTEST_SKIP() << GetParam() << " does not support 3D scenes (its description says so)";
+  // The shape its description declares: a pyramid, or a circle.
+  const double expected =
+      test::description_of(GetParam())->friction_pyramid ? 1.0 / std::numbers::sqrt2 : 1.0;
   const double c = kV0 / std::numbers::sqrt2;
   const Motion along_x = run(backend(), test::scene_from(box_case(3, 0.0, {kV0, 0, 0}, 2.0)));
   const Motion along_z = run(backend(), test::scene_from(box_case(3, 0.0, {0, 0, kV0}, 2.0)));
@@ -243,8 +246,7 @@ TEST_P(FrictionEngines, ReportsItsCreepOnSlopeHold) {
   EXPECT_GT(*slid.value, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, FrictionEngines,
-                         ::testing::Values("bullet", "bullet-float", "box2d", "ode"),
+INSTANTIATE_TEST_SUITE_P(Engines, FrictionEngines, ::testing::ValuesIn(test::rigid_engines()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = info.param;
                            std::replace(name.begin(), name.end(), '-', '_');

@@ -107,16 +107,14 @@ TEST_P(HingeEngines, BuildsTheEnginesOwnJointAndSaysSo) {
   EXPECT_TRUE(test::takes_part(GetParam(), scene));
   const RunRecord run = run_case(backend(), scene);
   const std::string hinge = text_setting(run.engine_settings, "hinge");
-  const std::string joint = GetParam() == "box2d" ? "b2RevoluteJoint"
-                            : GetParam() == "ode" ? "dJointCreateHinge"
-                                                  : "btHingeConstraint";
-  EXPECT_NE(hinge.find(joint), std::string::npos) << hinge;
+  // The joint its description says it builds.
+  const EngineDescription& described = *test::description_of(GetParam());
+  ASSERT_TRUE(described.names_in_settings.count("hinge")) << GetParam();
+  EXPECT_NE(hinge.find(described.names_in_settings.at("hinge")), std::string::npos) << hinge;
   EXPECT_NE(hinge.find("limit off"), std::string::npos) << hinge;
   EXPECT_NE(hinge.find("motor off"), std::string::npos) << hinge;
-  if (GetParam() != "box2d") {
-    EXPECT_FALSE(std::isnan(test::number_setting(run.engine_settings, "hinge_erp")));
-    EXPECT_FALSE(std::isnan(test::number_setting(run.engine_settings, "hinge_cfm")));
-  }
+  for (const std::string& key : described.hinge_numbers)
+    EXPECT_FALSE(std::isnan(test::number_setting(run.engine_settings, key))) << key;
 }
 
 // (a) and (b): struck at its end, the plank turns about the anchor.
@@ -214,8 +212,7 @@ std::string hinge_test_name(const ::testing::TestParamInfo<std::string>& info) {
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, HingeEngines,
-                         ::testing::Values("bullet", "bullet-float", "box2d", "ode"),
+INSTANTIATE_TEST_SUITE_P(Engines, HingeEngines, ::testing::ValuesIn(test::rigid_engines()),
                          hinge_test_name);
 
 }  // namespace

@@ -99,8 +99,7 @@ Scene spinning_box(const std::string& engine_keys = "") {
 
 /// The [engines.<engine>] table that turns the gyroscopic term off.
 std::string without_gyroscopic_term(const std::string& backend) {
-  return "[engines." + std::string(backend == "ode" ? "ode" : "bullet") +
-         "]\ngyroscopic_term = false\n";
+  return "[engines." + test::description_of(backend)->engine + "]\ngyroscopic_term = false\n";
 }
 
 /// The reference's run of the case, once per test program.
@@ -145,7 +144,6 @@ class RotationEngines : public ::testing::TestWithParam<std::string> {
     if (engine(GetParam()) == nullptr) GTEST_SKIP() << GetParam() << " was not built";
   }
   const Backend& backend() const { return *engine(GetParam()); }
-  bool is_ode() const { return GetParam() == "ode"; }
   Spin run(const std::string& engine_keys, Settings* settings = nullptr) const {
     return run_spinning_box(backend(), engine_keys, settings);
   }
@@ -155,10 +153,9 @@ TEST_P(RotationEngines, SetsTheGyroscopicTermAndSaysSo) {
   Settings settings;
   run("", &settings);
   const std::string said = text_setting(settings, "gyroscopic");
-  EXPECT_NE(said.find(is_ode() ? "dBodySetGyroscopicMode(body, 1)"
-                               : "BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY on every moving body"),
-            std::string::npos)
-      << said;
+  const EngineDescription& described = *test::description_of(GetParam());
+  ASSERT_TRUE(described.names_in_settings.count("gyroscopic")) << GetParam();
+  EXPECT_NE(said.find(described.names_in_settings.at("gyroscopic")), std::string::npos) << said;
   EXPECT_EQ(test::setting_text(settings, "gyroscopic_term"), "true");
 }
 
@@ -242,7 +239,7 @@ TEST(FinalAngleOnEngines, EveryEngineKeepsEveryTurn) {
   const Scene scene = test::scene_from(test::spinning_ball_case(-10.0, 0.0));
   const double expected = -20.0 * 180.0 / std::numbers::pi;
   int engines = 0;
-  for (const std::string name : {"bullet", "bullet-float", "box2d", "ode"}) {
+  for (const std::string& name : test::rigid_engines()) {
     const Backend* backend = engine(name);
     if (backend == nullptr) continue;
     ++engines;
@@ -256,7 +253,8 @@ TEST(FinalAngleOnEngines, EveryEngineKeepsEveryTurn) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, RotationEngines,
-                         ::testing::Values("bullet", "bullet-float", "ode"), backend_test_name);
+                         ::testing::ValuesIn(test::rigid_engines_with(Feature::ThreeD)),
+                         backend_test_name);
 INSTANTIATE_TEST_SUITE_P(Engines, BulletRotation, ::testing::Values("bullet", "bullet-float"),
                          backend_test_name);
 

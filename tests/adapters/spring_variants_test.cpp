@@ -22,7 +22,7 @@ Scene spring_case(const std::string& name) {
   return load_case(test::source_path("cases/" + name + ".toml"));
 }
 
-class SpringVariants : public ::testing::TestWithParam<const char*> {};
+class SpringVariants : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpringVariants, TheForceVariantTakesPartOnlyOnSpringScenes) {
   const std::string force = std::string(GetParam()) + "/force";
@@ -42,7 +42,9 @@ TEST_P(SpringVariants, BothWaysNameHowTheirSpringsAreBuilt) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, SpringVariants, ::testing::Values("bullet", "box2d", "ode"));
+INSTANTIATE_TEST_SUITE_P(Engines, SpringVariants,
+                         ::testing::ValuesIn(test::engines_with_force_build()),
+                         [](const auto& info) { return test::test_name(info.param); });
 
 // Every spring backend at the stiff cloth's finest step: the anchors do not move (a float
 // engine stores the start rounded to float).

@@ -2,11 +2,14 @@
 // what a run's engine_settings say.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "run/registry.hpp"
+#include "scene/engine_catalogue.hpp"
 
 namespace bb::test {
 
@@ -21,6 +24,62 @@ inline const Backend* engine(const std::string& name) {
   for (const Backend* b : registry().engines())
     if (b->name() == name) return b;
   return nullptr;
+}
+
+/// The description of the engine that provides backend `name` (nullptr for none).
+inline const EngineDescription* description_of(const std::string& name) {
+  for (const EngineDescription& d : engine_catalogue())
+    if (std::find(d.backends.begin(), d.backends.end(), name) != d.backends.end()) return &d;
+  return nullptr;
+}
+
+/// Every rigid-body engine backend the adapters describe, in the catalogue's order: each
+/// one with an adapter that turns bodies (supports rotation) and takes part in any scene
+/// (needs nothing: not an `<engine>/force` build). A new engine is tested by every test
+/// that takes its engines from here, with no test file edited.
+inline std::vector<std::string> rigid_engines() {
+  std::vector<std::string> out;
+  for (const EngineDescription& d : engine_catalogue())
+    for (const std::string& b : d.backends) {
+      const auto supports = d.supports.find(b);
+      if (d.has_adapter && !d.needs.count(b) && supports != d.supports.end() &&
+          supports->second.has(Feature::Rotation))
+        out.push_back(b);
+    }
+  return out;
+}
+
+/// The rigid engines that simulate `feature` (ThreeD, say), by their description.
+inline std::vector<std::string> rigid_engines_with(Feature feature) {
+  std::vector<std::string> out;
+  for (const std::string& b : rigid_engines())
+    if (description_of(b)->supports.at(b).has(feature)) out.push_back(b);
+  return out;
+}
+
+/// The engines built a second way with their springs added by hand (`<engine>/force`).
+inline std::vector<std::string> engines_with_force_build() {
+  std::vector<std::string> out;
+  for (const std::string& b : rigid_engines()) {
+    const std::vector<std::string>& all = description_of(b)->backends;
+    if (std::find(all.begin(), all.end(), b + "/force") != all.end()) out.push_back(b);
+  }
+  return out;
+}
+
+/// Whether backend `name` computes in single precision, by its description.
+inline bool single_precision(const std::string& name) {
+  const EngineDescription* d = description_of(name);
+  return d != nullptr && std::find(d->single_precision.begin(), d->single_precision.end(), name) !=
+                             d->single_precision.end();
+}
+
+/// A backend name as a test name: "bullet-float" as "bullet_float", "box2d/force" as
+/// "box2d_force".
+inline std::string test_name(std::string name) {
+  for (char& c : name)
+    if (c == '-' || c == '/' || c == '+' || c == '.') c = '_';
+  return name;
 }
 
 /// Whether the backend called `name` takes part in `scene` (its needs are met there).
