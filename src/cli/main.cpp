@@ -10,120 +10,151 @@
 #include "run/interrupt.hpp"
 #include "scene/case_error.hpp"
 
-int main(int argc, char** argv) {
-  CLI::App app{
-      "beachball: the course text's game-physics methods beside Bullet, Box2D and ODE, "
-      "measured against a GSL reference"};
-  app.require_subcommand(1);
+namespace {
+
+/// What the command line says: the values of every option, filled in by CLI11.
+struct Values {
   std::vector<std::string> cases;
   std::string out, backends, dts, junit;
-  const int default_jobs =
-      static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
+  int default_jobs = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
   int jobs = default_jobs;
   bool no_cost = false;
   bool no_isolation = false;
   double timeout = 0.0;
   double cost_seconds = 0.005;
+};
 
+/// The subcommands, once declared.
+struct Commands {
+  CLI::App* list;
+  CLI::App* run;
+  CLI::App* report;
+  CLI::App* stability;
+  CLI::App* check;
+};
+
+/// Declares every subcommand and its options on `app`, writing into `v`.
+Commands declare_commands(CLI::App& app, Values& v) {
+  app.require_subcommand(1);
   auto* list = app.add_subcommand("list", "cases, backends, and who supports what");
-  list->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
+  list->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
 
   auto* run = app.add_subcommand("run", "run cases and write <out>/<case>.json, .csv and .md");
-  run->add_option("CASES", cases, "case files or folders")->required();
-  run->add_option("--out", out, "output folder")->default_val("out");
-  run->add_option("--backends", backends, "comma-separated backend names (default: all)");
-  run->add_option("--dt", dts, "comma-separated steps from the case's dt, e.g. 1/60,1/120");
+  run->add_option("CASES", v.cases, "case files or folders")->required();
+  run->add_option("--out", v.out, "output folder")->default_val("out");
+  run->add_option("--backends", v.backends, "comma-separated backend names (default: all)");
+  run->add_option("--dt", v.dts, "comma-separated steps from the case's dt, e.g. 1/60,1/120");
   // Options shared by the commands that run and time a sweep.
   const auto add_sweep_options = [&](CLI::App* command) {
-    command->add_option("--jobs", jobs, "accuracy runs in parallel (1 to 256)")
-        ->default_val(default_jobs);
-    command->add_flag("--no-cost", no_cost, "skip the timing pass");
+    command->add_option("--jobs", v.jobs, "accuracy runs in parallel (1 to 256)")
+        ->default_val(v.default_jobs);
+    command->add_flag("--no-cost", v.no_cost, "skip the timing pass");
     command
-        ->add_option("--cost-time", cost_seconds,
+        ->add_option("--cost-time", v.cost_seconds,
                      "minimum timed seconds per run in the cost pass (0.001 to 600)")
         ->default_val(0.005);
   };
   add_sweep_options(run);
   // Options of every command that runs backends.
   const auto add_isolation_options = [&](CLI::App* command) {
-    command->add_option("--timeout", timeout,
+    command->add_option("--timeout", v.timeout,
                         "seconds a run may take, 0.001 to 86400 (default: from the case's size)");
     command->add_flag(
-        "--no-isolation", no_isolation,
+        "--no-isolation", v.no_isolation,
         "run in this process, not in child processes (for debugging: a crash ends the program)");
   };
   add_isolation_options(run);
 
   auto* report = app.add_subcommand("report", "run the suite and write the report pages");
-  report->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
-  report->add_option("--out", out, "report folder")->default_val("reports");
+  report->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
+  report->add_option("--out", v.out, "report folder")->default_val("reports");
   add_sweep_options(report);
   add_isolation_options(report);
 
   auto* stability =
       app.add_subcommand("stability", "largest stable step per backend, by bisection");
-  stability->add_option("CASES", cases, "case files or folders")->required();
-  stability->add_option("--out", out, "output folder")->default_val("out/stability");
-  stability->add_option("--backends", backends, "comma-separated backend names (default: all)");
-  stability->add_option("--jobs", jobs, "backends searched in parallel (1 to 256)")
-      ->default_val(default_jobs);
+  stability->add_option("CASES", v.cases, "case files or folders")->required();
+  stability->add_option("--out", v.out, "output folder")->default_val("out/stability");
+  stability->add_option("--backends", v.backends, "comma-separated backend names (default: all)");
+  stability->add_option("--jobs", v.jobs, "backends searched in parallel (1 to 256)")
+      ->default_val(v.default_jobs);
   add_isolation_options(stability);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
-  check->add_option("CASES", cases, "case files or folders (default: the bundled suite)");
-  check->add_option("--junit", junit, "also write the gate results as JUnit XML");
-  check->add_option("--jobs", jobs, "runs in parallel (1 to 256)")->default_val(default_jobs);
+  check->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
+  check->add_option("--junit", v.junit, "also write the gate results as JUnit XML");
+  check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
+  return {list, run, report, stability, check};
+}
 
+/// The run options the parsed command line gives, each checked against its range.
+bb::RunOptions run_options(const CLI::App& app, Values& v) {
+  // The subcommand that was parsed, to tell an option given empty from one not given.
+  const CLI::App* command = app.get_subcommands().front();
+  const auto given = [&](const char* option) {
+    return command->get_option_no_throw(option) != nullptr && command->count(option) > 0;
+  };
+  bb::RunOptions options;
+  if (given("--backends")) options.backends = bb::cli::split_list("--backends", v.backends);
+  if (given("--dt"))
+    for (const std::string& d : bb::cli::split_list("--dt", v.dts))
+      options.dts.push_back(bb::cli::parse_step(d));
+  if (given("--jobs")) bb::cli::check_range("--jobs", v.jobs, bb::cli::kJobsRange);
+  if (given("--timeout")) bb::cli::check_range("--timeout", v.timeout, bb::cli::kTimeoutRange);
+  if (given("--cost-time"))
+    bb::cli::check_range("--cost-time", v.cost_seconds, bb::cli::kCostTimeRange);
+  options.jobs = v.jobs;
+  options.cost = !v.no_cost;
+  options.cost_options.min_seconds = v.cost_seconds;
+  options.isolation = !v.no_isolation;
+  options.timeout = v.timeout;
+  return options;
+}
+
+/// The parsed subcommand, run.
+int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) {
+  if (*c.list) return bb::cli::list_command(v.cases);
+  if (*c.run) return bb::cli::run_command(v.cases, v.out, options);
+  if (*c.report) return bb::cli::report_command(v.cases, v.out, options);
+  if (*c.stability) return bb::cli::stability_command(v.cases, v.out, options);
+  if (*c.check) return bb::cli::check_command(v.cases, v.junit, options);
+  return bb::cli::kExitBadInput;
+}
+
+/// A signal's stop: 128 + the signal, as a shell reports it.
+int interrupted(const char* what) {
+  fmt::print(stderr, "\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(), what);
+  return 128 + bb::interrupt_signal();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "beachball: the course text's game-physics methods beside Bullet, Box2D and ODE, "
+      "measured against a GSL reference"};
+  Values values;
+  const Commands commands = declare_commands(app, values);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? bb::cli::kExitOk : bb::cli::kExitBadInput;
   }
-
   try {
-    // The subcommand that was parsed, to tell an option given empty from one not given.
-    const CLI::App* command = app.get_subcommands().front();
-    const auto given = [&](const char* option) {
-      return command->get_option_no_throw(option) != nullptr && command->count(option) > 0;
-    };
-    bb::RunOptions options;
-    if (given("--backends")) options.backends = bb::cli::split_list("--backends", backends);
-    if (given("--dt"))
-      for (const std::string& d : bb::cli::split_list("--dt", dts))
-        options.dts.push_back(bb::cli::parse_step(d));
-    if (given("--jobs")) bb::cli::check_range("--jobs", jobs, bb::cli::kJobsRange);
-    if (given("--timeout")) bb::cli::check_range("--timeout", timeout, bb::cli::kTimeoutRange);
-    if (given("--cost-time"))
-      bb::cli::check_range("--cost-time", cost_seconds, bb::cli::kCostTimeRange);
-    options.jobs = jobs;
-    options.cost = !no_cost;
-    options.cost_options.min_seconds = cost_seconds;
-    options.isolation = !no_isolation;
-    options.timeout = timeout;
+    const bb::RunOptions options = run_options(app, values);
     bb::install_interrupt_handlers();
-    if (*list) return bb::cli::list_command(cases);
-    if (*run) return bb::cli::run_command(cases, out, options);
-    if (*report) return bb::cli::report_command(cases, out, options);
-    if (*stability) return bb::cli::stability_command(cases, out, options);
-    if (*check) return bb::cli::check_command(cases, junit, options);
+    return dispatch(commands, values, options);
   } catch (const bb::Interrupted& e) {
-    fmt::print(stderr, "\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(),
-               e.what());
-    return 128 + bb::interrupt_signal();
+    return interrupted(e.what());
   } catch (const bb::CaseError& e) {
     fmt::print(stderr, "beachball: {}\n", e.what());
     return bb::cli::kExitBadInput;
   } catch (const std::exception& e) {
     // Printing to a reader that went away fails after SIGPIPE: that is the signal's stop.
-    if (bb::interrupt_signal() != 0) {
-      fmt::print(stderr, "\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(),
-                 e.what());
-      return 128 + bb::interrupt_signal();
-    }
+    if (bb::interrupt_signal() != 0) return interrupted(e.what());
     fmt::print(stderr, "beachball: error: {}\n", e.what());
     return bb::cli::kExitBadInput;
   }
-  return bb::cli::kExitBadInput;
 }

@@ -62,48 +62,33 @@ Json run_json(const RunRecord& run) {
   return j;
 }
 
-}  // namespace
 
-Json results_json(const CaseResults& results) {
-  const Scene& scene = *results.scene;
-  Json j;
-  j["schema"] = "beachball-results/1";
-  j["case"] = scene.name;
-  j["title"] = scene.title;
-  j["seed"] = scene.seed;
-  j["sample"] = scene.sample;
-  j["report_dt"] = scene.report_dt;
-  j["versions"] = results.versions;
-  // A stability search alone has no reference and no runs.
-  const bool has_runs = !results.reference_run.backend.empty();
-  // The self-check: the largest difference of each state component from a second solve
-  // by another method (self_check: positions, m, as always; the others added beside it),
-  // null when there was none, with the reason.
-  const ReferenceInfo& ref = results.reference;
+/// How the reference was solved, and its self-check: the largest difference of each state
+/// component from a second solve by another method (self_check: positions, m, as always;
+/// the others added beside it), null when there was none, with the reason.
+Json reference_json(const ReferenceInfo& ref) {
   const auto check = [&](double StateDifference::*part) {
     return ref.self_check ? Json((*ref.self_check).*part) : Json(nullptr);
   };
-  if (has_runs)
-    j["reference"] = {{"method", ref.method},
-                      {"tolerance", ref.tolerance},
-                      {"self_check", check(&StateDifference::position)},
-                      {"self_check_velocity", check(&StateDifference::velocity)},
-                      {"self_check_orientation", check(&StateDifference::orientation)},
-                      {"self_check_spin", check(&StateDifference::spin)},
-                      {"self_check_method", ref.self_check_method},
-                      {"self_check_note", ref.self_check_note}};
-  else
-    j["reference"] = nullptr;
-  j["runs"] = Json::array();
-  if (has_runs) j["runs"].push_back(run_json(results.reference_run));
-  for (const RunRecord& run : results.runs) j["runs"].push_back(run_json(run));
+  return {{"method", ref.method},
+          {"tolerance", ref.tolerance},
+          {"self_check", check(&StateDifference::position)},
+          {"self_check_velocity", check(&StateDifference::velocity)},
+          {"self_check_orientation", check(&StateDifference::orientation)},
+          {"self_check_spin", check(&StateDifference::spin)},
+          {"self_check_method", ref.self_check_method},
+          {"self_check_note", ref.self_check_note}};
+}
+
+/// The orders of convergence: each backend's slope, how many points its fit used and how
+/// many sat at or below their error floor, and the fit in full (its order or why there is
+/// none, and the local slopes).
+void add_orders(const CaseResults& results, Json& j) {
   j["order"] = Json::object();
   for (const auto& [name, slope] : results.order) j["order"][name] = slope;
-  // How many points each fit used, and how many sat at or below their error floor.
   j["order_fit"] = Json::object();
   for (const auto& [name, fit] : results.order_fits)
     j["order_fit"][name] = {{"points", fit.used}, {"below_floor", fit.below_floor}};
-  // Each backend's fit in full: its order or why there is none, and the local slopes.
   j["order_detail"] = Json::object();
   for (const auto& [name, fit] : results.order_fits) {
     Json slopes = Json::array();
@@ -122,8 +107,11 @@ Json results_json(const CaseResults& results) {
          saturation == results.order_saturation.end() ? Json(nullptr) : Json(saturation->second)},
         {"local_slopes", slopes}};
   }
-  // Each claim's verdict per backend, computed from the runs above.
-  j["claims"] = Json::array();
+}
+
+/// Each claim's verdict per backend, computed from the runs.
+Json claims_json(const CaseResults& results) {
+  Json out = Json::array();
   for (const ClaimResult& c : judge_claims(results)) {
     Json verdicts = Json::object();
     for (const ClaimVerdict& v : c.verdicts)
@@ -131,52 +119,87 @@ Json results_json(const CaseResults& results) {
                              {"left", optional_json(v.left)},
                              {"right", optional_json(v.right)},
                              {"cause", v.cause}};
-    j["claims"].push_back({{"text", c.claim->text},
-                           {"seed", c.claim->seed},
-                           {"quote", c.claim->quote},
-                           {"own", c.claim->own},
-                           {"verdicts", verdicts}});
+    out.push_back({{"text", c.claim->text},
+                   {"seed", c.claim->seed},
+                   {"quote", c.claim->quote},
+                   {"own", c.claim->own},
+                   {"verdicts", verdicts}});
   }
-  j["stability"] = Json::object();
+  return out;
+}
+
+/// Each backend's stability search, with each stretch of steps with one verdict, smallest
+/// first: more than two where stability is not monotone in dt.
+Json stability_json(const CaseResults& results) {
+  Json out = Json::object();
   for (const StabilityResult& r : results.stability) {
-    // Each stretch of steps with one verdict, smallest first: more than two where stability
-    // is not monotone in dt.
     Json bands = Json::array();
     for (const StabilityBand& b : r.bands)
       bands.push_back({{"from", b.from}, {"to", b.to}, {"stable", b.stable}, {"reason", b.reason}});
-    j["stability"][r.backend] = {{"critical_dt", optional_json(r.critical_dt)},
-                                 {"unstable_dt", optional_json(r.unstable_dt)},
-                                 {"status", r.status},
-                                 {"reason", r.reason},
-                                 {"stable_note", r.stable_note},
-                                 {"bands", bands},
-                                 {"theory", optional_json(r.theory)},
-                                 {"theory_formula", r.theory_formula},
-                                 {"theory_note", r.theory_note},
-                                 {"trials", r.trials}};
+    out[r.backend] = {{"critical_dt", optional_json(r.critical_dt)},
+                      {"unstable_dt", optional_json(r.unstable_dt)},
+                      {"status", r.status},
+                      {"reason", r.reason},
+                      {"stable_note", r.stable_note},
+                      {"bands", bands},
+                      {"theory", optional_json(r.theory)},
+                      {"theory_formula", r.theory_formula},
+                      {"theory_note", r.theory_note},
+                      {"trials", r.trials}};
   }
-  // The case at each value of its [[sweep]], every backend at report_dt.
-  if (results.sweep) {
-    Json sweep = {{"parameter", results.sweep->parameter}, {"values", Json::array()}};
-    sweep["points"] = Json::array();
-    for (const SweepPoint& p : results.sweep->points) {
-      sweep["values"].push_back(p.value);
-      Json rows = Json::array();
-      for (const RunRecord& run : p.runs) rows.push_back(run_json(run));
-      sweep["points"].push_back({{"value", p.value}, {"runs", rows}});
-    }
-    j["sweep"] = sweep;
-  } else {
-    j["sweep"] = nullptr;
+  return out;
+}
+
+/// The case at each value of its [[sweep]], every backend at report_dt; null without one.
+Json sweep_json(const CaseResults& results) {
+  if (!results.sweep) return nullptr;
+  Json sweep = {{"parameter", results.sweep->parameter}, {"values", Json::array()}};
+  sweep["points"] = Json::array();
+  for (const SweepPoint& p : results.sweep->points) {
+    sweep["values"].push_back(p.value);
+    Json rows = Json::array();
+    for (const RunRecord& run : p.runs) rows.push_back(run_json(run));
+    sweep["points"].push_back({{"value", p.value}, {"runs", rows}});
   }
-  j["gates"] = Json::array();
+  return sweep;
+}
+
+/// Each gate with its value and whether it passed.
+Json gates_json(const CaseResults& results) {
+  Json out = Json::array();
   for (const GateResult& g : results.gates)
-    j["gates"].push_back({{"backend", g.gate.backend},
-                          {"metric", g.gate.metric},
-                          {"max", g.gate.max},
-                          {"value", optional_json(g.value)},
-                          {"passed", g.passed},
-                          {"note", g.note}});
+    out.push_back({{"backend", g.gate.backend},
+                   {"metric", g.gate.metric},
+                   {"max", g.gate.max},
+                   {"value", optional_json(g.value)},
+                   {"passed", g.passed},
+                   {"note", g.note}});
+  return out;
+}
+
+}  // namespace
+
+Json results_json(const CaseResults& results) {
+  const Scene& scene = *results.scene;
+  Json j;
+  j["schema"] = "beachball-results/1";
+  j["case"] = scene.name;
+  j["title"] = scene.title;
+  j["seed"] = scene.seed;
+  j["sample"] = scene.sample;
+  j["report_dt"] = scene.report_dt;
+  j["versions"] = results.versions;
+  // A stability search alone has no reference and no runs.
+  const bool has_runs = !results.reference_run.backend.empty();
+  j["reference"] = has_runs ? reference_json(results.reference) : Json(nullptr);
+  j["runs"] = Json::array();
+  if (has_runs) j["runs"].push_back(run_json(results.reference_run));
+  for (const RunRecord& run : results.runs) j["runs"].push_back(run_json(run));
+  add_orders(results, j);
+  j["claims"] = claims_json(results);
+  j["stability"] = stability_json(results);
+  j["sweep"] = sweep_json(results);
+  j["gates"] = gates_json(results);
   return j;
 }
 

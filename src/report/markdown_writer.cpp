@@ -41,7 +41,10 @@ std::string settings_text(const Settings& settings) {
 
 }  // namespace
 
-std::string results_markdown(const CaseResults& results, const PlotFiles& plots) {
+namespace {
+
+/// The title, the case's name, section and file, and the scene described.
+std::string header(const CaseResults& results) {
   const Scene& scene = *results.scene;
   // The case's own text goes through markdown_text: a title cannot end the heading or add
   // HTML. The name needs nothing (the loader allows a-z, 0-9 and _ only).
@@ -50,7 +53,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
     out += fmt::format(", from section \"{}\" of the course text", markdown_text(scene.seed));
   out += fmt::format(". Case file: `{}`.\n\n## Scene\n\n{}\n", markdown_text(scene.file),
                      describe_scene(scene));
+  return out;
+}
 
+/// The summary table at report_dt, what its errors are against, its notes and the order table.
+std::string results_section(const CaseResults& results) {
+  const Scene& scene = *results.scene;
+  std::string out;
   out += fmt::format("## Results at report_dt = {} s\n\n", format_dt(scene.report_dt));
   // Say first what the errors are measured against when it is not the reference.
   if (results.reference_run.status != RunStatus::Ok)
@@ -78,7 +87,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   if (const std::string busy = cost_noise_warning(results); !busy.empty())
     out += "\n" + markdown_text(busy) + "\n";
   out += order_markdown(results);
+  return out;
+}
 
+/// The motion view, the trajectories, speed and energy, and the distance from the reference.
+std::string motion_sections(const CaseResults& results, const PlotFiles& plots) {
+  const Scene& scene = *results.scene;
+  std::string out;
   if (!plots.motion.empty()) {
     out += fmt::format("\n## The motion at report_dt = {} s\n\n", format_dt(scene.report_dt));
     out +=
@@ -111,7 +126,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         "measure the bounce itself.\n\n![distance from the reference](" +
         plots.error + ")\n";
   }
+  return out;
+}
 
+/// Around the stop, and the rotation.
+std::string stop_and_rotation_sections(const CaseResults& results, const PlotFiles& plots) {
+  const Scene& scene = *results.scene;
+  std::string out;
   if (!plots.stop.empty()) {
     out += fmt::format("\n## Around the stop at report_dt = {} s\n\n", format_dt(scene.report_dt));
     out +=
@@ -134,7 +155,12 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
                  "each flip), every backend over the reference.\n\n";
     out += "![rotation](" + plots.rotation + ")\n";
   }
+  return out;
+}
 
+/// The claims the case checks, with every backend's verdict, and the sweep.
+std::string claims_section(const CaseResults& results, const PlotFiles& plots) {
+  std::string out;
   const Table claims = case_claims_table(results);
   if (!claims.rows.empty())
     out +=
@@ -145,7 +171,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         render_markdown(claims);
 
   out += sweep_markdown(results, plots.sweep);
+  return out;
+}
 
+/// Error against cost, and the cheapest step that reaches the target.
+std::string work_precision_section(const CaseResults& results, const PlotFiles& plots) {
+  const Scene& scene = *results.scene;
+  std::string out;
   out += "\n## Work precision\n\n";
   out +=
       "Error against the cost of computing one simulated second, one marker per dt of the "
@@ -158,7 +190,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
                      scene.report.target);
   out += render_markdown(cheapest_step_table(results, first, scene.report.target));
   if (!plots.note.empty()) out += "\n" + markdown_text(plots.note) + "\n";
+  return out;
+}
 
+/// The largest stable steps, how they were searched, and the theory beside them.
+std::string stability_section(const CaseResults& results) {
+  const Scene& scene = *results.scene;
+  std::string out;
   if (!results.stability.empty()) {
     out += fmt::format(
         "\n## Stability\n\nThe largest stable step per backend, searched in log dt between "
@@ -186,7 +224,13 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         notes.push_back(r.theory_note);
     for (const std::string& note : notes) out += "\n" + markdown_text(note) + "\n";
   }
+  return out;
+}
 
+/// Every run of the sweep, and the gates.
+std::string every_dt_section(const CaseResults& results) {
+  const Scene& scene = *results.scene;
+  std::string out;
   out += "\n## Every dt\n\n";
   if (!scene.observes.empty())
     out +=
@@ -194,7 +238,12 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         "reference: a course claim that holds at one step and fails at another shows here.\n\n";
   out += render_markdown(sweep_table(results));
   if (!results.gates.empty()) out += "\n## Gates\n\n" + render_markdown(gate_table(results));
+  return out;
+}
 
+/// How the reference was solved and checked, how cost was timed, and the versions.
+std::string reference_section(const CaseResults& results) {
+  std::string out;
   const ReferenceInfo& ref = results.reference;
   out += fmt::format(
       "\n## Reference and cost\n\n- reference: {}, absolute and relative tolerance {:g}\n",
@@ -219,6 +268,12 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
   for (const auto& [library, version] : results.versions)
     out += " " + markdown_text(library + " " + version) + ";";
   out += "\n";
+  return out;
+}
+
+/// Every engine's settings, folded away.
+std::string engine_settings_section(const CaseResults& results) {
+  std::string out;
   // Every setting that changes an engine's results, folded away: long, and read when a
   // number needs explaining, not on a first look.
   std::set<std::string> seen;
@@ -233,6 +288,15 @@ std::string results_markdown(const CaseResults& results, const PlotFiles& plots)
         "backends; also in the case's JSON)</summary>\n\n{}\n</details>\n",
         seen.size(), settings);
   return out;
+}
+
+}  // namespace
+
+std::string results_markdown(const CaseResults& results, const PlotFiles& plots) {
+  return header(results) + results_section(results) + motion_sections(results, plots) +
+         stop_and_rotation_sections(results, plots) + claims_section(results, plots) +
+         work_precision_section(results, plots) + stability_section(results) +
+         every_dt_section(results) + reference_section(results) + engine_settings_section(results);
 }
 
 }  // namespace bb

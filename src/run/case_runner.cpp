@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "metrics/order.hpp"
@@ -164,6 +165,135 @@ int progress_units(const Scene& scene, const Registry& registry, const RunOption
   return backends * dts + 2 + (options.cost ? backends * dts + 1 : 0) + sweep;
 }
 
+/// The reference's method and self-check (a second solve, `tight`), the floors below
+/// which differences from it are noise, and its own observables and series.
+void record_reference(const Scene& scene, const ReferenceBackend& reference, const RunRecord& tight,
+                      CaseResults& out) {
+  out.reference.method = reference_method(out.reference_run);
+  out.reference.tolerance = reference.tolerance();
+  out.reference.self_check_method = reference_method(tight);
+  if (out.reference_run.status != RunStatus::Ok)
+    out.reference.self_check_note = "no reference to check";
+  else if (tight.status != RunStatus::Ok)
+    out.reference.self_check_note =
+        "the second solve is " + status_name(tight.status) + ": " + tight.reason;
+  else
+    out.reference.self_check = max_state_difference(out.reference_run.trajectory, tight.trajectory);
+  if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
+    out.reference_floor = compare(scene, out.reference_run.trajectory, tight.trajectory);
+    for (const Observe& o : scene.observes) {
+      const auto a =
+          measure(scene, o, out.reference_run.trajectory, &out.reference_run.trajectory.events)
+              .value;
+      const auto b = measure(scene, o, tight.trajectory, &tight.trajectory.events).value;
+      if (a && b) out.observable_floor[o.name] = std::abs(*a - *b);
+    }
+  }
+  out.versions[reference.library_version().first] = reference.library_version().second;
+  add_observables(scene, out.reference_run, out.reference_run);
+  add_series(scene, out.reference_run, nullptr);
+  record_position_scale(out.reference_run);
+}
+
+/// A row for every engine that was not built, so a reader sees why it is absent.
+void add_missing_engines(const Scene& scene, const Registry& registry, const RunOptions& options,
+                         const std::vector<double>& dts, CaseResults& out) {
+  for (const Registry::Missing& missing : registry.missing_engines()) {
+    const std::string& name = missing.name;
+    const std::string& why = missing.why;
+    const bool asked = !options.backends.empty() && backend_wanted(options, name);
+    if (!asked && (!missing.shown_unasked || !options.backends.empty())) continue;
+    if (!missing.needs.missing_from(scene.features()).empty()) continue;
+    for (double dt : dts) {
+      RunRecord r;
+      r.backend = name;
+      r.dt = dt;
+      r.status = RunStatus::Unsupported;
+      r.reason = why;
+      out.runs.push_back(r);
+    }
+  }
+}
+
+/// Errors and observables of every run: against the reference; where it has no answer,
+/// against each backend's own run at its finest dt (DESIGN.md's fallback), and
+/// reference.method says so.
+void measure_runs(const Scene& scene, const std::vector<double>& dts, CaseResults& out) {
+  const bool fallback = out.reference_run.status != RunStatus::Ok;
+  const std::map<std::string, const RunRecord*> finest = finest_runs(out.runs);
+  if (fallback && !finest.empty()) {
+    out.reference.method = "none: the reference is " + status_name(out.reference_run.status) +
+                           " (" + out.reference_run.reason +
+                           "); each backend's errors are against its own run at the finest dt "
+                           "of the sweep (self-consistency: convergence, not accuracy)";
+    // Where a backend's finest run failed, its errors are against a coarser one: named.
+    const double finest_dt = *std::min_element(dts.begin(), dts.end());
+    for (const auto& [name, run] : finest)
+      if (*run->dt != finest_dt)
+        out.reference.method += "; " + name + " against its run at dt " + format_dt(*run->dt) +
+                                " (its run at " + format_dt(finest_dt) + " is not ok)";
+  }
+  for (RunRecord& run : out.runs) {
+    if (run.summarised) continue;
+    const auto own = finest.find(run.backend);
+    const RunRecord* against = !fallback             ? &out.reference_run
+                               : own != finest.end() ? own->second
+                                                     : nullptr;
+    if (run.status == RunStatus::Ok && against && against != &run &&
+        against->status == RunStatus::Ok)
+      run.errors = compare(scene, run.trajectory, against->trajectory);
+    add_observables(scene, run, against ? *against : out.reference_run);
+    if (fallback) add_series(scene, run, nullptr);
+    record_position_scale(run);
+  }
+}
+
+/// The cost pass, when asked for: serial, after every accuracy run, so runs do not disturb
+/// its timing.
+void time_costs(const Scene& scene, const ReferenceBackend& reference,
+                const std::vector<AccuracyJob>& jobs, const RunOptions& options,
+                const std::function<void(const std::string&)>& progress, CaseResults& out) {
+  if (options.cost) {
+    ChildPool serial(1, options.isolation);
+    queue_costs(serial, reference, scene, {&out.reference_run}, options, progress);
+    // One child per backend measures all its runs, in the order of the sweep.
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      if (i > 0 && jobs[i].backend == jobs[i - 1].backend) continue;
+      std::vector<RunRecord*> runs;
+      for (std::size_t k = i; k < jobs.size() && jobs[k].backend == jobs[i].backend; ++k)
+        runs.push_back(&out.runs[k]);
+      queue_costs(serial, *jobs[i].backend, scene, runs, options, progress);
+    }
+    serial.run();
+  }
+}
+
+/// Observed order of position_max over the dt sweep, per backend: every run that was
+/// started (a failed one has no error), against its floor and its saturation level.
+void fit_orders(const Scene& scene, CaseResults& out) {
+  const bool fallback = out.reference_run.status != RunStatus::Ok;
+  const std::map<std::string, const RunRecord*> finest = finest_runs(out.runs);
+  std::map<std::string, std::vector<ErrorPoint>> points;
+  const double size = largest_body_size(scene);
+  for (const RunRecord& run : out.runs) {
+    if (!run.dt || run.status == RunStatus::Unsupported) continue;
+    // The floor's and saturation's scales come from whatever the errors are measured against.
+    const auto own = finest.find(run.backend);
+    const RunRecord* against = fallback && own != finest.end() ? own->second : &out.reference_run;
+    if (against == &run) continue;
+    out.order_saturation[run.backend] = kSaturationFraction * std::max(against->travel, size);
+    points[run.backend].push_back(
+        {*run.dt, run.errors ? run.errors->position_max : std::nan(""),
+         error_floor(against->position_scale, out.reference.self_check_position(), run.steps,
+                     arithmetic_epsilon(run))});
+  }
+  for (const auto& [name, series] : points) {
+    const OrderFit fit = fit_order(series, out.order_saturation[name]);
+    if (fit.slope) out.order[name] = *fit.slope;
+    out.order_fits[name] = fit;
+  }
+}
+
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options) {
   check_backend_names(scene, options);
   const std::vector<double> dts = selected_dts(scene, options);
@@ -192,116 +322,14 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   out.runs = std::move(accuracy.runs);
   const RunRecord& tight = accuracy.tight;
 
-  out.reference.method = reference_method(out.reference_run);
-  out.reference.tolerance = reference.tolerance();
-  out.reference.self_check_method = reference_method(tight);
-  if (out.reference_run.status != RunStatus::Ok)
-    out.reference.self_check_note = "no reference to check";
-  else if (tight.status != RunStatus::Ok)
-    out.reference.self_check_note =
-        "the second solve is " + status_name(tight.status) + ": " + tight.reason;
-  else
-    out.reference.self_check = max_state_difference(out.reference_run.trajectory, tight.trajectory);
-  if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
-    out.reference_floor = compare(scene, out.reference_run.trajectory, tight.trajectory);
-    for (const Observe& o : scene.observes) {
-      const auto a =
-          measure(scene, o, out.reference_run.trajectory, &out.reference_run.trajectory.events)
-              .value;
-      const auto b = measure(scene, o, tight.trajectory, &tight.trajectory.events).value;
-      if (a && b) out.observable_floor[o.name] = std::abs(*a - *b);
-    }
-  }
-  out.versions[reference.library_version().first] = reference.library_version().second;
-  add_observables(scene, out.reference_run, out.reference_run);
-  add_series(scene, out.reference_run, nullptr);
-  record_position_scale(out.reference_run);
-  // Engines that were not built still get a row, so a reader sees why they are absent.
-  for (const Registry::Missing& missing : registry.missing_engines()) {
-    const std::string& name = missing.name;
-    const std::string& why = missing.why;
-    const bool asked = !options.backends.empty() && backend_wanted(options, name);
-    if (!asked && (!missing.shown_unasked || !options.backends.empty())) continue;
-    if (!missing.needs.missing_from(scene.features()).empty()) continue;
-    for (double dt : dts) {
-      RunRecord r;
-      r.backend = name;
-      r.dt = dt;
-      r.status = RunStatus::Unsupported;
-      r.reason = why;
-      out.runs.push_back(r);
-    }
-  }
-
-  // Errors against the reference; where it has no answer, against each backend's own run at
-  // its finest dt (DESIGN.md's fallback), and reference.method says so.
-  const bool fallback = out.reference_run.status != RunStatus::Ok;
-  const std::map<std::string, const RunRecord*> finest = finest_runs(out.runs);
-  if (fallback && !finest.empty()) {
-    out.reference.method = "none: the reference is " + status_name(out.reference_run.status) +
-                           " (" + out.reference_run.reason +
-                           "); each backend's errors are against its own run at the finest dt "
-                           "of the sweep (self-consistency: convergence, not accuracy)";
-    // Where a backend's finest run failed, its errors are against a coarser one: named.
-    const double finest_dt = *std::min_element(dts.begin(), dts.end());
-    for (const auto& [name, run] : finest)
-      if (*run->dt != finest_dt)
-        out.reference.method += "; " + name + " against its run at dt " + format_dt(*run->dt) +
-                                " (its run at " + format_dt(finest_dt) + " is not ok)";
-  }
-  for (RunRecord& run : out.runs) {
-    if (run.summarised) continue;
-    const auto own = finest.find(run.backend);
-    const RunRecord* against = !fallback             ? &out.reference_run
-                               : own != finest.end() ? own->second
-                                                     : nullptr;
-    if (run.status == RunStatus::Ok && against && against != &run &&
-        against->status == RunStatus::Ok)
-      run.errors = compare(scene, run.trajectory, against->trajectory);
-    add_observables(scene, run, against ? *against : out.reference_run);
-    if (fallback) add_series(scene, run, nullptr);
-    record_position_scale(run);
-  }
-
-  // The cost pass is serial, after every accuracy run, so runs do not disturb its timing.
-  if (options.cost) {
-    ChildPool serial(1, options.isolation);
-    queue_costs(serial, reference, scene, {&out.reference_run}, options, progress);
-    // One child per backend measures all its runs, in the order of the sweep.
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
-      if (i > 0 && jobs[i].backend == jobs[i - 1].backend) continue;
-      std::vector<RunRecord*> runs;
-      for (std::size_t k = i; k < jobs.size() && jobs[k].backend == jobs[i].backend; ++k)
-        runs.push_back(&out.runs[k]);
-      queue_costs(serial, *jobs[i].backend, scene, runs, options, progress);
-    }
-    serial.run();
-  }
-
-  // Observed order of position_max over the dt sweep, per backend: every run that was
-  // started (a failed one has no error), against its floor and its saturation level.
-  std::map<std::string, std::vector<ErrorPoint>> points;
-  const double size = largest_body_size(scene);
-  for (const RunRecord& run : out.runs) {
-    if (!run.dt || run.status == RunStatus::Unsupported) continue;
-    // The floor's and saturation's scales come from whatever the errors are measured against.
-    const auto own = finest.find(run.backend);
-    const RunRecord* against = fallback && own != finest.end() ? own->second : &out.reference_run;
-    if (against == &run) continue;
-    out.order_saturation[run.backend] = kSaturationFraction * std::max(against->travel, size);
-    points[run.backend].push_back(
-        {*run.dt, run.errors ? run.errors->position_max : std::nan(""),
-         error_floor(against->position_scale, out.reference.self_check_position(), run.steps,
-                     arithmetic_epsilon(run))});
-  }
-  for (const auto& [name, series] : points) {
-    const OrderFit fit = fit_order(series, out.order_saturation[name]);
-    if (fit.slope) out.order[name] = *fit.slope;
-    out.order_fits[name] = fit;
-  }
+  record_reference(scene, reference, tight, out);
+  add_missing_engines(scene, registry, options, dts, out);
+  measure_runs(scene, dts, out);
+  time_costs(scene, reference, jobs, options, progress, out);
+  fit_orders(scene, out);
 
   // The fallback's whole trajectories are done with: keep what the page draws.
-  if (fallback)
+  if (out.reference_run.status != RunStatus::Ok)
     for (RunRecord& run : out.runs) keep_plotted_states(scene, run);
   // The reference's states too: from here on every state holds the drawn bodies.
   keep_drawn_states(scene, out.reference_run);

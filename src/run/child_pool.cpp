@@ -137,37 +137,96 @@ void ChildPool::run_in_process() {
   }
 }
 
+ChildPool::Active ChildPool::start_child(Job job) {
+  int result[2], console[2];
+  if (pipe(result) != 0 || pipe(console) != 0)
+    throw std::runtime_error("cannot make a pipe for a child");
+  // Nothing buffered here may be printed again by the child.
+  std::fflush(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("cannot start a child process");
+  if (pid == 0) {
+    // The child dies with its parent, even a SIGKILLed one; if the parent is already gone
+    // (before prctl took effect), it ends at once.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(1);
+    close(result[0]);
+    close(console[0]);
+    child_main(job.work, result[1], console[1]);
+  }
+  close(result[1]);
+  close(console[1]);
+  Active a;
+  a.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                  std::chrono::duration<double>(job.timeout));
+  a.job = std::move(job);
+  a.pid = pid;
+  a.result_fd = result[0];
+  a.console_fd = console[0];
+  return a;
+}
+
+void ChildPool::read_output(std::vector<Active>& active) {
+  // Wait for output, at most until the nearest deadline and never long, to notice signals.
+  std::vector<pollfd> fds;
+  auto wait = std::chrono::milliseconds(100);
+  for (const Active& a : active) {
+    if (a.result_fd >= 0) fds.push_back({a.result_fd, POLLIN, 0});
+    if (a.console_fd >= 0) fds.push_back({a.console_fd, POLLIN, 0});
+    wait = std::min(
+        wait, std::chrono::duration_cast<std::chrono::milliseconds>(a.deadline - Clock::now()));
+  }
+  if (!fds.empty()) poll(fds.data(), fds.size(), static_cast<int>(std::max<long>(wait.count(), 0)));
+  char buffer[65536];
+  for (Active& a : active)
+    for (int* fd : {&a.result_fd, &a.console_fd}) {
+      if (*fd < 0) continue;
+      pollfd one{*fd, POLLIN, 0};
+      if (poll(&one, 1, 0) <= 0) continue;
+      const ssize_t n = read(*fd, buffer, sizeof buffer);
+      if (n > 0) {
+        (fd == &a.result_fd ? a.payload : a.console).append(buffer, static_cast<std::size_t>(n));
+      } else if (n == 0 || errno != EINTR) {
+        close(*fd);
+        *fd = -1;
+      }
+    }
+}
+
+ChildOutcome ChildPool::finish(Active& a, bool closed) {
+  ChildOutcome outcome;
+  int status = 0;
+  if (!closed) {
+    kill(a.pid, SIGKILL);
+    waitpid(a.pid, &status, 0);
+    outcome.kind = ChildOutcome::Kind::Timeout;
+    outcome.reason = with_console("no result within the time limit of " +
+                                      std::to_string(a.job.timeout) + " s (--timeout changes it)",
+                                  a.console);
+    for (int fd : {a.result_fd, a.console_fd})
+      if (fd >= 0) close(fd);
+  } else {
+    waitpid(a.pid, &status, 0);
+    if (WIFSIGNALED(status)) {
+      outcome.kind = ChildOutcome::Kind::Crashed;
+      outcome.reason = with_console("killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
+                                        strsignal(WTERMSIG(status)) + ")",
+                                    a.console);
+    } else if (WEXITSTATUS(status) != 0) {
+      outcome.kind = ChildOutcome::Kind::Crashed;
+      outcome.reason =
+          with_console("exited with code " + std::to_string(WEXITSTATUS(status)), a.console);
+    } else {
+      outcome.payload = std::move(a.payload);
+    }
+  }
+  outcome.console = std::move(a.console);
+  return outcome;
+}
+
 void ChildPool::run_isolated() {
   std::vector<Active> active;
-  const auto start = [&](Job job) {
-    int result[2], console[2];
-    if (pipe(result) != 0 || pipe(console) != 0)
-      throw std::runtime_error("cannot make a pipe for a child");
-    // Nothing buffered here may be printed again by the child.
-    std::fflush(nullptr);
-    const pid_t parent = getpid();
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("cannot start a child process");
-    if (pid == 0) {
-      // The child dies with its parent, even a SIGKILLed one; if the parent is already gone
-      // (before prctl took effect), it ends at once.
-      prctl(PR_SET_PDEATHSIG, SIGKILL);
-      if (getppid() != parent) _exit(1);
-      close(result[0]);
-      close(console[0]);
-      child_main(job.work, result[1], console[1]);
-    }
-    close(result[1]);
-    close(console[1]);
-    Active a;
-    a.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                    std::chrono::duration<double>(job.timeout));
-    a.job = std::move(job);
-    a.pid = pid;
-    a.result_fd = result[0];
-    a.console_fd = console[0];
-    active.push_back(std::move(a));
-  };
   const auto stop_all = [&] {
     for (Active& a : active) {
       kill(a.pid, SIGKILL);
@@ -176,7 +235,6 @@ void ChildPool::run_isolated() {
       if (a.console_fd >= 0) close(a.console_fd);
     }
   };
-
   while (!queue_.empty() || !active.empty()) {
     if (interrupt_signal() != 0) {
       std::string what = active.empty() ? queue_.front().label : active.front().job.label;
@@ -185,71 +243,19 @@ void ChildPool::run_isolated() {
       throw Interrupted("stopped during " + what + kNothingWritten);
     }
     while (static_cast<int>(active.size()) < parallel_ && !queue_.empty()) {
-      start(std::move(queue_.front()));
+      active.push_back(start_child(std::move(queue_.front())));
       queue_.pop_front();
     }
-    // Wait for output, at most until the nearest deadline and never long, to notice signals.
-    std::vector<pollfd> fds;
-    auto wait = std::chrono::milliseconds(100);
-    for (const Active& a : active) {
-      if (a.result_fd >= 0) fds.push_back({a.result_fd, POLLIN, 0});
-      if (a.console_fd >= 0) fds.push_back({a.console_fd, POLLIN, 0});
-      wait = std::min(
-          wait, std::chrono::duration_cast<std::chrono::milliseconds>(a.deadline - Clock::now()));
-    }
-    if (!fds.empty())
-      poll(fds.data(), fds.size(), static_cast<int>(std::max<long>(wait.count(), 0)));
-    char buffer[65536];
-    for (Active& a : active)
-      for (int* fd : {&a.result_fd, &a.console_fd}) {
-        if (*fd < 0) continue;
-        pollfd one{*fd, POLLIN, 0};
-        if (poll(&one, 1, 0) <= 0) continue;
-        const ssize_t n = read(*fd, buffer, sizeof buffer);
-        if (n > 0) {
-          (fd == &a.result_fd ? a.payload : a.console).append(buffer, static_cast<std::size_t>(n));
-        } else if (n == 0 || errno != EINTR) {
-          close(*fd);
-          *fd = -1;
-        }
-      }
+    read_output(active);
     // Finish every child that closed its output or ran out of time.
     for (std::size_t i = 0; i < active.size();) {
       Active& a = active[i];
       const bool closed = a.result_fd < 0 && a.console_fd < 0;
-      const bool late = Clock::now() >= a.deadline;
-      if (!closed && !late) {
+      if (!closed && Clock::now() < a.deadline) {
         ++i;
         continue;
       }
-      ChildOutcome outcome;
-      int status = 0;
-      if (!closed) {
-        kill(a.pid, SIGKILL);
-        waitpid(a.pid, &status, 0);
-        outcome.kind = ChildOutcome::Kind::Timeout;
-        outcome.reason =
-            with_console("no result within the time limit of " + std::to_string(a.job.timeout) +
-                             " s (--timeout changes it)",
-                         a.console);
-        for (int fd : {a.result_fd, a.console_fd})
-          if (fd >= 0) close(fd);
-      } else {
-        waitpid(a.pid, &status, 0);
-        if (WIFSIGNALED(status)) {
-          outcome.kind = ChildOutcome::Kind::Crashed;
-          outcome.reason = with_console("killed by signal " + std::to_string(WTERMSIG(status)) +
-                                            " (" + strsignal(WTERMSIG(status)) + ")",
-                                        a.console);
-        } else if (WEXITSTATUS(status) != 0) {
-          outcome.kind = ChildOutcome::Kind::Crashed;
-          outcome.reason =
-              with_console("exited with code " + std::to_string(WEXITSTATUS(status)), a.console);
-        } else {
-          outcome.payload = std::move(a.payload);
-        }
-      }
-      outcome.console = std::move(a.console);
+      const ChildOutcome outcome = finish(a, closed);
       Done done = std::move(a.job.done);
       active.erase(active.begin() + static_cast<long>(i));
       done(outcome);

@@ -44,6 +44,12 @@ class ChildPool {
   struct Active;
   void run_in_process();
   void run_isolated();
+  /// Forks a child for `job`, with pipes for its result and its console.
+  static Active start_child(Job job);
+  /// Reads what each child wrote since the last look, closing a pipe at its end.
+  static void read_output(std::vector<Active>& active);
+  /// The outcome of a child that closed its output (`closed`) or ran out of time.
+  static ChildOutcome finish(Active& a, bool closed);
 
   int parallel_;
   bool isolated_;
