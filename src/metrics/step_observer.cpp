@@ -202,19 +202,7 @@ void StepObserver::observe_stretch(double h, const State& s) {
   }
 }
 
-void StepObserver::observe(double t, const State& s) {
-  if (!active()) return;
-  const double dt = t - previous_t_;
-  // The turn about z of each body that can turn, unwrapped from its spin at every step.
-  if (watch_turns_)
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      if (!turning_[i]) continue;
-      turns_[i] =
-          first_ ? angle_about_z(s[i].orientation) : next_turn(turns_[i], previous_[i], s[i], dt);
-    }
-  if (!first_ && !falling_.empty()) observe_falls(t, s);
-  if (!first_ && !swinging_.empty()) observe_swings(t, s);
-  if (!stopping_.empty()) observe_stops(t, s);
+void StepObserver::observe_swing_ranges(const State& s) {
   for (std::size_t k = 0; k < swinging_.size(); ++k) {
     // The swing of each component, to choose the axis the body oscillates along.
     const Vec3& v = s[swinging_[k]].velocity;
@@ -223,7 +211,9 @@ void StepObserver::observe(double t, const State& s) {
     high_[k] = high_[k].cwiseMax(v);
     trace_.bodies[swinging_[k]].velocity_range = high_[k] - low_[k];
   }
-  if (watch_stretch_) observe_stretch(dt, s);
+}
+
+void StepObserver::observe_contacts(double t, double dt, const State& s) {
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const ContactPair& pair = pairs_[k];
     const int b = pair.ground() ? pair.a : pair.b;
@@ -290,24 +280,44 @@ void StepObserver::observe(double t, const State& s) {
     closing_[k] = closing;
     normals_[k] = p.normal;
   }
+}
+
+void StepObserver::observe_apexes(double dt, const State& s) {
   // Apexes: a body that bounced stops rising above the ground.
-  if (scene_.ground) {
-    const Eigen::Vector3d n = scene_.ground->normal, ground = scene_.ground->point;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      if (scene_.bodies[i].fixed) continue;
-      const bool rising = s[i].velocity.dot(n) > 0.0;
-      if (!first_ && rising_[i] && !rising && bounced_[i]) {
-        // The apex lies between the two steps: the peak of the cubic through their heights
-        // and vertical speeds (the flight's own parabola, where nothing but gravity acts).
-        const double now = (s[i].position - ground).dot(n);
-        const double before = (previous_[i].position - ground).dot(n);
-        trace_.bodies[i].apex_heights.push_back(
-            hermite_peak(before, previous_[i].velocity.dot(n), now, s[i].velocity.dot(n), dt));
-        bounced_[i] = false;
-      }
-      rising_[i] = rising;
+  const Eigen::Vector3d n = scene_.ground->normal, ground = scene_.ground->point;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (scene_.bodies[i].fixed) continue;
+    const bool rising = s[i].velocity.dot(n) > 0.0;
+    if (!first_ && rising_[i] && !rising && bounced_[i]) {
+      // The apex lies between the two steps: the peak of the cubic through their heights
+      // and vertical speeds (the flight's own parabola, where nothing but gravity acts).
+      const double now = (s[i].position - ground).dot(n);
+      const double before = (previous_[i].position - ground).dot(n);
+      trace_.bodies[i].apex_heights.push_back(
+          hermite_peak(before, previous_[i].velocity.dot(n), now, s[i].velocity.dot(n), dt));
+      bounced_[i] = false;
     }
+    rising_[i] = rising;
   }
+}
+
+void StepObserver::observe(double t, const State& s) {
+  if (!active()) return;
+  const double dt = t - previous_t_;
+  // The turn about z of each body that can turn, unwrapped from its spin at every step.
+  if (watch_turns_)
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (!turning_[i]) continue;
+      turns_[i] =
+          first_ ? angle_about_z(s[i].orientation) : next_turn(turns_[i], previous_[i], s[i], dt);
+    }
+  if (!first_ && !falling_.empty()) observe_falls(t, s);
+  if (!first_ && !swinging_.empty()) observe_swings(t, s);
+  if (!stopping_.empty()) observe_stops(t, s);
+  if (!swinging_.empty()) observe_swing_ranges(s);
+  if (watch_stretch_) observe_stretch(dt, s);
+  if (!pairs_.empty()) observe_contacts(t, dt, s);
+  if (scene_.ground) observe_apexes(dt, s);
   previous_ = s;
   previous_t_ = t;
   first_ = false;

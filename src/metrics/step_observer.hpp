@@ -85,6 +85,15 @@ class StepObserver {
   void observe_falls(double t, const State& s);
   std::vector<int> falling_;    ///< bodies with fall_time
   bool watch_stretch_ = false;  ///< a max_stretch observable is asked for
+  /// The range of each component of the velocity of each swinging body, to choose the axis
+  /// it oscillates along.
+  void observe_swing_ranges(const State& s);
+  /// Contacts between each pair that can touch (a step where they are close and stop
+  /// approaching), their penetration, and the first collision's balance of momentum and
+  /// energy.
+  void observe_contacts(double t, double dt, const State& s);
+  /// Apexes: a body that bounced stops rising above the ground.
+  void observe_apexes(double dt, const State& s);
   /// The largest stretch of every spring with a rest length, at and between the steps.
   void observe_stretch(double h, const State& s);
   std::vector<int> stretched_;         ///< the springs with a rest length
