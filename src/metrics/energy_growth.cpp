@@ -59,36 +59,43 @@ std::string growth_name(Growth growth) {
   return "bounded";
 }
 
-GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
-  const int all = static_cast<int>(whole.level.size());
-  if (all < 4) return {};
-  const double first = whole.level.front(), last = whole.level.back();
-  if (!(last > 1e-3 * whole.scale)) return {};
+namespace {
 
+/// The verdict read from the whole run before its windows are looked at one by one: a
+/// runaway held by the motion, or too few steps to tell; nothing when neither.
+std::optional<GrowthVerdict> early_verdict(const EnergyHistory& whole) {
+  const int all = static_cast<int>(whole.level.size());
+  const double first = whole.level.front(), last = whole.level.back();
   if (last > 10.0 * whole.scale && last > 2.0 * first && levelled_off(whole))
-    return {Growth::Runaway, false,
-            "energy ran away: its rise above the start went from " + significant_digits(first) +
-                " J at the end of the first of the run's " + std::to_string(all) + " windows to " +
-                significant_digits(last) + " J, more than ten times the " +
-                significant_digits(whole.scale) +
-                " J the scene's physics can trade, and levelled off on the way: held by the "
-                "motion's nonlinearity (a spring folding through itself), not by the step"};
+    return GrowthVerdict{
+        Growth::Runaway, false,
+        "energy ran away: its rise above the start went from " + significant_digits(first) +
+            " J at the end of the first of the run's " + std::to_string(all) + " windows to " +
+            significant_digits(last) + " J, more than ten times the " +
+            significant_digits(whole.scale) +
+            " J the scene's physics can trade, and levelled off on the way: held by the "
+            "motion's nonlinearity (a spring folding through itself), not by the step"};
   // Too few steps to tell how it grows: only a rise far beyond the physics counts.
   if (all < kGrowthWindows) {
     const std::string few = "too few steps (" + std::to_string(all) +
                             ") to tell how the energy grows; its rise above the start reached " +
                             significant_digits(last) + " J";
     if (last > 10.0 * whole.scale && last > 2.0 * first)
-      return {Growth::Runaway, false,
-              few + ", more than ten times the " + significant_digits(whole.scale) +
-                  " J the scene's physics can trade, from " + significant_digits(first) +
-                  " J after its first step"};
-    return {Growth::Bounded, true, few};
+      return GrowthVerdict{Growth::Runaway, false,
+                           few + ", more than ten times the " + significant_digits(whole.scale) +
+                               " J the scene's physics can trade, from " +
+                               significant_digits(first) + " J after its first step"};
+    return GrowthVerdict{Growth::Bounded, true, few};
   }
-  // Time counts from when the rise began: energy kept exactly until a collision, say.
+  return std::nullopt;
+}
+
+/// The history from when the rise began, time counted from there: energy kept exactly until
+/// a collision, say.
+EnergyHistory from_rise(const EnergyHistory& whole) {
   EnergyHistory h;
   long origin = 0;
-  for (int k = 0; k < all; ++k) {
+  for (std::size_t k = 0; k < whole.level.size(); ++k) {
     if (h.level.empty() && !(whole.level[k] > 0.0)) {
       origin = whole.steps[k];
       continue;
@@ -96,6 +103,19 @@ GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
     h.level.push_back(whole.level[k]);
     h.steps.push_back(whole.steps[k] - origin);
   }
+  return h;
+}
+
+}  // namespace
+
+GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
+  const int all = static_cast<int>(whole.level.size());
+  if (all < 4) return {};
+  const double last = whole.level.back();
+  if (!(last > 1e-3 * whole.scale)) return {};
+
+  if (auto verdict = early_verdict(whole)) return *verdict;
+  const EnergyHistory h = from_rise(whole);
   const int windows = static_cast<int>(h.level.size());
   if (windows < 4)
     return {Growth::Drift, true,

@@ -52,6 +52,37 @@ double slope_tolerance(double mean_slope) {
   return std::max(0.25, 0.15 * std::abs(mean_slope));
 }
 
+namespace {
+
+/// The least-squares slope of log error against log dt over points [start, end).
+double least_squares_slope(const std::vector<ErrorPoint>& points, std::size_t start,
+                           std::size_t end) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = start; i < end; ++i) {
+    const double x = std::log(points[i].dt), y = std::log(points[i].error);
+    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+/// Why a run of `in_run` points in range, from `dt` up, is too short to fit: the error grows
+/// as dt shrinks, the local slopes disagree, or there are too few points.
+std::string short_run_reason(const OrderFit& fit, int in_run, double dt,
+                             const std::vector<double>& slopes, std::optional<double> disagreeing) {
+  const double opening = slopes.empty() ? disagreeing.value_or(0.0) : slopes.front();
+  if (disagreeing && opening < 0.0)
+    return "rounding: the error grows as dt shrinks (local slope " + significant_digits(opening) +
+           " from " + significant_digits(dt) + " s)";
+  if (disagreeing)
+    return "not asymptotic: the local slopes from the smallest step in range, " +
+           (slopes.empty() ? "" : significant_digits(slopes.front()) + " then ") +
+           significant_digits(*disagreeing) + ", disagree";
+  return "too few points: " + std::to_string(in_run) +
+         " in a row between the rounding floor and saturation, three needed" + others(fit);
+}
+
+}  // namespace
+
 OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
   OrderFit fit;
   std::vector<ErrorPoint> points;
@@ -113,27 +144,10 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
   }
   const int in_run = static_cast<int>(end - start);
   if (in_run < 3) {
-    const double opening = slopes.empty() ? disagreeing.value_or(0.0) : slopes.front();
-    if (disagreeing && opening < 0.0)
-      fit.reason = "rounding: the error grows as dt shrinks (local slope " +
-                   significant_digits(opening) + " from " + significant_digits(points[start].dt) +
-                   " s)";
-    else if (disagreeing)
-      fit.reason = "not asymptotic: the local slopes from the smallest step in range, " +
-                   (slopes.empty() ? "" : significant_digits(slopes.front()) + " then ") +
-                   significant_digits(*disagreeing) + ", disagree";
-    else
-      fit.reason = "too few points: " + std::to_string(in_run) +
-                   " in a row between the rounding floor and saturation, three needed" +
-                   others(fit);
+    fit.reason = short_run_reason(fit, in_run, points[start].dt, slopes, disagreeing);
     return fit;
   }
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = start; i < end; ++i) {
-    const double x = std::log(points[i].dt), y = std::log(points[i].error);
-    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  const double fitted = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double fitted = least_squares_slope(points, start, end);
   // An error that does not shrink with dt is held by something other than the step.
   if (fitted < kSmallestOrder) {
     fit.reason = "not converging: the error barely shrinks with dt (slope " +

@@ -100,6 +100,14 @@ class SceneModel : public HybridModel {
   contact::Proximity proximity(const ContactPair& pair, const double* y) const;
   /// Newton's restitution along the contact normal; the ground and fixed bodies do not move.
   void resolve(const ContactPair& pair, double* y, double t);
+  /// The hit's contact time and first velocity after it, for each moving body of `pair`.
+  void record_hit(const ContactPair& pair, const Eigen::Vector3d& normal, const double* y, double t,
+                  bool b_moves);
+  /// After a hit: an impulse may lift a resting body off the ground, not press it in.
+  void lift_resting(const ContactPair& pair, const double* y, double t);
+  /// Ever smaller bounces end: a ground rebound shorter than rest_flight_time() leaves the
+  /// body resting on the ground, `gap` (m) from it now.
+  void end_small_bounce(const ContactPair& pair, double gap, double* y, double t);
   /// Throws BeyondExactAnswer when another contact on the bodies of `pair` is closed.
   void check_simultaneous(const ContactPair& pair, const double* y, double t) const;
   /// A body resting on a ground with friction at time t: its tangential velocity below

@@ -101,6 +101,54 @@ void SceneModel::check_simultaneous(const ContactPair& pair, const double* y, do
   }
 }
 
+void SceneModel::record_hit(const ContactPair& pair, const Vector3d& normal, const double* y,
+                            double t, bool b_moves) {
+  for (int body : {pair.a, b_moves ? pair.b : -1}) {
+    if (body < 0) continue;
+    BodyEvents& e = trace_.bodies[body];
+    e.contact_times.push_back(t);
+    // The normal points from the second shape to the first: away from b for a.
+    if (!e.post_velocity)
+      e.post_velocity = Vector3d(velocity(y, body)),
+      e.post_normal = body == pair.a ? Vector3d(normal) : Vector3d(-normal);
+    after_bounce_[body] = true;
+  }
+}
+
+void SceneModel::lift_resting(const ContactPair& pair, const double* y, double t) {
+  for (int body : {pair.a, pair.b}) {
+    if (body < 0 || !resting_[body]) continue;
+    // An impulse may lift a resting body off the ground, but not press it in.
+    const double up = velocity(y, body).dot(scene_.ground->normal);
+    if (up < 0.0)
+      throw BeyondExactAnswer("at t = " + std::to_string(t) + " s body '" +
+                              scene_.bodies[body].name +
+                              "' is pushed into the ground while resting on it");
+    resting_[body] = up <= 0.0;
+    if (!resting_[body]) slides_[body] = {};
+  }
+}
+
+void SceneModel::end_small_bounce(const ContactPair& pair, double gap, double* y, double t) {
+  // Ever smaller bounces end: a rebound this short leaves the body resting on the ground.
+  const Vector3d n = scene_.ground->normal;
+  const double pull = -scene_.gravity.dot(n);
+  const double rebound = velocity(y, pair.a).dot(n);
+  if (pull > 0.0 && 2.0 * rebound / pull < rest_flight_time()) {
+    if (scene_.bodies[pair.a].shape == Shape::Sphere &&
+        (pair.friction_static > 0.0 || pair.friction_kinetic > 0.0))
+      throw BeyondExactAnswer("at t = " + std::to_string(t) + " s ball '" +
+                              scene_.bodies[pair.a].name +
+                              "' comes to rest on a ground with friction: it would roll, and "
+                              "rolling has no model in the reference");
+    resting_[pair.a] = true;
+    after_bounce_[pair.a] = false;
+    Vec(y + at(pair.a) + 3) -= rebound * n;
+    Vec(y + at(pair.a)) -= gap * n;
+    settle(pair.a, y, t);
+  }
+}
+
 void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
   const bool ground = pair.ground();
   const contact::Proximity p = proximity(pair, y);
@@ -138,16 +186,7 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
   Vec(y + at(pair.a) + 3) = a.velocity;
   set_spin(y, pair.a, a.spin);
   if (b_moves) Vec(y + at(pair.b) + 3) = b.velocity, set_spin(y, pair.b, b.spin);
-  for (int body : {pair.a, b_moves ? pair.b : -1}) {
-    if (body < 0) continue;
-    BodyEvents& e = trace_.bodies[body];
-    e.contact_times.push_back(t);
-    // The normal points from the second shape to the first: away from b for a.
-    if (!e.post_velocity)
-      e.post_velocity = Vector3d(velocity(y, body)),
-      e.post_normal = body == pair.a ? Vector3d(p.normal) : Vector3d(-p.normal);
-    after_bounce_[body] = true;
-  }
+  record_hit(pair, p.normal, y, t, b_moves);
   if (b_moves && !trace_.first_collision) {
     balance(&energy_after, &angular_after);
     trace_.first_collision = {pair.a,
@@ -158,35 +197,9 @@ void SceneModel::resolve(const ContactPair& pair, double* y, double t) {
                               energy_before,
                               energy_after};
   }
-  for (int body : {pair.a, pair.b}) {
-    if (body < 0 || !resting_[body]) continue;
-    // An impulse may lift a resting body off the ground, but not press it in.
-    const double up = velocity(y, body).dot(scene_.ground->normal);
-    if (up < 0.0)
-      throw BeyondExactAnswer("at t = " + std::to_string(t) + " s body '" +
-                              scene_.bodies[body].name +
-                              "' is pushed into the ground while resting on it");
-    resting_[body] = up <= 0.0;
-    if (!resting_[body]) slides_[body] = {};
-  }
+  lift_resting(pair, y, t);
   if (!ground) return;
-  // Ever smaller bounces end: a rebound this short leaves the body resting on the ground.
-  const Vector3d n = scene_.ground->normal;
-  const double pull = -scene_.gravity.dot(n);
-  const double rebound = velocity(y, pair.a).dot(n);
-  if (pull > 0.0 && 2.0 * rebound / pull < rest_flight_time()) {
-    if (scene_.bodies[pair.a].shape == Shape::Sphere &&
-        (pair.friction_static > 0.0 || pair.friction_kinetic > 0.0))
-      throw BeyondExactAnswer("at t = " + std::to_string(t) + " s ball '" +
-                              scene_.bodies[pair.a].name +
-                              "' comes to rest on a ground with friction: it would roll, and "
-                              "rolling has no model in the reference");
-    resting_[pair.a] = true;
-    after_bounce_[pair.a] = false;
-    Vec(y + at(pair.a) + 3) -= rebound * n;
-    Vec(y + at(pair.a)) -= p.gap * n;
-    settle(pair.a, y, t);
-  }
+  end_small_bounce(pair, p.gap, y, t);
 }
 
 void SceneModel::settle(int i, const double* y, double t) {

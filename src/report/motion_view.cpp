@@ -299,6 +299,60 @@ std::vector<double> still_instants(const Scene& scene) {
   return {0.0, scene.duration / 3.0, 2.0 * scene.duration / 3.0, scene.duration};
 }
 
+namespace {
+
+/// How many frames the motion view holds, and for how many runs it draws springs.
+struct FrameBudget {
+  std::size_t frames = 0;
+  std::size_t spring_runs = 0;
+};
+
+/// Frames within the size limit; springs for every run if they fit, else for the reference
+/// only, else none.
+FrameBudget frame_budget(const Scene& scene, const std::vector<int>& drawn, std::size_t runs,
+                         std::size_t springs) {
+  const double bodies_each = numbers_per_frame(scene, drawn);
+  const double springs_each = 4.0 * static_cast<double>(springs);
+  const double n_runs = static_cast<double>(runs);
+  std::size_t spring_runs = 0;
+  if ((bodies_each + springs_each) * n_runs * kMinFrames <= kNumberBudget)
+    spring_runs = runs;
+  else if ((bodies_each * n_runs + springs_each) * kMinFrames <= kNumberBudget)
+    spring_runs = 1;
+  const double per_frame = std::max(1.0, bodies_each * n_runs + springs_each * spring_runs);
+  const std::size_t frames = std::clamp<std::size_t>(
+      static_cast<std::size_t>(kNumberBudget / per_frame), kMinFrames, kMaxFrames);
+  return {frames, spring_runs};
+}
+
+/// The time readout at height `bar_y`: a bar that fills over the run, and the time in tenths
+/// of it, over a loop of `play` seconds showing `total` simulated ones.
+std::string time_readout(double bar_y, double total, double play) {
+  std::string svg;
+  svg += fmt::format(
+      "<rect x=\"{0}\" y=\"{1}\" width=\"{2}\" height=\"8\" fill=\"#eeeeee\"/>\n<rect x=\"{0}\" "
+      "y=\"{1}\" width=\"0\" height=\"8\" fill=\"#777777\"><animate attributeName=\"width\" "
+      "values=\"0;{2}\" dur=\"{3:.3f}s\" repeatCount=\"indefinite\"/></rect>\n",
+      num(kMargin), num(bar_y), num(kCanvasWidth), play);
+  for (int tenth = 0; tenth < 10; ++tenth) {
+    const double from = tenth / 10.0, to = (tenth + 1) / 10.0;
+    const std::string values = tenth == 0 ? "1;0" : tenth == 9 ? "0;1" : "0;1;0";
+    const std::string times = tenth == 0   ? fmt::format("0;{:.2f}", to)
+                              : tenth == 9 ? fmt::format("0;{:.2f}", from)
+                                           : fmt::format("0;{:.2f};{:.2f}", from, to);
+    svg += fmt::format(
+        "<text x=\"{}\" y=\"{}\" opacity=\"{}\">t = {:.3g} s<animate attributeName=\"opacity\" "
+        "values=\"{}\" keyTimes=\"{}\" calcMode=\"discrete\" dur=\"{:.3f}s\" "
+        "repeatCount=\"indefinite\"/></text>\n",
+        num(kMargin), num(bar_y + 24.0), tenth == 0 ? 1 : 0, from * total, values, times, play);
+  }
+  svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{:.3g} s</text>\n</svg>\n",
+                     num(kMargin + kCanvasWidth), num(bar_y + 24.0), total);
+  return svg;
+}
+
+}  // namespace
+
 std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn) {
   const Scene& scene = *results.scene;
   const std::vector<const RunRecord*> runs = drawable_runs(results);
@@ -308,20 +362,9 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
       motion::fit(scene, guide, drawn, kCanvasWidth, kMinCanvasHeight, kMaxCanvasHeight);
   const bool multiples = moving_bodies(scene, drawn) > kOverlayBodies;
 
-  // Frames within the size limit; springs for every run if they fit, else for the
-  // reference only, else none.
   const Springs all_springs = motion::drawn_springs(scene, drawn);
-  const double bodies_each = numbers_per_frame(scene, drawn);
-  const double springs_each = 4.0 * all_springs.size();
-  const double n_runs = static_cast<double>(runs.size());
-  std::size_t spring_runs = 0;
-  if ((bodies_each + springs_each) * n_runs * kMinFrames <= kNumberBudget)
-    spring_runs = runs.size();
-  else if ((bodies_each * n_runs + springs_each) * kMinFrames <= kNumberBudget)
-    spring_runs = 1;
-  const double per_frame = std::max(1.0, bodies_each * n_runs + springs_each * spring_runs);
-  const std::size_t frames = std::clamp<std::size_t>(
-      static_cast<std::size_t>(kNumberBudget / per_frame), kMinFrames, kMaxFrames);
+  const FrameBudget budget = frame_budget(scene, drawn, runs.size(), all_springs.size());
+  const std::size_t frames = budget.frames, spring_runs = budget.spring_runs;
   // The frames are evenly spread over the samples, so the values need no key times.
   const std::vector<std::size_t> samples = frame_samples(guide.states.size(), frames);
   const double total = guide.times[samples.back()] > 0.0 ? guide.times[samples.back()] : 1.0;
@@ -367,27 +410,7 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
     }
   }
 
-  // The time readout: a bar that fills over the run, and the time in tenths of it.
-  const double bar_y = bottom + 12.0;
-  svg += fmt::format(
-      "<rect x=\"{0}\" y=\"{1}\" width=\"{2}\" height=\"8\" fill=\"#eeeeee\"/>\n<rect x=\"{0}\" "
-      "y=\"{1}\" width=\"0\" height=\"8\" fill=\"#777777\"><animate attributeName=\"width\" "
-      "values=\"0;{2}\" dur=\"{3:.3f}s\" repeatCount=\"indefinite\"/></rect>\n",
-      num(kMargin), num(bar_y), num(kCanvasWidth), play);
-  for (int tenth = 0; tenth < 10; ++tenth) {
-    const double from = tenth / 10.0, to = (tenth + 1) / 10.0;
-    const std::string values = tenth == 0 ? "1;0" : tenth == 9 ? "0;1" : "0;1;0";
-    const std::string times = tenth == 0   ? fmt::format("0;{:.2f}", to)
-                              : tenth == 9 ? fmt::format("0;{:.2f}", from)
-                                           : fmt::format("0;{:.2f};{:.2f}", from, to);
-    svg += fmt::format(
-        "<text x=\"{}\" y=\"{}\" opacity=\"{}\">t = {:.3g} s<animate attributeName=\"opacity\" "
-        "values=\"{}\" keyTimes=\"{}\" calcMode=\"discrete\" dur=\"{:.3f}s\" "
-        "repeatCount=\"indefinite\"/></text>\n",
-        num(kMargin), num(bar_y + 24.0), tenth == 0 ? 1 : 0, from * total, values, times, play);
-  }
-  svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{:.3g} s</text>\n</svg>\n",
-                     num(kMargin + kCanvasWidth), num(bar_y + 24.0), total);
+  svg += time_readout(bottom + 12.0, total, play);
   return svg;
 }
 

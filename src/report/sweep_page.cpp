@@ -158,6 +158,63 @@ std::string sweep_plot(const CaseResults& results, FileBatch& batch, const std::
   return plot.draw_into(batch, name);
 }
 
+namespace {
+
+/// Predictability: how far a result moves from one value to the next, per backend.
+std::string predictability_section(const SweepResults& sweep,
+                                   const std::vector<std::string>& backends,
+                                   const std::vector<std::string>& quantities) {
+  Table t{{"backend"}, {}, {false}};
+  for (const std::string& q : quantities) {
+    t.headers.push_back(q + ": trend");
+    t.headers.push_back(q + ": range");
+    t.headers.push_back(q + ": largest step");
+    t.right_aligned.push_back(false);
+    t.right_aligned.push_back(true);
+    t.right_aligned.push_back(true);
+  }
+  for (const std::string& b : backends) {
+    std::vector<std::string> row{b};
+    for (const std::string& q : quantities) {
+      const auto values = series_of(sweep, b, q);
+      row.push_back(trend(values));
+      row.push_back(range_text(values));
+      row.push_back(format_value(largest_step(values)));
+    }
+    t.rows.push_back(row);
+  }
+  return fmt::format(
+      "\n### Predictability\n\nWhich way each result goes as the parameter grows (rises, falls, "
+      "flat, or up and down), how far it moves over the sweep, "
+      "and its largest change between neighbouring values: a small change of the parameter "
+      "should give a small change of the result (Chung and Pollard 2016); a largest step well "
+      "above the reference's is a jump.\n\n{}",
+      render_markdown(t));
+}
+
+/// Every value of every quantity, one table per quantity.
+std::string every_value_section(const SweepResults& sweep, const std::vector<std::string>& backends,
+                                const std::vector<std::string>& quantities) {
+  std::string out;
+  out += "\n### Every value\n";
+  for (const std::string& q : quantities) {
+    Table v{{"backend"}, {}, {false}};
+    for (const SweepPoint& p : sweep.points) {
+      v.headers.push_back(sweep.parameter + " = " + short_number(p.value));
+      v.right_aligned.push_back(true);
+    }
+    for (const std::string& b : backends) {
+      std::vector<std::string> row{b};
+      for (const SweepPoint& p : sweep.points) row.push_back(cell(p, b, q));
+      v.rows.push_back(row);
+    }
+    out += fmt::format("\n`{}`:\n\n{}", markdown_text(q), render_markdown(v));
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string sweep_markdown(const CaseResults& results, const std::string& plot) {
   if (!results.sweep || !results.scene->sweep) return "";
   const SweepResults& sweep = *results.sweep;
@@ -193,51 +250,10 @@ std::string sweep_markdown(const CaseResults& results, const std::string& plot) 
         plot + ")\n";
   if (!spec.onset.empty()) out += onset_section(sweep, spec, backends);
 
-  // Predictability: how far a result moves from one value to the next.
   const std::vector<std::string> quantities = sweep_quantities(scene);
-  Table t{{"backend"}, {}, {false}};
-  for (const std::string& q : quantities) {
-    t.headers.push_back(q + ": trend");
-    t.headers.push_back(q + ": range");
-    t.headers.push_back(q + ": largest step");
-    t.right_aligned.push_back(false);
-    t.right_aligned.push_back(true);
-    t.right_aligned.push_back(true);
-  }
-  for (const std::string& b : backends) {
-    std::vector<std::string> row{b};
-    for (const std::string& q : quantities) {
-      const auto values = series_of(sweep, b, q);
-      row.push_back(trend(values));
-      row.push_back(range_text(values));
-      row.push_back(format_value(largest_step(values)));
-    }
-    t.rows.push_back(row);
-  }
-  out += fmt::format(
-      "\n### Predictability\n\nWhich way each result goes as the parameter grows (rises, falls, "
-      "flat, or up and down), how far it moves over the sweep, "
-      "and its largest change between neighbouring values: a small change of the parameter "
-      "should give a small change of the result (Chung and Pollard 2016); a largest step well "
-      "above the reference's is a jump.\n\n{}",
-      render_markdown(t));
-
-  if (sweep.points.size() <= kMaxListedValues) {
-    out += "\n### Every value\n";
-    for (const std::string& q : quantities) {
-      Table v{{"backend"}, {}, {false}};
-      for (const SweepPoint& p : sweep.points) {
-        v.headers.push_back(sweep.parameter + " = " + short_number(p.value));
-        v.right_aligned.push_back(true);
-      }
-      for (const std::string& b : backends) {
-        std::vector<std::string> row{b};
-        for (const SweepPoint& p : sweep.points) row.push_back(cell(p, b, q));
-        v.rows.push_back(row);
-      }
-      out += fmt::format("\n`{}`:\n\n{}", markdown_text(q), render_markdown(v));
-    }
-  }
+  out += predictability_section(sweep, backends, quantities);
+  if (sweep.points.size() <= kMaxListedValues)
+    out += every_value_section(sweep, backends, quantities);
   return out;
 }
 
