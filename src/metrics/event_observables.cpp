@@ -10,60 +10,110 @@ ObservableValue nth(const std::vector<double>& values, int n, const char* what) 
   return {std::nullopt, "only " + std::to_string(values.size()) + " " + what + " in the run"};
 }
 
-/// The mean time between upward zero crossings of the velocity along the axis it crosses
-/// zero most often on (the swing's axis; a fall or a drift never crosses), the widest
-/// swing among equals.
-ObservableValue period(const BodyEvents& b) {
+/// The observed body's events, or nullptr when the run has none for it.
+const BodyEvents* body_events(const Observe& observe, const EventTrace& events) {
+  if (observe.body < 0 || static_cast<std::size_t>(observe.body) >= events.bodies.size())
+    return nullptr;
+  return &events.bodies[observe.body];
+}
+
+const ObservableValue kNoTrace{std::nullopt, "the run has no event trace"};
+
+/// The first collision between two moving bodies, when the observed body took part in it;
+/// else the note saying why there is none.
+std::optional<ObservableValue> no_collision(const Observe& observe, const EventTrace& events) {
+  const auto& c = events.first_collision;
+  if (!c) return ObservableValue{std::nullopt, "no two moving bodies collided"};
+  if (c->body_a != observe.body && c->body_b != observe.body)
+    return ObservableValue{std::nullopt, "the first collision is between other bodies"};
+  return std::nullopt;
+}
+
+}  // namespace
+
+ObservableValue measure_contact_time(const Scene&, const Observe& observe, const Trajectory& t,
+                                     const EventTrace*) {
+  const BodyEvents* b = body_events(observe, t.events);
+  return b ? nth(b->contact_times, observe.n, "contacts") : kNoTrace;
+}
+
+ObservableValue measure_bounce_apex(const Scene&, const Observe& observe, const Trajectory& t,
+                                    const EventTrace*) {
+  const BodyEvents* b = body_events(observe, t.events);
+  return b ? nth(b->apex_heights, observe.n, "apexes after a contact") : kNoTrace;
+}
+
+ObservableValue measure_post_velocity(const Scene&, const Observe& observe, const Trajectory& t,
+                                      const EventTrace*) {
+  const BodyEvents* b = body_events(observe, t.events);
+  if (!b) return kNoTrace;
+  if (!b->post_velocity) return {std::nullopt, "the body touched nothing"};
+  return {(*b->post_velocity).norm(), ""};
+}
+
+ObservableValue measure_post_normal_velocity(const Scene&, const Observe& observe,
+                                             const Trajectory& t, const EventTrace*) {
+  const BodyEvents* b = body_events(observe, t.events);
+  if (!b) return kNoTrace;
+  if (!b->post_velocity) return {std::nullopt, "the body touched nothing"};
+  return {b->post_velocity->dot(b->post_normal.value_or(Vec3::Zero())), ""};
+}
+
+ObservableValue measure_max_penetration(const Scene&, const Observe& observe, const Trajectory& t,
+                                        const EventTrace*) {
+  const BodyEvents* b = body_events(observe, t.events);
+  return b ? ObservableValue{b->max_penetration, ""} : kNoTrace;
+}
+
+ObservableValue measure_period(const Scene&, const Observe& observe, const Trajectory& trajectory,
+                               const EventTrace*) {
+  const BodyEvents* b = body_events(observe, trajectory.events);
+  if (!b) return kNoTrace;
+  // The swing's axis: the one whose velocity crosses zero most often (a fall or a drift
+  // never crosses), the widest swing among equals.
   int axis = 0;
   for (int k = 1; k < 3; ++k) {
-    const std::size_t n = b.upward_crossings[k].size(), best = b.upward_crossings[axis].size();
-    if (n > best || (n == best && b.velocity_range[k] > b.velocity_range[axis])) axis = k;
+    const std::size_t n = b->upward_crossings[k].size(), best = b->upward_crossings[axis].size();
+    if (n > best || (n == best && b->velocity_range[k] > b->velocity_range[axis])) axis = k;
   }
-  const std::vector<double>& t = b.upward_crossings[axis];
+  const std::vector<double>& t = b->upward_crossings[axis];
   if (t.size() < 2)
     return {std::nullopt, "fewer than two full swings in the run (" + std::to_string(t.size()) +
                               " upward zero crossings of the velocity)"};
   return {(t.back() - t.front()) / static_cast<double>(t.size() - 1), ""};
 }
 
-}  // namespace
+ObservableValue measure_fall_time(const Scene&, const Observe& observe, const Trajectory& t,
+                                  const EventTrace*) {
+  const BodyEvents* b = body_events(observe, t.events);
+  if (!b) return kNoTrace;
+  if (!b->fall_time) return {std::nullopt, "it did not fall"};
+  return {*b->fall_time, ""};
+}
 
-std::optional<ObservableValue> measure_event(const Observe& observe, const EventTrace& events) {
-  const std::string& kind = observe.kind;
-  if (kind == "max_stretch") {
-    if (!events.max_stretch) return ObservableValue{std::nullopt, "the run has no event trace"};
-    return ObservableValue{*events.max_stretch, ""};
-  }
-  const bool body_kind = kind == "contact_time" || kind == "bounce_apex" ||
-                         kind == "post_velocity" || kind == "post_normal_velocity" ||
-                         kind == "max_penetration" || kind == "period" || kind == "fall_time";
-  if (body_kind) {
-    if (observe.body < 0 || static_cast<std::size_t>(observe.body) >= events.bodies.size())
-      return ObservableValue{std::nullopt, "the run has no event trace"};
-    const BodyEvents& b = events.bodies[observe.body];
-    if (kind == "contact_time") return nth(b.contact_times, observe.n, "contacts");
-    if (kind == "bounce_apex") return nth(b.apex_heights, observe.n, "apexes after a contact");
-    if (kind == "max_penetration") return ObservableValue{b.max_penetration, ""};
-    if (kind == "period") return period(b);
-    if (kind == "fall_time") {
-      if (!b.fall_time) return ObservableValue{std::nullopt, "it did not fall"};
-      return ObservableValue{*b.fall_time, ""};
-    }
-    if (!b.post_velocity) return ObservableValue{std::nullopt, "the body touched nothing"};
-    if (kind == "post_normal_velocity")
-      return ObservableValue{b.post_velocity->dot(b.post_normal.value_or(Vec3::Zero())), ""};
-    return ObservableValue{(*b.post_velocity).norm(), ""};
-  }
-  if (kind != "momentum_change" && kind != "energy_change" && kind != "angular_momentum_change")
-    return std::nullopt;
-  const auto& c = events.first_collision;
-  if (!c) return ObservableValue{std::nullopt, "no two moving bodies collided"};
-  if (c->body_a != observe.body && c->body_b != observe.body)
-    return ObservableValue{std::nullopt, "the first collision is between other bodies"};
-  if (kind == "momentum_change") return ObservableValue{c->momentum_change.norm(), ""};
-  if (kind == "angular_momentum_change")
-    return ObservableValue{c->angular_momentum_change.norm(), ""};
-  return ObservableValue{c->kinetic_energy_after - c->kinetic_energy_before, ""};
+ObservableValue measure_max_stretch(const Scene&, const Observe&, const Trajectory& t,
+                                    const EventTrace*) {
+  if (!t.events.max_stretch) return kNoTrace;
+  return {*t.events.max_stretch, ""};
+}
+
+ObservableValue measure_momentum_change(const Scene&, const Observe& observe, const Trajectory& t,
+                                        const EventTrace*) {
+  if (auto none = no_collision(observe, t.events)) return *none;
+  return {t.events.first_collision->momentum_change.norm(), ""};
+}
+
+ObservableValue measure_angular_momentum_change(const Scene&, const Observe& observe,
+                                                const Trajectory& t, const EventTrace*) {
+  if (auto none = no_collision(observe, t.events)) return *none;
+  return {t.events.first_collision->angular_momentum_change.norm(), ""};
+}
+
+ObservableValue measure_energy_change(const Scene&, const Observe& observe, const Trajectory& t,
+                                      const EventTrace*) {
+  if (auto none = no_collision(observe, t.events)) return *none;
+  const auto& c = *t.events.first_collision;
+  return {c.kinetic_energy_after - c.kinetic_energy_before, ""};
 }
 
 }  // namespace bb

@@ -24,12 +24,11 @@ Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& s, con
   return body.mass * a.linear - applied;
 }
 
-std::optional<ObservableValue> measure_hinge(const Scene& scene, const Observe& observe,
-                                             const Trajectory& trajectory) {
-  if (observe.kind != "hinge_force") return std::nullopt;
+ObservableValue measure_hinge_force(const Scene& scene, const Observe& observe,
+                                    const Trajectory& trajectory, const EventTrace*) {
   const auto h = std::find_if(scene.hinges.begin(), scene.hinges.end(),
                               [&](const Hinge& x) { return x.body == observe.body; });
-  if (h == scene.hinges.end()) return ObservableValue{std::nullopt, "the body is on no hinge"};
+  if (h == scene.hinges.end()) return {std::nullopt, "the body is on no hinge"};
   const Quat start = scene.bodies[observe.body].orientation;
   // The turn from the start, radians, and the hinge force, at each sample in order.
   double turn_before = 0.0, force_before = 0.0;
@@ -41,11 +40,11 @@ std::optional<ObservableValue> measure_hinge(const Scene& scene, const Observe& 
     const Vec3& applied = forces.at(trajectory.states[n]).force[observe.body];
     const double force = hinge_force(scene, *h, s, applied).norm();
     if (n > 0 && turn >= kTurn && turn_before < kTurn)
-      return ObservableValue{
-          force_before + (force - force_before) * (kTurn - turn_before) / (turn - turn_before), ""};
+      return {force_before + (force - force_before) * (kTurn - turn_before) / (turn - turn_before),
+              ""};
     turn_before = turn, force_before = force;
   }
-  return ObservableValue{std::nullopt, "it never turned 45 degrees"};
+  return {std::nullopt, "it never turned 45 degrees"};
 }
 
 }  // namespace bb

@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "metrics/observables.hpp"
+#include "metrics/observable_measure.hpp"
 
 namespace bb {
 
@@ -16,13 +16,12 @@ namespace bb {
 Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& state,
                  const Vec3& force = Vec3::Zero());
 
-/// The value of `observe` on `trajectory`, or nullopt when its kind is not this one:
 /// hinge_force (N), the hinge's force on the body when it has turned 45 degrees from its
 /// start, interpolated linearly in the turn between the samples either side (a force read
 /// at a fixed turn compares backends; its largest value, just before a wall lands, would
 /// depend on where the samples fall); a note when the body is on no hinge or never turns
 /// that far.
-std::optional<ObservableValue> measure_hinge(const Scene& scene, const Observe& observe,
-                                             const Trajectory& trajectory);
+ObservableValue measure_hinge_force(const Scene& scene, const Observe& observe,
+                                    const Trajectory& trajectory, const EventTrace*);
 
 }  // namespace bb

@@ -3,10 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "metrics/event_observables.hpp"
-#include "metrics/hinge_observables.hpp"
-#include "metrics/rotation_observables.hpp"
-#include "metrics/stop_observables.hpp"
+#include "metrics/observable_registry.hpp"
 
 namespace bb {
 
@@ -91,35 +88,57 @@ ObservableValue terminal_time(const Scene& scene, int body, const Trajectory& tr
   return {std::nullopt, "never reached 95 % of its terminal speed in the run"};
 }
 
-std::optional<double> formula_value(const Scene& scene, const Observe& observe) {
-  if (observe.kind != "terminal_velocity") return std::nullopt;
+std::optional<double> terminal_velocity_formula(const Scene& scene, const Observe& observe) {
   return terminal_speed(scene, scene.bodies[observe.body]).value;
+}
+
+ObservableValue measure_final_speed(const Scene&, const Observe& observe,
+                                    const Trajectory& trajectory, const EventTrace*) {
+  return {trajectory.states.back()[observe.body].velocity.norm(), ""};
+}
+
+ObservableValue measure_terminal_velocity(const Scene& scene, const Observe& observe,
+                                          const Trajectory& trajectory, const EventTrace*) {
+  const ObservableValue theory = terminal_speed(scene, scene.bodies[observe.body]);
+  if (!theory.value) return theory;
+  // The drag acts on the velocity relative to the air, so that speed tends to v_t.
+  return {(trajectory.states.back()[observe.body].velocity - scene.air->wind).norm(), ""};
+}
+
+ObservableValue measure_terminal_time(const Scene& scene, const Observe& observe,
+                                      const Trajectory& trajectory, const EventTrace*) {
+  return terminal_time(scene, observe.body, trajectory);
+}
+
+ObservableValue measure_sag(const Scene& scene, const Observe&, const Trajectory& trajectory,
+                            const EventTrace*) {
+  return sag(scene, trajectory.states.back());
+}
+
+ObservableValue measure_final_shear(const Scene& scene, const Observe&,
+                                    const Trajectory& trajectory, const EventTrace*) {
+  return final_shear(scene, trajectory.states.front(), trajectory.states.back());
+}
+
+ObservableValue measure_final_height(const Scene& scene, const Observe& observe,
+                                     const Trajectory& trajectory, const EventTrace*) {
+  return final_height(scene, observe.body, trajectory.states.back());
+}
+
+std::optional<double> formula_value(const Scene& scene, const Observe& observe) {
+  const ObservableMeasure* m = observable_measure(observe.kind);
+  if (m == nullptr || m->formula == nullptr) return std::nullopt;
+  return m->formula(scene, observe);
 }
 
 ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory,
                         const EventTrace* reference) {
   if (trajectory.states.empty()) return {std::nullopt, "no samples"};
-  // Bounces, contacts and collisions come from the run's events, seen at every step.
-  if (auto from_events = measure_event(observe, trajectory.events)) return *from_events;
-  if (auto stop = measure_stop(scene, observe, trajectory, reference)) return *stop;
-  if (auto turn = measure_rotation(scene, observe, trajectory)) return *turn;
-  if (auto hinge = measure_hinge(scene, observe, trajectory)) return *hinge;
-  if (observe.kind == "sag") return sag(scene, trajectory.states.back());
-  if (observe.kind == "final_shear")
-    return final_shear(scene, trajectory.states.front(), trajectory.states.back());
-  if (observe.kind == "final_height")
-    return final_height(scene, observe.body, trajectory.states.back());
-  if (observe.kind == "terminal_time") return terminal_time(scene, observe.body, trajectory);
-  const Vec3& v = trajectory.states.back()[observe.body].velocity;
-  if (observe.kind == "final_speed") return {v.norm(), ""};
-  if (observe.kind == "terminal_velocity") {
-    const Body& body = scene.bodies[observe.body];
-    const ObservableValue theory = terminal_speed(scene, body);
-    if (!theory.value) return theory;
-    // The drag acts on the velocity relative to the air, so that speed tends to v_t.
-    return {(v - scene.air->wind).norm(), ""};
-  }
-  return {std::nullopt, "kind '" + observe.kind + "' is not measured by this version of beachball"};
+  const ObservableMeasure* m = observable_measure(observe.kind);
+  if (m == nullptr)
+    return {std::nullopt,
+            "kind '" + observe.kind + "' is not measured by this version of beachball"};
+  return m->measure(scene, observe, trajectory, reference);
 }
 
 }  // namespace bb

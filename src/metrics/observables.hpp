@@ -4,30 +4,14 @@
 #include <optional>
 #include <string>
 
-#include "metrics/trajectory.hpp"
-#include "scene/scene.hpp"
+#include "metrics/observable_measure.hpp"
 
 namespace bb {
 
-/// A measured value, or the reason there is none for this run.
-struct ObservableValue {
-  std::optional<double> value;
-  std::string note;  ///< why `value` is empty
-};
-
-/// The observable's value on one run:
-/// - final_speed: |v| at the end of the run (m/s);
-/// - terminal_velocity: |v - wind| at the end of the run (m/s), the speed relative to the
-///   air that tends to the terminal speed; a note where the terminal speed does not apply;
-/// - terminal_time: when that speed first reaches 95 % of the terminal speed (s);
-/// - final_shear: the grid's largest relative change of a cell diagonal, start to end;
-/// - final_height: the centre's height along -gravity at the end of the run (m);
-/// - sag: how far the grid's last row hangs below its first at the end (m, along gravity);
-/// - the event kinds (bounces, contacts, period, max_stretch): see event_observables.hpp;
-/// - the kinds of a sliding body (stop_time, stop_distance, rest_creep, final_velocity):
-///   see stop_observables.hpp; rest_creep counts from the reference's stop, in the events
-///   `reference` (nullptr: none);
-/// - flips, how often a body turned over about its middle axis: see rotation_observables.hpp.
+/// The observable's value on one run, measured as its kind says (observable_registry.hpp;
+/// the kinds and their units: docs/observables.md); a note where there is no value: no
+/// samples, a kind this version does not measure, or the kind's own reason. `reference`
+/// holds the reference's events where a kind measures from them (rest_creep), else nullptr.
 ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory,
                         const EventTrace* reference);
 
@@ -61,5 +45,21 @@ ObservableValue terminal_time(const Scene& scene, int body, const Trajectory& tr
 /// scene alone (terminal_velocity: terminal_speed); nullopt when the comparison is with the
 /// reference run's own measurement, as for every other kind.
 std::optional<double> formula_value(const Scene& scene, const Observe& observe);
+
+/// The measurements of the kinds read from the samples (final_speed, terminal_velocity,
+/// terminal_time, sag, final_shear, final_height), each a MeasureFn.
+ObservableValue measure_final_speed(const Scene&, const Observe&, const Trajectory&,
+                                    const EventTrace*);
+ObservableValue measure_terminal_velocity(const Scene&, const Observe&, const Trajectory&,
+                                          const EventTrace*);
+/// terminal_velocity's formula: the body's terminal speed where it applies.
+std::optional<double> terminal_velocity_formula(const Scene&, const Observe&);
+ObservableValue measure_terminal_time(const Scene&, const Observe&, const Trajectory&,
+                                      const EventTrace*);
+ObservableValue measure_sag(const Scene&, const Observe&, const Trajectory&, const EventTrace*);
+ObservableValue measure_final_shear(const Scene&, const Observe&, const Trajectory&,
+                                    const EventTrace*);
+ObservableValue measure_final_height(const Scene&, const Observe&, const Trajectory&,
+                                     const EventTrace*);
 
 }  // namespace bb

@@ -32,11 +32,18 @@ ObservableValue post_spin(const Scene& scene, int body, const Trajectory& t) {
 
 }  // namespace
 
-std::optional<ObservableValue> measure_rotation(const Scene& scene, const Observe& observe,
-                                                const Trajectory& trajectory) {
-  if (observe.kind == "final_angle") return final_angle(scene, observe.body, trajectory);
-  if (observe.kind == "post_angular_velocity") return post_spin(scene, observe.body, trajectory);
-  if (observe.kind != "flips") return std::nullopt;
+ObservableValue measure_final_angle(const Scene& scene, const Observe& observe,
+                                    const Trajectory& trajectory, const EventTrace*) {
+  return final_angle(scene, observe.body, trajectory);
+}
+
+ObservableValue measure_post_angular_velocity(const Scene& scene, const Observe& observe,
+                                              const Trajectory& trajectory, const EventTrace*) {
+  return post_spin(scene, observe.body, trajectory);
+}
+
+ObservableValue measure_flips(const Scene& scene, const Observe& observe,
+                              const Trajectory& trajectory, const EventTrace*) {
   const Body& body = scene.bodies[observe.body];
   const Vec3 principal = principal_inertia(body);
   // The middle axis: neither the largest nor the smallest moment, and distinct from both.
@@ -47,12 +54,12 @@ std::optional<ObservableValue> measure_rotation(const Scene& scene, const Observ
   const double gap = 1e-9 * principal.maxCoeff();
   if (low == high || principal[middle] - principal[low] <= gap ||
       principal[high] - principal[middle] <= gap)
-    return ObservableValue{
-        std::nullopt, "does not apply: " + body.name + " has no distinct middle principal axis"};
+    return {std::nullopt,
+            "does not apply: " + body.name + " has no distinct middle principal axis"};
   const BodyState& start = trajectory.states.front()[observe.body];
   const Eigen::Matrix3d r0 = start.orientation.toRotationMatrix();
   const Vec3 momentum = r0 * principal.asDiagonal() * r0.transpose() * start.angular_velocity;
-  if (momentum.norm() == 0.0) return ObservableValue{0.0, ""};
+  if (momentum.norm() == 0.0) return {0.0, ""};
   const Vec3 along = momentum.normalized();
   Vec3 axis = Vec3::Zero();
   axis[middle] = 1.0;
@@ -66,7 +73,7 @@ std::optional<ObservableValue> measure_rotation(const Scene& scene, const Observ
     if (here != 0 && side != 0 && here != side) ++flips;
     if (here != 0) side = here;
   }
-  return ObservableValue{static_cast<double>(flips), ""};
+  return {static_cast<double>(flips), ""};
 }
 
 }  // namespace bb

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/metric_names.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -51,11 +52,11 @@ StepObserver::StepObserver(const Scene& scene)
       bounced_(scene.bodies.size(), false) {
   trace_.bodies.resize(scene.bodies.size());
   for (const Observe& o : scene.observes) {
-    if (o.kind == "period") swinging_.push_back(o.body);
-    if (o.kind == "max_stretch") watch_stretch_ = true;
-    if (o.kind == "fall_time" && scene.ground) falling_.push_back(o.body);
-    const bool stop = o.kind == "stop_time" || o.kind == "stop_distance" || o.kind == "rest_creep";
-    if (stop && std::find(stopping_.begin(), stopping_.end(), o.body) == stopping_.end())
+    if (observable_needs(o.kind, kWatchesSwings)) swinging_.push_back(o.body);
+    if (observable_needs(o.kind, kWatchesStretch)) watch_stretch_ = true;
+    if (observable_needs(o.kind, kWatchesFalls) && scene.ground) falling_.push_back(o.body);
+    if (observable_needs(o.kind, kWatchesStops) &&
+        std::find(stopping_.begin(), stopping_.end(), o.body) == stopping_.end())
       stopping_.push_back(o.body);
   }
   fastest_.assign(stopping_.size(), 0.0);

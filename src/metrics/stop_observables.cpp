@@ -54,22 +54,42 @@ Vec3 sliding_direction(const Scene& scene, int body) {
   return Vec3::UnitX();
 }
 
-std::optional<ObservableValue> measure_stop(const Scene& scene, const Observe& observe,
-                                            const Trajectory& trajectory,
-                                            const EventTrace* reference) {
-  const std::string& kind = observe.kind;
-  const int body = observe.body;
-  if (kind == "final_velocity")
-    return ObservableValue{
-        trajectory.states.back()[body].velocity.dot(sliding_direction(scene, body)), ""};
-  if (kind == "rest_creep") return creep(scene, body, trajectory, reference);
-  if (kind != "stop_time" && kind != "stop_distance") return std::nullopt;
-  if (static_cast<std::size_t>(body) >= trajectory.events.bodies.size())
+ObservableValue measure_final_velocity(const Scene& scene, const Observe& observe,
+                                       const Trajectory& trajectory, const EventTrace*) {
+  return {
+      trajectory.states.back()[observe.body].velocity.dot(sliding_direction(scene, observe.body)),
+      ""};
+}
+
+ObservableValue measure_rest_creep(const Scene& scene, const Observe& observe,
+                                   const Trajectory& trajectory, const EventTrace* reference) {
+  return creep(scene, observe.body, trajectory, reference);
+}
+
+namespace {
+
+/// The observed body's last stop, or the note saying why there is none.
+std::optional<ObservableValue> no_stop(const Observe& observe, const Trajectory& trajectory) {
+  if (static_cast<std::size_t>(observe.body) >= trajectory.events.bodies.size())
     return ObservableValue{std::nullopt, "the run has no event trace"};
-  const BodyEvents& e = trajectory.events.bodies[body];
-  if (!e.stop_time) return ObservableValue{std::nullopt, "never stops in the run"};
-  if (kind == "stop_time") return ObservableValue{*e.stop_time, ""};
-  return ObservableValue{along_ground(scene, e.stop_position - e.motion_start).norm(), ""};
+  if (!trajectory.events.bodies[observe.body].stop_time)
+    return ObservableValue{std::nullopt, "never stops in the run"};
+  return std::nullopt;
+}
+
+}  // namespace
+
+ObservableValue measure_stop_time(const Scene&, const Observe& observe,
+                                  const Trajectory& trajectory, const EventTrace*) {
+  if (auto none = no_stop(observe, trajectory)) return *none;
+  return {*trajectory.events.bodies[observe.body].stop_time, ""};
+}
+
+ObservableValue measure_stop_distance(const Scene& scene, const Observe& observe,
+                                      const Trajectory& trajectory, const EventTrace*) {
+  if (auto none = no_stop(observe, trajectory)) return *none;
+  const BodyEvents& e = trajectory.events.bodies[observe.body];
+  return {along_ground(scene, e.stop_position - e.motion_start).norm(), ""};
 }
 
 }  // namespace bb

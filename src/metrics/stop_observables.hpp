@@ -4,27 +4,30 @@
 
 #include <optional>
 
-#include "metrics/observables.hpp"
+#include "metrics/observable_measure.hpp"
 
 namespace bb {
 
-/// The value of `observe` on `trajectory`, or nullopt when its kind is not one of these:
-/// - stop_time (s, from the start of the run): the end of the body's last motion along the
-///   ground, where its velocity along the ground reached zero or turned back. A motion
-///   begins at the start (a body moving there) or where a body at rest is set moving (a
-///   push, static friction giving way); a body at rest throughout stopped at t = 0; one
-///   whose last motion has not ended never stops in the run;
-/// - stop_distance (m): how far along the ground that last motion took it, from where it
-///   began to the stop;
-/// - rest_creep (m): how far along the ground it moved from the later of the reference's
-///   stop and its own to the end of the run (the seed's crawl); `reference` holds the
-///   reference's events (nullptr: none to measure from); a note when the reference never
-///   stops the body;
-/// - final_velocity (m/s): its velocity at the end along its direction of sliding (its
-///   first push, else downhill, else +x), negative when it ended going back.
-std::optional<ObservableValue> measure_stop(const Scene& scene, const Observe& observe,
-                                            const Trajectory& trajectory,
-                                            const EventTrace* reference);
+/// stop_time (s, from the start of the run): the end of the body's last motion along the
+/// ground, where its velocity along the ground reached zero or turned back. A motion begins
+/// at the start (a body moving there) or where a body at rest is set moving (a push, static
+/// friction giving way); a body at rest throughout stopped at t = 0; one whose last motion
+/// has not ended never stops in the run.
+ObservableValue measure_stop_time(const Scene&, const Observe&, const Trajectory&,
+                                  const EventTrace*);
+/// stop_distance (m): how far along the ground that last motion took it, from where it
+/// began to the stop.
+ObservableValue measure_stop_distance(const Scene&, const Observe&, const Trajectory&,
+                                      const EventTrace*);
+/// rest_creep (m): how far along the ground it moved from the later of the reference's stop
+/// and its own to the end of the run (the seed's crawl); `reference` holds the reference's
+/// events (nullptr: none to measure from); a note when the reference never stops the body.
+ObservableValue measure_rest_creep(const Scene&, const Observe&, const Trajectory&,
+                                   const EventTrace* reference);
+/// final_velocity (m/s): its velocity at the end along its direction of sliding (its first
+/// push, else downhill, else +x), negative when it ended going back.
+ObservableValue measure_final_velocity(const Scene&, const Observe&, const Trajectory&,
+                                       const EventTrace*);
 
 /// The unit direction final_velocity is measured along for `body`: its initial velocity
 /// along the ground, else its first impulse's, else downhill along the ground, else +x.

@@ -5,6 +5,7 @@
 
 #include "contact/contact_pairs.hpp"
 #include "reference/scene_model_state.hpp"
+#include "scene/metric_names.hpp"
 
 namespace bb {
 
@@ -21,8 +22,8 @@ PeakWatch::PeakWatch(const Scene& scene, const std::vector<double>& y0)
     : scene_(scene), penetration_(scene.bodies.size(), 0.0) {
   std::vector<bool> overlap_watched(scene.bodies.size(), false);
   for (const Observe& o : scene.observes) {
-    if (o.kind == "max_stretch") stretch_ = true;
-    if (o.kind == "max_penetration") overlap_watched[o.body] = true;
+    if (observable_needs(o.kind, kWatchesStretch)) stretch_ = true;
+    if (observable_needs(o.kind, kWatchesOverlap)) overlap_watched[o.body] = true;
   }
   if (stretch_)
     for (int k = 0; k < static_cast<int>(scene.springs.size()); ++k)

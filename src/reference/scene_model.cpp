@@ -11,6 +11,7 @@
 #include "reference/gsl_reference.hpp"
 #include "reference/scene_model_state.hpp"
 #include "reference/sliding_modes.hpp"
+#include "scene/metric_names.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -224,11 +225,11 @@ SceneModel::SceneModel(const Scene& scene)
       if (!scene.bodies[i].fixed) sources_.push_back({true, -1, i, {}});
   // Falls are timed exactly, as every backend's are from its steps.
   for (const Observe& o : scene.observes)
-    if (o.kind == "fall_time" && scene.ground)
+    if (observable_needs(o.kind, kWatchesFalls) && scene.ground)
       sources_.push_back({false, -1, o.body, {}, false, true});
   // Swings are timed exactly, as every backend's are from its steps.
   for (const Observe& o : scene.observes)
-    if (o.kind == "period")
+    if (observable_needs(o.kind, kWatchesSwings))
       for (int axis = 0; axis < 3; ++axis) sources_.push_back({false, axis, o.body, {}});
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it
   // down, starts at rest there (a gap of exactly zero is no crossing, so no event would).

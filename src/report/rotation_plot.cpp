@@ -7,6 +7,7 @@
 #include "report/gnuplot.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
+#include "scene/metric_names.hpp"
 
 namespace bb {
 
@@ -51,9 +52,7 @@ std::vector<int> turning_bodies(const Scene& scene) {
     // A body whose turning the case observes: its flips, its spin after a hit, its angle.
     const bool flips =
         std::any_of(scene.observes.begin(), scene.observes.end(), [&](const Observe& o) {
-          return o.body == static_cast<int>(i) &&
-                 (o.kind == "flips" || o.kind == "post_angular_velocity" ||
-                  o.kind == "final_angle");
+          return o.body == static_cast<int>(i) && observable_needs(o.kind, kDrawsRotation);
         });
     const bool hinged = std::any_of(scene.hinges.begin(), scene.hinges.end(),
                                     [&](const Hinge& h) { return h.body == static_cast<int>(i); });

@@ -6,6 +6,7 @@
 #include "report/gnuplot.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
+#include "scene/metric_names.hpp"
 
 namespace bb {
 
@@ -25,8 +26,8 @@ double window_start(const CaseResults& results, int body) {
 std::vector<int> stopping_bodies(const Scene& scene) {
   std::vector<int> out;
   for (const Observe& o : scene.observes) {
-    const bool stop = o.kind == "stop_time" || o.kind == "stop_distance" || o.kind == "rest_creep";
-    if (stop && static_cast<std::size_t>(o.body) < kPlottedBodies &&
+    if (observable_needs(o.kind, kWatchesStops) &&
+        static_cast<std::size_t>(o.body) < kPlottedBodies &&
         std::find(out.begin(), out.end(), o.body) == out.end())
       out.push_back(o.body);
   }

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "metrics/event_observables.hpp"
+#include "metrics/observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
 #include "support/engine_support.hpp"
@@ -47,7 +47,7 @@ TEST_P(BulletContacts, DoubleBounceKeepsMomentumAcrossTheBallsCollision) {
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
   ASSERT_TRUE(run.trajectory.events.first_collision.has_value()) << "the balls never met";
   const Observe momentum{"momentum_change", scene.body_index("big"), 0, 0, ""};
-  const std::optional<ObservableValue> change = measure_event(momentum, run.trajectory.events);
+  const std::optional<ObservableValue> change = measure(scene, momentum, run.trajectory, nullptr);
   ASSERT_TRUE(change && change->value) << (change ? change->note : "");
   // Rounding only: the balls carry about 3 N s; a float build rounds each velocity to ~1e-6.
   const double tolerance = test::single_precision(GetParam()) ? 1e-5 : 1e-9;

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "metrics/event_observables.hpp"
+#include "metrics/observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
 #include "scene/engine_catalogue.hpp"
@@ -33,8 +33,7 @@ std::optional<double> observable(const Scene& scene, const RunRecord& run,
                                  const std::string& kind) {
   for (const Observe& o : scene.observes)
     if (o.kind == kind) {
-      const auto value = measure_event(o, run.trajectory.events);
-      return value ? value->value : std::nullopt;
+      return measure(scene, o, run.trajectory, nullptr).value;
     }
   return std::nullopt;
 }
