@@ -7,7 +7,9 @@
 
 #include "report/backend_style.hpp"
 #include "report/gnuplot.hpp"
+#include "report/motion_frames.hpp"
 #include "report/motion_geometry.hpp"
+#include "report/motion_paint.hpp"
 #include "scene/text.hpp"
 
 namespace bb {
@@ -26,10 +28,6 @@ constexpr double kPanelTitle = 18.0;
 constexpr double kTimeBarHeight = 46.0;
 constexpr double kMinCanvasHeight = 240.0;
 constexpr double kMaxCanvasHeight = 640.0;
-/// Numbers the animated values may hold in all: about 40 % of the size limit.
-constexpr double kNumberBudget = 0.4 * kMotionViewBytes / 6.5;
-/// Frames of an animation: at least, and at most.
-constexpr std::size_t kMinFrames = 20, kMaxFrames = 300;
 /// More moving bodies than this, and each backend gets a panel of its own over the
 /// reference's ghost: an overlay of every backend's grid is unreadable.
 constexpr int kOverlayBodies = 4;
@@ -37,92 +35,10 @@ constexpr int kColumns = 3;
 
 using Springs = std::vector<std::pair<std::size_t, std::size_t>>;
 
-/// Stroke and fill of a run: the reference filled grey under the others, the course
-/// methods in solid lines, the engines dashed; `thick` scales the lines (small panels).
-std::string paint(const std::string& backend, double thick) {
-  const BackendStyle s = backend_style(backend);
-  if (s.kind == LineKind::Reference)
-    return fmt::format(
-        "fill=\"#cfcfcf\" fill-opacity=\"0.85\" stroke=\"#000000\" stroke-width=\"{:.1f}\"",
-        1.5 * thick);
-  return fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\"{}", s.colour, 2.0 * thick,
-                     s.kind == LineKind::Engine
-                         ? fmt::format(" stroke-dasharray=\"{:.0f} {:.0f}\"", 6 * thick, 3 * thick)
-                         : "");
-}
-
-std::string spring_colour(const std::string& backend) {
-  const BackendStyle s = backend_style(backend);
-  return s.kind == LineKind::Reference ? "#555555" : s.colour;
-}
-
-/// Whether the scene's bodies turn, so that a ball gets a mark that shows it.
-bool turns(const Scene& scene) {
-  return scene.features().has(Feature::Rotation);
-}
-
 int moving_bodies(const Scene& scene, const std::vector<int>& drawn) {
   int n = 0;
   for (int b : drawn) n += !scene.bodies[b].fixed;
   return n;
-}
-
-/// How many numbers one frame of one run's bodies costs.
-double numbers_per_frame(const Scene& scene, const std::vector<int>& drawn) {
-  double n = 0.0;
-  for (int b : drawn) {
-    const Body& body = scene.bodies[b];
-    if (body.fixed) continue;
-    n += body.shape == Shape::Box ? (scene.dims == 2 ? 8 : 48) : (turns(scene) ? 6 : 2);
-  }
-  return n;
-}
-
-/// The sample indices drawn as frames: evenly spread, the first and last included.
-std::vector<std::size_t> frame_samples(std::size_t samples, std::size_t frames) {
-  std::vector<std::size_t> out;
-  if (samples == 0) return out;
-  frames = std::clamp<std::size_t>(frames, 2, std::max<std::size_t>(samples, 2));
-  for (std::size_t f = 0; f < frames; ++f) {
-    const std::size_t j = samples == 1 ? 0 : f * (samples - 1) / (frames - 1);
-    if (out.empty() || j != out.back()) out.push_back(j);
-  }
-  return out;
-}
-
-std::string escape_xml(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    if (ch == '&')
-      out += "&amp;";
-    else if (ch == '<')
-      out += "&lt;";
-    else if (ch == '>')
-      out += "&gt;";
-    else if (ch == '"')
-      out += "&quot;";
-    else
-      out += ch;
-  }
-  return out;
-}
-
-std::string run_label(const RunRecord& run) {
-  return escape_xml(run.backend +
-                    (run.status == RunStatus::Ok ? "" : " (" + status_name(run.status) + ")"));
-}
-
-/// A legend entry per run.
-std::string legend_svg(const std::vector<const RunRecord*>& runs, double x, double y) {
-  std::string out = fmt::format(
-      "<text x=\"{}\" y=\"{}\" font-weight=\"bold\">at report_dt</text>\n", num(x), num(y));
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const double row = y + 20.0 * (i + 1);
-    out += fmt::format(
-        "<circle cx=\"{}\" cy=\"{}\" r=\"6\" {}/>\n<text x=\"{}\" y=\"{}\">{}</text>\n", num(x + 7),
-        num(row - 4), paint(runs[i]->backend, 1.0), num(x + 20), num(row), run_label(*runs[i]));
-  }
-  return out;
 }
 
 /// The runs with states at report_dt, the reference first.
@@ -192,7 +108,7 @@ std::string animated_run(const Scene& scene, const RunRecord& run, const std::ve
                          const Springs& springs, double total, double play, double thick) {
   const std::vector<State>& states = run.trajectory.states;
   const std::string timing = fmt::format("dur=\"{:.3f}s\" repeatCount=\"indefinite\"", play);
-  std::string out = "<g " + paint(run.backend, thick) + ">\n";
+  std::string out = "<g " + motion::paint(run.backend, thick) + ">\n";
   // A run that stopped early (it diverged) holds its last state and fades.
   const std::size_t last = states.size() - 1;
   if (last < samples.back())
@@ -208,9 +124,9 @@ std::string animated_run(const Scene& scene, const RunRecord& run, const std::ve
     out += fmt::format(
         "<path fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\" stroke-dasharray=\"none\" "
         "opacity=\"0.6\"><animate attributeName=\"d\" values=\"{}\" {}/></path>\n",
-        spring_colour(run.backend), 0.8 * thick, values, timing);
+        motion::spring_colour(run.backend), 0.8 * thick, values, timing);
   }
-  const bool mark = turns(scene);
+  const bool mark = motion::turns(scene);
   for (std::size_t k = 0; k < drawn.size() && k < states.front().size(); ++k) {
     const Body& body = scene.bodies[drawn[k]];
     if (body.fixed) continue;
@@ -249,16 +165,16 @@ std::string animated_run(const Scene& scene, const RunRecord& run, const std::ve
 std::string still_run(const Scene& scene, const std::string& backend, const State& s,
                       const std::vector<int>& drawn, const Canvas& c, const Springs& springs,
                       double thick) {
-  std::string out = "<g " + paint(backend, thick) + ">\n";
+  std::string out = "<g " + motion::paint(backend, thick) + ">\n";
   if (!springs.empty())
     out += fmt::format(
         "<path d=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.1f}\" "
         "stroke-dasharray=\"none\" opacity=\"0.6\"/>\n",
-        motion::springs_path(scene, s, springs, c), spring_colour(backend), 0.8 * thick);
+        motion::springs_path(scene, s, springs, c), motion::spring_colour(backend), 0.8 * thick);
   for (std::size_t k = 0; k < drawn.size() && k < s.size(); ++k) {
     const Body& body = scene.bodies[drawn[k]];
     if (body.fixed) continue;
-    const motion::Outline o = motion::outline(scene, body, s[k], c, turns(scene));
+    const motion::Outline o = motion::outline(scene, body, s[k], c, motion::turns(scene));
     if (o.circle) {
       out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>\n", num(o.centre.x),
                          num(o.centre.y), num(o.radius));
@@ -299,60 +215,6 @@ std::vector<double> still_instants(const Scene& scene) {
   return {0.0, scene.duration / 3.0, 2.0 * scene.duration / 3.0, scene.duration};
 }
 
-namespace {
-
-/// How many frames the motion view holds, and for how many runs it draws springs.
-struct FrameBudget {
-  std::size_t frames = 0;
-  std::size_t spring_runs = 0;
-};
-
-/// Frames within the size limit; springs for every run if they fit, else for the reference
-/// only, else none.
-FrameBudget frame_budget(const Scene& scene, const std::vector<int>& drawn, std::size_t runs,
-                         std::size_t springs) {
-  const double bodies_each = numbers_per_frame(scene, drawn);
-  const double springs_each = 4.0 * static_cast<double>(springs);
-  const double n_runs = static_cast<double>(runs);
-  std::size_t spring_runs = 0;
-  if ((bodies_each + springs_each) * n_runs * kMinFrames <= kNumberBudget)
-    spring_runs = runs;
-  else if ((bodies_each * n_runs + springs_each) * kMinFrames <= kNumberBudget)
-    spring_runs = 1;
-  const double per_frame = std::max(1.0, bodies_each * n_runs + springs_each * spring_runs);
-  const std::size_t frames = std::clamp<std::size_t>(
-      static_cast<std::size_t>(kNumberBudget / per_frame), kMinFrames, kMaxFrames);
-  return {frames, spring_runs};
-}
-
-/// The time readout at height `bar_y`: a bar that fills over the run, and the time in tenths
-/// of it, over a loop of `play` seconds showing `total` simulated ones.
-std::string time_readout(double bar_y, double total, double play) {
-  std::string svg;
-  svg += fmt::format(
-      "<rect x=\"{0}\" y=\"{1}\" width=\"{2}\" height=\"8\" fill=\"#eeeeee\"/>\n<rect x=\"{0}\" "
-      "y=\"{1}\" width=\"0\" height=\"8\" fill=\"#777777\"><animate attributeName=\"width\" "
-      "values=\"0;{2}\" dur=\"{3:.3f}s\" repeatCount=\"indefinite\"/></rect>\n",
-      num(kMargin), num(bar_y), num(kCanvasWidth), play);
-  for (int tenth = 0; tenth < 10; ++tenth) {
-    const double from = tenth / 10.0, to = (tenth + 1) / 10.0;
-    const std::string values = tenth == 0 ? "1;0" : tenth == 9 ? "0;1" : "0;1;0";
-    const std::string times = tenth == 0   ? fmt::format("0;{:.2f}", to)
-                              : tenth == 9 ? fmt::format("0;{:.2f}", from)
-                                           : fmt::format("0;{:.2f};{:.2f}", from, to);
-    svg += fmt::format(
-        "<text x=\"{}\" y=\"{}\" opacity=\"{}\">t = {:.3g} s<animate attributeName=\"opacity\" "
-        "values=\"{}\" keyTimes=\"{}\" calcMode=\"discrete\" dur=\"{:.3f}s\" "
-        "repeatCount=\"indefinite\"/></text>\n",
-        num(kMargin), num(bar_y + 24.0), tenth == 0 ? 1 : 0, from * total, values, times, play);
-  }
-  svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{:.3g} s</text>\n</svg>\n",
-                     num(kMargin + kCanvasWidth), num(bar_y + 24.0), total);
-  return svg;
-}
-
-}  // namespace
-
 std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn) {
   const Scene& scene = *results.scene;
   const std::vector<const RunRecord*> runs = drawable_runs(results);
@@ -363,10 +225,11 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   const bool multiples = moving_bodies(scene, drawn) > kOverlayBodies;
 
   const Springs all_springs = motion::drawn_springs(scene, drawn);
-  const FrameBudget budget = frame_budget(scene, drawn, runs.size(), all_springs.size());
+  const motion::FrameBudget budget =
+      motion::frame_budget(scene, drawn, runs.size(), all_springs.size());
   const std::size_t frames = budget.frames, spring_runs = budget.spring_runs;
   // The frames are evenly spread over the samples, so the values need no key times.
-  const std::vector<std::size_t> samples = frame_samples(guide.states.size(), frames);
+  const std::vector<std::size_t> samples = motion::frame_samples(guide.states.size(), frames);
   const double total = guide.times[samples.back()] > 0.0 ? guide.times[samples.back()] : 1.0;
   // Real time, but never shorter than 2 s nor longer than 40 s a loop.
   const double play = std::clamp(total, 2.0, 40.0);
@@ -375,17 +238,17 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   const double thick = multiples ? c.width / panels.front().width : 1.0;
   double bottom = 0.0;
   for (std::size_t i = 0; i < panels.size(); ++i) {
-    if (multiples) panels[i].title = run_label(*runs[i]);
+    if (multiples) panels[i].title = motion::run_label(*runs[i]);
     bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
   }
   const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
   const double height = bottom + kTimeBarHeight;
   const std::string speed =
       play == total ? "real time" : fmt::format("{:.2g} x real time", total / play);
-  std::string svg =
-      header(width, height,
-             fmt::format("{}: the motion at report_dt = {} s ({}; {})", escape_xml(scene.name),
-                         format_dt(scene.report_dt), speed, reference_note(runs, multiples)));
+  std::string svg = header(
+      width, height,
+      fmt::format("{}: the motion at report_dt = {} s ({}; {})", motion::escape_xml(scene.name),
+                  format_dt(scene.report_dt), speed, reference_note(runs, multiples)));
   // In small panels, the reference (when it has an answer) is drawn once, under each.
   const bool ghost = runs.front()->backend == "reference";
   const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
@@ -394,7 +257,7 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
     svg += open_panel(panels.front(), c) + backdrop;
     for (std::size_t r = 0; r < runs.size(); ++r)
       svg += animated_run(scene, *runs[r], drawn, samples, c, springs_of(r), total, play, thick);
-    svg += "</svg>\n" + legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
+    svg += "</svg>\n" + motion::legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
   } else {
     if (ghost)
       svg +=
@@ -410,7 +273,7 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
     }
   }
 
-  svg += time_readout(bottom + 12.0, total, play);
+  svg += motion::time_readout(kMargin, kCanvasWidth, bottom + 12.0, total, play);
   return svg;
 }
 
@@ -445,14 +308,15 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
     if (multiples && i % instants.size() == 0)
       row_names +=
           fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
-                      num(kMargin), num(panels[i].y - 4.0), run_label(*runs[row]));
+                      num(kMargin), num(panels[i].y - 4.0), motion::run_label(*runs[row]));
     bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
   }
   const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
-  std::string svg = header(
-      width, bottom + kMargin,
-      fmt::format("{}: the scene at {} instants, report_dt = {} s ({})", escape_xml(scene.name),
-                  instants.size(), format_dt(scene.report_dt), reference_note(runs, multiples)));
+  std::string svg =
+      header(width, bottom + kMargin,
+             fmt::format("{}: the scene at {} instants, report_dt = {} s ({})",
+                         motion::escape_xml(scene.name), instants.size(),
+                         format_dt(scene.report_dt), reference_note(runs, multiples)));
   svg += row_names;
   const bool ghost = multiples && runs.front()->backend == "reference";
   if (ghost) {
@@ -481,7 +345,7 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
     }
     svg += "</svg>\n";
   }
-  if (!multiples) svg += legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
+  if (!multiples) svg += motion::legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
   return svg + "</svg>\n";
 }
 
