@@ -48,7 +48,7 @@ Table case_claims_table(const CaseResults& results) {
   Table t;
   t.headers = {"claim", "course text", "verdicts (numbers at report_dt)"};
   t.right_aligned.assign(t.headers.size(), false);
-  for (const ClaimResult& c : judge_claims(results))
+  for (const ClaimResult& c : results.claims)
     t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim), verdicts_cell(c)});
   return t;
 }
@@ -59,7 +59,7 @@ std::string claims_page(const std::vector<CaseResults>& all) {
   t.right_aligned.assign(t.headers.size(), false);
   int count = 0, own = 0, failing = 0, neither = 0;
   for (const CaseResults& r : all)
-    for (const ClaimResult& c : judge_claims(r)) {
+    for (const ClaimResult& c : r.claims) {
       const ClaimStanding standing = claim_standing(c);
       failing += standing == ClaimStanding::Fails;
       neither += standing == ClaimStanding::Neither;

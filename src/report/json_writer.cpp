@@ -112,7 +112,7 @@ void add_orders(const CaseResults& results, Json& j) {
 /// Each claim's verdict per backend, computed from the runs.
 Json claims_json(const CaseResults& results) {
   Json out = Json::array();
-  for (const ClaimResult& c : judge_claims(results)) {
+  for (const ClaimResult& c : results.claims) {
     Json verdicts = Json::object();
     for (const ClaimVerdict& v : c.verdicts)
       verdicts[v.backend] = {{"verdict", v.verdict},

@@ -26,23 +26,6 @@ std::string spring_colour(const std::string& backend) {
   return s.kind == LineKind::Reference ? "#555555" : s.colour;
 }
 
-std::string escape_xml(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    if (ch == '&')
-      out += "&amp;";
-    else if (ch == '<')
-      out += "&lt;";
-    else if (ch == '>')
-      out += "&gt;";
-    else if (ch == '"')
-      out += "&quot;";
-    else
-      out += ch;
-  }
-  return out;
-}
-
 std::string run_label(const RunRecord& run) {
   return escape_xml(run.backend +
                     (run.status == RunStatus::Ok ? "" : " (" + status_name(run.status) + ")"));

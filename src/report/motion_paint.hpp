@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "report/xml_text.hpp"
 #include "run/results.hpp"
 
 namespace bb::motion {
@@ -15,9 +16,6 @@ std::string paint(const std::string& backend, double thick);
 
 /// The colour of a run's springs.
 std::string spring_colour(const std::string& backend);
-
-/// `s` with &, <, > and " escaped for SVG text and attributes.
-std::string escape_xml(const std::string& s);
 
 /// The run's backend, and its status when it is not ok, for a title or the legend.
 std::string run_label(const RunRecord& run);

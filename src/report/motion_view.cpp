@@ -245,10 +245,10 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   const double height = bottom + kTimeBarHeight;
   const std::string speed =
       play == total ? "real time" : fmt::format("{:.2g} x real time", total / play);
-  std::string svg = header(
-      width, height,
-      fmt::format("{}: the motion at report_dt = {} s ({}; {})", motion::escape_xml(scene.name),
-                  format_dt(scene.report_dt), speed, reference_note(runs, multiples)));
+  std::string svg =
+      header(width, height,
+             fmt::format("{}: the motion at report_dt = {} s ({}; {})", escape_xml(scene.name),
+                         format_dt(scene.report_dt), speed, reference_note(runs, multiples)));
   // In small panels, the reference (when it has an answer) is drawn once, under each.
   const bool ghost = runs.front()->backend == "reference";
   const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
@@ -312,11 +312,10 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
     bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
   }
   const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
-  std::string svg =
-      header(width, bottom + kMargin,
-             fmt::format("{}: the scene at {} instants, report_dt = {} s ({})",
-                         motion::escape_xml(scene.name), instants.size(),
-                         format_dt(scene.report_dt), reference_note(runs, multiples)));
+  std::string svg = header(
+      width, bottom + kMargin,
+      fmt::format("{}: the scene at {} instants, report_dt = {} s ({})", escape_xml(scene.name),
+                  instants.size(), format_dt(scene.report_dt), reference_note(runs, multiples)));
   svg += row_names;
   const bool ghost = multiples && runs.front()->backend == "reference";
   if (ghost) {

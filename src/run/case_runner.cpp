@@ -9,6 +9,7 @@
 #include "run/accuracy_jobs.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
+#include "run/claims.hpp"
 #include "run/gates.hpp"
 #include "run/run_summary.hpp"
 #include "run/sweep_runner.hpp"
@@ -335,6 +336,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   keep_drawn_states(scene, out.reference_run);
 
   out.gates = evaluate_gates(scene, out);
+  out.claims = judge_claims(out);
   if (scene.sweep && options.sweep) out.sweep = run_sweep(scene, registry, options, progress);
   return out;
 }

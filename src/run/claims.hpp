@@ -8,37 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "run/claim_result.hpp"
 #include "run/results.hpp"
 
 namespace bb {
 
-/// What a verdict says, for counting: a claim that holds at every dt judged, at some only,
-/// at none, or that has nothing to judge.
-enum class VerdictKind { Holds, Partial, Fails, NotMeasured };
-
-/// One backend's verdict on a claim.
-struct ClaimVerdict {
-  std::string backend;
-  /// "holds", "fails", "holds for dt <= <X> s", "holds for dt >= <X> s", "holds at dt
-  /// <list> s only", or "not measured (<why>)"; with "; diverged at dt <list> s" where runs
-  /// blew up and the claim does not say what that means (they have no numbers to judge),
-  /// or "; diverged at dt <list> s, counted as holding" ("as failing") where it does.
-  std::string verdict;
-  VerdictKind kind = VerdictKind::NotMeasured;
-  std::vector<double> diverged;  ///< the dts whose runs diverged, largest first
-  bool diverged_judged = false;  ///< the claim's `diverged` made them count
-  /// A known cause of a verdict other than "holds", computed from the scene and the
-  /// backend's settings (claim_causes.hpp); empty when none is known.
-  std::string cause;
-  std::optional<double> left, right;  ///< the two numbers at report_dt (the reference: its own)
-};
-
-struct ClaimResult {
-  const Claim* claim = nullptr;
-  std::vector<ClaimVerdict> verdicts;
-};
-
-/// Every claim of `results.scene` judged on `results`' runs.
+/// Every claim of `results.scene` judged on `results`' runs. run_case does this once, into
+/// CaseResults::claims, which every writer reads.
 std::vector<ClaimResult> judge_claims(const CaseResults& results);
 
 /// Whether the reference gets a verdict on `claim`: where the claim names it, or says "*"

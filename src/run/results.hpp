@@ -10,6 +10,7 @@
 #include "metrics/observables.hpp"
 #include "metrics/order.hpp"
 #include "metrics/trajectory.hpp"
+#include "run/claim_result.hpp"
 #include "scene/backend.hpp"
 
 namespace bb {
@@ -139,6 +140,8 @@ struct CaseResults {
   /// Per backend: the error at or above which its position_max has saturated (m).
   std::map<std::string, double> order_saturation;
   std::vector<GateResult> gates;
+  /// Each [[claim]] of the case with every backend's verdict, judged once after the runs.
+  std::vector<ClaimResult> claims;
   std::vector<StabilityResult> stability;  ///< empty unless a stability search ran
   std::optional<SweepResults> sweep;       ///< when the case has a [[sweep]] and it ran
 };

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "report/markdown_writer.hpp"
+#include "run/claims.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -22,6 +23,7 @@ right = 1.0
 )");
   CaseResults results;
   results.scene = &scene;
+  results.claims = judge_claims(results);
   const std::string page = claims_page({results});
   EXPECT_NE(page.find("the ball spins at \\|v\\| / r"), std::string::npos) << page;
   EXPECT_EQ(page.find("\\\\"), std::string::npos) << page;
@@ -74,6 +76,7 @@ right = 1.0
   run.errors->position_max = 0.5;
   run.observables = {{"final_speed/ball", {euler_speed, ""}, 8.0}};
   results.runs.push_back(run);
+  results.claims = judge_claims(results);
   return results;
 }
 

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "report/claims_page.hpp"
+#include "report/json_writer.hpp"
+#include "report/table.hpp"
 #include "run/case_runner.hpp"
 #include "scene/case_error.hpp"
 #include "support/test_support.hpp"
@@ -346,6 +349,28 @@ right = 1.0
     EXPECT_NE(what.find("inline.toml:"), std::string::npos) << what;
     EXPECT_NE(what.find("final_speed/elephant"), std::string::npos) << what;
   }
+}
+
+// Verdicts are judged once, by the run, into the results; the JSON and the pages print
+// what the results hold rather than judging again.
+TEST(Claims, TheRunJudgesOnceIntoTheResultsAndTheWritersPrintThoseVerdicts) {
+  CaseResults results = judged(R"(
+[[claim]]
+text = "the ball falls slower than it would in a vacuum"
+own = true
+left = "reference:final_speed/ball"
+op = "<"
+right = 19.62
+)");
+  ASSERT_EQ(results.claims.size(), 1u);
+  ASSERT_EQ(results.claims[0].verdicts.size(), 1u);
+  EXPECT_EQ(results.claims[0].verdicts[0].verdict, "holds");
+  EXPECT_EQ(results.claims[0].claim, &results.scene->claims[0]);
+  results.claims[0].verdicts[0].verdict = "as the results say";
+  EXPECT_EQ(results_json(results)["claims"][0]["verdicts"]["reference"]["verdict"],
+            "as the results say");
+  EXPECT_NE(render_markdown(case_claims_table(results)).find("as the results say"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,15 @@
+// The gates of a `check` as JUnit XML, for a CI system's test view: a test suite per case,
+// a test case per gate, a failure with the measured value and the limit it exceeds.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "run/results.hpp"
+
+namespace bb {
+
+/// The JUnit XML of every gate of every case in `all`.
+std::string junit_xml(const std::vector<CaseResults>& all);
+
+}  // namespace bb

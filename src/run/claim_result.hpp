@@ -1,0 +1,39 @@
+// A claim's verdicts as the results keep them: judged once, after the runs
+// (run/claims.hpp), and read by every writer.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace bb {
+
+/// What a verdict says, for counting: a claim that holds at every dt judged, at some only,
+/// at none, or that has nothing to judge.
+enum class VerdictKind { Holds, Partial, Fails, NotMeasured };
+
+/// One backend's verdict on a claim.
+struct ClaimVerdict {
+  std::string backend;
+  /// "holds", "fails", "holds for dt <= <X> s", "holds for dt >= <X> s", "holds at dt
+  /// <list> s only", or "not measured (<why>)"; with "; diverged at dt <list> s" where runs
+  /// blew up and the claim does not say what that means (they have no numbers to judge),
+  /// or "; diverged at dt <list> s, counted as holding" ("as failing") where it does.
+  std::string verdict;
+  VerdictKind kind = VerdictKind::NotMeasured;
+  std::vector<double> diverged;  ///< the dts whose runs diverged, largest first
+  bool diverged_judged = false;  ///< the claim's `diverged` made them count
+  /// A known cause of a verdict other than "holds", computed from the scene and the
+  /// backend's settings (claim_causes.hpp); empty when none is known.
+  std::string cause;
+  std::optional<double> left, right;  ///< the two numbers at report_dt (the reference: its own)
+};
+
+struct ClaimResult {
+  const Claim* claim = nullptr;
+  std::vector<ClaimVerdict> verdicts;
+};
+
+}  // namespace bb
