@@ -26,7 +26,7 @@ inline double engine_friction(const ContactPair& pair) {
 /// touch the ground, "ground_friction_min" and "ground_friction_max": the least and the
 /// greatest coefficient a body's contact with the ground gets (a [[contact]] naming a body
 /// and "ground" may give it its own).
-inline void add_friction_settings(const Scene& scene, Settings& settings) {
+inline void add_friction_settings(const World& scene, Settings& settings) {
   settings.push_back(
       {"friction_rule",
        std::string("one Coulomb coefficient per contact, for sticking and sliding alike: the "

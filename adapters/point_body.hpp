@@ -25,7 +25,7 @@ inline Vec3 engine_inertia(const Body& body) {
 }
 
 /// Adds the "point_body" engine setting when the scene has a non-fixed point body.
-inline void add_point_body_setting(const Scene& scene, Settings& settings) {
+inline void add_point_body_setting(const World& scene, Settings& settings) {
   const bool any = std::any_of(scene.bodies.begin(), scene.bodies.end(),
                                [](const Body& b) { return b.shape == Shape::Point && !b.fixed; });
   // The radius in the text is kPointBodyRadius.

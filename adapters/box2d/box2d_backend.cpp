@@ -29,13 +29,16 @@ constexpr bool kSpringsByHand = false;
 
 class Box2dSimulation : public Simulation {
  public:
-  Box2dSimulation(const Scene& scene, double dt)
+  Box2dSimulation(const World& scene, const EngineTables& engines, double dt)
       : scene_(scene),
+        engines_(engines),
         start_(scene, dt, {kSpringsByHand}),
         dt_(float(dt)),
         world_(to_b2(scene.gravity)) {
-    velocity_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "velocity_iterations"));
-    position_iterations_ = static_cast<int>(engine_setting(scene, "box2d", "position_iterations"));
+    velocity_iterations_ =
+        static_cast<int>(engine_setting(engines, "box2d", "velocity_iterations"));
+    position_iterations_ =
+        static_cast<int>(engine_setting(engines, "box2d", "position_iterations"));
     world_.SetAllowSleeping(false);
     const bool contacts = has_contacts(scene);
     for (const Body& b : scene.bodies) {
@@ -45,17 +48,17 @@ class Box2dSimulation : public Simulation {
       def.angle = float(angle_about_z(b.orientation));
       def.linearVelocity = to_b2(b.velocity);
       def.angularVelocity = float(b.angular_velocity.z());
-      def.linearDamping = float(engine_setting(scene, "box2d", "linear_damping"));
-      def.angularDamping = float(engine_setting(scene, "box2d", "angular_damping"));
+      def.linearDamping = float(engine_setting(engines, "box2d", "linear_damping"));
+      def.angularDamping = float(engine_setting(engines, "box2d", "angular_damping"));
       def.allowSleep = false;
-      def.bullet = contacts && !b.fixed && engine_setting(scene, "box2d", "bullet") != 0.0;
+      def.bullet = contacts && !b.fixed && engine_setting(engines, "box2d", "bullet") != 0.0;
       b2Body* body = world_.CreateBody(&def);
       bodies_.push_back(body);
     }
     // Fixtures only where something can touch; they carry no mass of their own.
     if (contacts)
       contacts_ = std::make_unique<Box2dContacts>(
-          scene, world_, bodies_, float(engine_setting(scene, "box2d", "restitution_threshold")));
+          scene, world_, bodies_, float(engine_setting(engines, "box2d", "restitution_threshold")));
     // Mass and inertia set directly: Box2D's circle would be a disc. A point body gets a
     // small sphere's inertia, as in every engine (point_body.hpp).
     for (std::size_t i = 0; i < bodies_.size(); ++i)
@@ -96,7 +99,7 @@ class Box2dSimulation : public Simulation {
   }
 
   Settings settings() const override {
-    Settings s = engine_key_settings(scene_, "box2d");
+    Settings s = engine_key_settings(engines_, "box2d");
     s.push_back({"precision", std::string("float")});
     s.push_back({"sleeping", false});
     if (contacts_)
@@ -134,7 +137,7 @@ class Box2dSimulation : public Simulation {
   }
 
  private:
-  static bool has_contacts(const Scene& scene) {
+  static bool has_contacts(const World& scene) {
     return scene.ground.has_value() || !scene.contacts.empty();
   }
 
@@ -164,8 +167,9 @@ class Box2dSimulation : public Simulation {
     body->ApplyLinearImpulse(to_b2(imp.impulse), point, true);
   }
 
-  const Scene& scene_;
-  StepStart start_;  ///< impulses due and the force model's loads
+  const World& scene_;
+  const EngineTables& engines_;  ///< the case's [engines.box2d] table among the others
+  StepStart start_;              ///< impulses due and the force model's loads
   float dt_;
   int velocity_iterations_ = 8;
   int position_iterations_ = 3;
@@ -199,8 +203,9 @@ class Box2dBackend : public Backend {
     if (package == header) return {"box2d", package};
     return {"box2d", package + " (its b2_version says " + header + ")"};
   }
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
-    return std::make_unique<Box2dSimulation>(scene, dt);
+  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
+                                        double dt) const override {
+    return std::make_unique<Box2dSimulation>(scene, *settings.engines, dt);
   }
 };
 

@@ -32,7 +32,7 @@ b2FixtureDef fixture_def(const b2Shape* shape, std::size_t slot, float restituti
 
 }  // namespace
 
-Box2dContacts::Box2dContacts(const Scene& scene, b2World& world, const std::vector<b2Body*>& bodies,
+Box2dContacts::Box2dContacts(const World& scene, b2World& world, const std::vector<b2Body*>& bodies,
                              float restitution_threshold)
     : pairs_(contact_pairs(scene)),
       restitution_threshold_(restitution_threshold),
@@ -107,7 +107,7 @@ void Box2dContacts::PreSolve(b2Contact* contact, const b2Manifold* old_manifold)
   if (approach > 0.0f && approach < restitution_threshold_) ++bounces_below_threshold_;
 }
 
-void add_contact_settings(const Scene& scene, const Box2dContacts& contacts, Settings& s) {
+void add_contact_settings(const World& scene, const Box2dContacts& contacts, Settings& s) {
   s.push_back(
       {"collision", std::string("Box2D's own detection: a b2CircleShape per sphere and a "
                                 "b2PolygonShape box per box that some pair lists; fixed bodies "

@@ -24,7 +24,7 @@ class Box2dContacts : public b2ContactFilter, public b2ContactListener {
  public:
   /// Adds the fixtures (and the ground body) to `world`; `bodies` are the scene's bodies
   /// in order. Fixtures carry no mass: the caller sets mass and inertia afterwards.
-  Box2dContacts(const Scene& scene, b2World& world, const std::vector<b2Body*>& bodies,
+  Box2dContacts(const World& scene, b2World& world, const std::vector<b2Body*>& bodies,
                 float restitution_threshold);
 
   /// Only pairs that contact_pairs() lists may collide.
@@ -51,6 +51,6 @@ class Box2dContacts : public b2ContactFilter, public b2ContactListener {
 
 /// The engine_settings entries that describe how contacts work in Box2D and in this adapter,
 /// with what `contacts` saw during the run.
-void add_contact_settings(const Scene& scene, const Box2dContacts& contacts, Settings& settings);
+void add_contact_settings(const World& scene, const Box2dContacts& contacts, Settings& settings);
 
 }  // namespace bb

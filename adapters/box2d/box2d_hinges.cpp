@@ -6,7 +6,7 @@
 
 namespace bb {
 
-void make_box2d_hinges(const Scene& scene, b2World& world, const std::vector<b2Body*>& bodies) {
+void make_box2d_hinges(const World& scene, b2World& world, const std::vector<b2Body*>& bodies) {
   if (scene.hinges.empty()) return;
   // The world's side of every hinge: a static body at the origin, without fixtures.
   b2BodyDef ground_def;

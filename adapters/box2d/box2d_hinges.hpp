@@ -12,7 +12,7 @@
 namespace bb {
 
 /// Builds the scene's hinges in `world` (which owns the joints and the ground body).
-void make_box2d_hinges(const Scene& scene, b2World& world, const std::vector<b2Body*>& bodies);
+void make_box2d_hinges(const World& scene, b2World& world, const std::vector<b2Body*>& bodies);
 
 /// How make_box2d_hinges builds them, for engine_settings.
 void add_box2d_hinge_settings(Settings& out);

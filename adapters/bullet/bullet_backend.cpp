@@ -52,12 +52,12 @@ double inner_radius(const Body& b) {
 
 class BulletSimulation : public Simulation {
  public:
-  BulletSimulation(const Scene& scene, double dt)
-      : scene_(scene), dt_(dt), contacts_(scene_has_contacts(scene)) {
+  BulletSimulation(const World& scene, const EngineTables& engines, double dt)
+      : scene_(scene), engines_(engines), dt_(dt), contacts_(scene_has_contacts(scene)) {
     world_.setGravity(to_bt(scene.gravity));
     dispatcher_.setDispatcherFlags(
         btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
-    configure_solver(scene, world_.getSolverInfo());
+    configure_solver(engines, world_.getSolverInfo());
     // Set whatever its value (bullet_contacts.hpp). The dispatcher, built already, holds
     // the configuration's create functions, which this call changes in place.
     configuration_.setPlaneConvexMultipointIterations(multipoint_.iterations,
@@ -72,7 +72,7 @@ class BulletSimulation : public Simulation {
       add_body(scene.bodies[i], static_cast<int>(i));
     if (scene.ground) add_ground(*scene.ground);
     if (!kSpringsByHand && !scene.springs.empty())
-      joints_ = std::make_unique<BulletSpringJoints>(scene, dt, bodies_, world_);
+      joints_ = std::make_unique<BulletSpringJoints>(scene, engines, dt, bodies_, world_);
     if (!scene.hinges.empty())
       hinges_ = std::make_unique<BulletHingeJoints>(scene, bodies_, world_);
   }
@@ -114,7 +114,7 @@ class BulletSimulation : public Simulation {
   }
 
   Settings settings() const override {
-    Settings s = engine_key_settings(scene_, "bullet");
+    Settings s = engine_key_settings(engines_, "bullet");
     s.push_back(
         {"precision", sizeof(btScalar) == 8 ? std::string("double") : std::string("float")});
     s.push_back({"step", std::string("stepSimulation(dt, 1, dt): one fixed substep")});
@@ -128,13 +128,14 @@ class BulletSimulation : public Simulation {
     if (kSpringsByHand && !scene_.springs.empty())
       s.push_back({"springs", std::string(kSpringsByHandMethod)});
     if (contacts_)
-      add_contact_settings(scene_, world_.getSolverInfo(), shape_figures_, multipoint_, s);
+      add_contact_settings(scene_, engines_, world_.getSolverInfo(), shape_figures_, multipoint_,
+                           s);
     else
       s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
     if (!scene_.impulses.empty()) s.push_back({"impulse", std::string(kImpulseMethod)});
     add_point_body_setting(scene_, s);
     s.push_back({"max_angular_speed", std::string("pi/2 rad per step (built into btRigidBody)")});
-    add_bullet_gyroscopic_setting(scene_, s);
+    add_bullet_gyroscopic_setting(engines_, s);
     s.push_back({"plane_2d", std::string(scene_.dims == 2 ? kPlane2d : "none (3D scene)")});
     return s;
   }
@@ -151,13 +152,13 @@ class BulletSimulation : public Simulation {
     info.m_startWorldTransform.setRotation(
         btQuaternion(btScalar(b.orientation.x()), btScalar(b.orientation.y()),
                      btScalar(b.orientation.z()), btScalar(b.orientation.w())));
-    info.m_linearDamping = btScalar(engine_setting(scene_, "bullet", "linear_damping"));
-    info.m_angularDamping = btScalar(engine_setting(scene_, "bullet", "angular_damping"));
+    info.m_linearDamping = btScalar(engine_setting(engines_, "bullet", "linear_damping"));
+    info.m_angularDamping = btScalar(engine_setting(engines_, "bullet", "angular_damping"));
     auto body = std::make_unique<btRigidBody>(info);
     if (!b.fixed) {
       body->setLinearVelocity(to_bt(b.velocity));
       body->setAngularVelocity(to_bt(b.angular_velocity));
-      set_bullet_gyroscopic(scene_, *body);
+      set_bullet_gyroscopic(engines_, *body);
       // A 2D scene stays in the x-y plane, as a 2D game sets Bullet up.
       if (scene_.dims == 2) {
         body->setLinearFactor(btVector3(1, 1, 0));
@@ -175,7 +176,7 @@ class BulletSimulation : public Simulation {
         body->setRestitution(btScalar(ground->restitution));
         body->setFriction(btScalar(engine_friction(*ground)));
       }
-      if (engine_setting(scene_, "bullet", "ccd") != 0.0 && !b.fixed) {
+      if (engine_setting(engines_, "bullet", "ccd") != 0.0 && !b.fixed) {
         body->setCcdMotionThreshold(btScalar(inner_radius(b)));
         body->setCcdSweptSphereRadius(btScalar(inner_radius(b)));
       }
@@ -220,7 +221,8 @@ class BulletSimulation : public Simulation {
     body.applyImpulse(to_bt(imp.impulse), arm);
   }
 
-  const Scene& scene_;
+  const World& scene_;
+  const EngineTables& engines_;  ///< the case's [engines.bullet] table among the others
   double dt_;
   bool contacts_;
   PlaneMultipoint multipoint_ = plane_multipoint(scene_);
@@ -255,8 +257,9 @@ class BulletBackend : public Backend {
     const int v = btGetVersion();
     return {"bullet", std::to_string(v / 100) + "." + std::to_string(v % 100)};
   }
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
-    return std::make_unique<BulletSimulation>(scene, dt);
+  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
+                                        double dt) const override {
+    return std::make_unique<BulletSimulation>(scene, *settings.engines, dt);
   }
 };
 

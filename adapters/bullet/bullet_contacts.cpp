@@ -27,11 +27,11 @@ bool set_pair_material(btManifoldPoint& point, const btCollisionObjectWrapper* w
 
 }  // namespace
 
-bool scene_has_contacts(const Scene& scene) {
+bool scene_has_contacts(const World& scene) {
   return scene.ground.has_value() || !scene.contacts.empty();
 }
 
-PairTable::PairTable(const Scene& scene)
+PairTable::PairTable(const World& scene)
     : count_(static_cast<int>(scene.bodies.size()) + 1),
       cells_(static_cast<std::size_t>(count_ * count_)) {
   for (const ContactPair& pair : contact_pairs(scene)) {
@@ -89,7 +89,7 @@ std::unique_ptr<btCollisionShape> make_ground_shape(const Ground& ground) {
                                               btScalar(ground.normal.dot(ground.point)));
 }
 
-PlaneMultipoint plane_multipoint(const Scene& scene) {
+PlaneMultipoint plane_multipoint(const World& scene) {
   const bool box_on_ground =
       scene.ground && std::any_of(scene.bodies.begin(), scene.bodies.end(),
                                   [](const Body& b) { return b.shape == Shape::Box && !b.fixed; });

@@ -14,7 +14,7 @@
 namespace bb {
 
 /// Whether the scene has anything to touch: a ground or a [[contact]].
-bool scene_has_contacts(const Scene& scene);
+bool scene_has_contacts(const World& scene);
 
 /// How one pair of collision objects touches.
 struct PairMaterial {
@@ -27,7 +27,7 @@ struct PairMaterial {
 /// their user index: the scene's bodies in order, then the ground. Point bodies touch nothing.
 class PairTable {
  public:
-  explicit PairTable(const Scene& scene);
+  explicit PairTable(const World& scene);
   const PairMaterial& at(int a, int b) const;
   int ground_index() const { return count_ - 1; }
 
@@ -80,6 +80,6 @@ struct PlaneMultipoint {
 /// tilts 60 degrees apart always find all four corners of a face (each corner is deepest
 /// over a 90 degree sector of tilt directions), whatever the box's yaw: 4 points every
 /// step, no sinking, 2.5068 m, as Box2D and ODE.
-PlaneMultipoint plane_multipoint(const Scene& scene);
+PlaneMultipoint plane_multipoint(const World& scene);
 
 }  // namespace bb

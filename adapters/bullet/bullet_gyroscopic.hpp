@@ -20,21 +20,21 @@ inline constexpr int kBulletGyroscopicFlags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICI
                                               BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
 
 /// Whether the case keeps the gyroscopic term (the key gyroscopic_term, on by default).
-inline bool bullet_gyroscopic(const Scene& scene) {
-  return engine_setting(scene, "bullet", "gyroscopic_term") != 0.0;
+inline bool bullet_gyroscopic(const EngineTables& engines) {
+  return engine_setting(engines, "bullet", "gyroscopic_term") != 0.0;
 }
 
 /// Sets `body`'s gyroscopic flag from the case, leaving its other flags as they are.
-inline void set_bullet_gyroscopic(const Scene& scene, btRigidBody& body) {
-  const int chosen = bullet_gyroscopic(scene) ? BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY : 0;
+inline void set_bullet_gyroscopic(const EngineTables& engines, btRigidBody& body) {
+  const int chosen = bullet_gyroscopic(engines) ? BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY : 0;
   body.setFlags((body.getFlags() & ~kBulletGyroscopicFlags) | chosen);
 }
 
 /// Appends "gyroscopic": the flag set on every moving body and what it does.
-inline void add_bullet_gyroscopic_setting(const Scene& scene, Settings& settings) {
+inline void add_bullet_gyroscopic_setting(const EngineTables& engines, Settings& settings) {
   settings.push_back(
       {"gyroscopic",
-       bullet_gyroscopic(scene)
+       bullet_gyroscopic(engines)
            ? std::string(
                  "BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY on every moving body (Bullet's "
                  "default, set explicitly; EXPLICIT and IMPLICIT_WORLD off): before the solve, "

@@ -6,7 +6,7 @@
 
 namespace bb {
 
-BulletHingeJoints::BulletHingeJoints(const Scene& scene,
+BulletHingeJoints::BulletHingeJoints(const World& scene,
                                      const std::vector<std::unique_ptr<btRigidBody>>& bodies,
                                      btDynamicsWorld& world)
     : world_(world) {

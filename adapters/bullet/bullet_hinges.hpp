@@ -15,7 +15,7 @@ namespace bb {
 /// The scene's hinges as constraints in `world`, removed again on destruction.
 class BulletHingeJoints {
  public:
-  BulletHingeJoints(const Scene& scene, const std::vector<std::unique_ptr<btRigidBody>>& bodies,
+  BulletHingeJoints(const World& scene, const std::vector<std::unique_ptr<btRigidBody>>& bodies,
                     btDynamicsWorld& world);
   ~BulletHingeJoints();
   BulletHingeJoints(const BulletHingeJoints&) = delete;

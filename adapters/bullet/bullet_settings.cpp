@@ -10,8 +10,8 @@ namespace bb {
 
 namespace {
 
-double key(const Scene& scene, const char* name) {
-  return engine_setting(scene, "bullet", name);
+double key(const EngineTables& engines, const char* name) {
+  return engine_setting(engines, "bullet", name);
 }
 
 /// Appends `<name>_min` and `<name>_max` of `values` (0 when there are none).
@@ -23,14 +23,14 @@ void add_range(const std::string& name, const std::vector<double>& values, Setti
 
 }  // namespace
 
-void configure_solver(const Scene& scene, btContactSolverInfo& info) {
-  info.m_numIterations = static_cast<int>(key(scene, "solver_iterations"));
-  info.m_erp = btScalar(key(scene, "erp"));
-  info.m_erp2 = btScalar(key(scene, "contact_erp"));
-  info.m_splitImpulse = key(scene, "split_impulse") != 0.0;
-  info.m_splitImpulsePenetrationThreshold = -btScalar(key(scene, "split_impulse_depth"));
-  info.m_restitutionVelocityThreshold = btScalar(key(scene, "restitution_velocity_threshold"));
-  if (key(scene, "warm_starting") != 0.0)
+void configure_solver(const EngineTables& engines, btContactSolverInfo& info) {
+  info.m_numIterations = static_cast<int>(key(engines, "solver_iterations"));
+  info.m_erp = btScalar(key(engines, "erp"));
+  info.m_erp2 = btScalar(key(engines, "contact_erp"));
+  info.m_splitImpulse = key(engines, "split_impulse") != 0.0;
+  info.m_splitImpulsePenetrationThreshold = -btScalar(key(engines, "split_impulse_depth"));
+  info.m_restitutionVelocityThreshold = btScalar(key(engines, "restitution_velocity_threshold"));
+  if (key(engines, "warm_starting") != 0.0)
     info.m_solverMode |= SOLVER_USE_WARMSTARTING;
   else
     info.m_solverMode &= ~SOLVER_USE_WARMSTARTING;
@@ -47,9 +47,9 @@ void configure_solver(const Scene& scene, btContactSolverInfo& info) {
   info.m_globalCfm = 0;
 }
 
-void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
-                          const ShapeFigures& shapes, const PlaneMultipoint& multipoint,
-                          Settings& out) {
+void add_contact_settings(const World& scene, const EngineTables& engines,
+                          const btContactSolverInfo& info, const ShapeFigures& shapes,
+                          const PlaneMultipoint& multipoint, Settings& out) {
   using S = std::string;
   out.push_back(
       {"collision", S("Bullet's own detection: btSphereShape, btBoxShape, btStaticPlaneShape for "
@@ -114,7 +114,7 @@ void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
   out.push_back({"warm_starting_factor", double(info.m_warmstartingFactor)});
   out.push_back({"linear_slop", double(info.m_linearSlop)});
   out.push_back({"global_cfm", double(info.m_globalCfm)});
-  if (engine_setting(scene, "bullet", "ccd") != 0.0)
+  if (engine_setting(engines, "bullet", "ccd") != 0.0)
     out.push_back(
         {"ccd_contacts", S("a CCD contact (createPredictiveContacts) gets restitution 0 and the "
                            "product of the frictions")});

@@ -18,7 +18,7 @@ inline constexpr const char* kImpulseMethod =
     "that starts at its time";
 
 /// Sets every solver parameter that changes contacts, from the keys or explicitly.
-void configure_solver(const Scene& scene, btContactSolverInfo& info);
+void configure_solver(const EngineTables& engines, btContactSolverInfo& info);
 
 /// What the scene's collision shapes carry, one entry per shape, metres.
 struct ShapeFigures {
@@ -28,8 +28,8 @@ struct ShapeFigures {
 };
 
 /// Appends the contact and friction rules and the values in effect.
-void add_contact_settings(const Scene& scene, const btContactSolverInfo& info,
-                          const ShapeFigures& shapes, const PlaneMultipoint& multipoint,
-                          Settings& out);
+void add_contact_settings(const World& scene, const EngineTables& engines,
+                          const btContactSolverInfo& info, const ShapeFigures& shapes,
+                          const PlaneMultipoint& multipoint, Settings& out);
 
 }  // namespace bb

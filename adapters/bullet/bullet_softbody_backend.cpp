@@ -47,7 +47,8 @@ constexpr const char* kDampingNote =
 
 class SoftBodySimulation : public Simulation {
  public:
-  SoftBodySimulation(const Scene& scene, double dt) : scene_(scene), dt_(dt) {
+  SoftBodySimulation(const World& scene, const EngineTables& engines, double dt)
+      : scene_(scene), engines_(engines), dt_(dt) {
     world_.setGravity(to_bt(scene.gravity));
     // The soft body takes gravity from its world info, not from the world.
     world_.getWorldInfo().m_gravity = to_bt(scene.gravity);
@@ -91,7 +92,7 @@ class SoftBodySimulation : public Simulation {
 
   Settings settings() const override {
     using S = std::string;
-    Settings s = engine_key_settings(scene_, "bullet");
+    Settings s = engine_key_settings(engines_, "bullet");
     s.push_back({"precision", sizeof(btScalar) == 8 ? S("double") : S("float")});
     s.push_back({"step", S("btSoftRigidDynamicsWorld::stepSimulation(dt, 1, dt): one fixed "
                            "substep")});
@@ -146,7 +147,8 @@ class SoftBodySimulation : public Simulation {
     body_->m_bUpdateRtCst = false;
   }
 
-  const Scene& scene_;
+  const World& scene_;
+  const EngineTables& engines_;  ///< the case's [engines.bullet] table among the others
   double dt_;
   btSoftBodyRigidBodyCollisionConfiguration configuration_;
   btCollisionDispatcher dispatcher_{&configuration_};
@@ -170,8 +172,9 @@ class SoftBodyBackend : public Backend {
     const int v = btGetVersion();
     return {"bullet", std::to_string(v / 100) + "." + std::to_string(v % 100)};
   }
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
-    return std::make_unique<SoftBodySimulation>(scene, dt);
+  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
+                                        double dt) const override {
+    return std::make_unique<SoftBodySimulation>(scene, *settings.engines, dt);
   }
 };
 

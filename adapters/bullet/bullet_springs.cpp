@@ -46,11 +46,11 @@ SpringRow bullet_spring_row(double stiffness, double damping, double mass_a, dou
   return row;
 }
 
-BulletSpringJoints::BulletSpringJoints(const Scene& scene, double dt,
+BulletSpringJoints::BulletSpringJoints(const World& scene, const EngineTables& engines, double dt,
                                        const std::vector<std::unique_ptr<btRigidBody>>& bodies,
                                        btDynamicsWorld& world)
     : world_(world),
-      limit_if_needed_(engine_setting(scene, "bullet", "spring_limit_if_needed") != 0.0) {
+      limit_if_needed_(engine_setting(engines, "bullet", "spring_limit_if_needed") != 0.0) {
   for (const Spring& s : scene.springs) {
     const Body& a = scene.bodies[static_cast<std::size_t>(s.body_a)];
     const Body& b = scene.bodies[static_cast<std::size_t>(s.body_b)];

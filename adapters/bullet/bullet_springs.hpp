@@ -33,7 +33,7 @@ SpringRow bullet_spring_row(double stiffness, double damping, double mass_a, dou
 /// The scene's springs as constraints in `world`, removed again on destruction.
 class BulletSpringJoints {
  public:
-  BulletSpringJoints(const Scene& scene, double dt,
+  BulletSpringJoints(const World& scene, const EngineTables& engines, double dt,
                      const std::vector<std::unique_ptr<btRigidBody>>& bodies,
                      btDynamicsWorld& world);
   ~BulletSpringJoints();

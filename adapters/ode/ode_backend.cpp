@@ -67,7 +67,7 @@ constexpr const char* kOdePlane2d =
     "cube of the rows)";
 
 /// Whether body `index` of `scene` turns on a hinge.
-bool hinged(const Scene& scene, std::size_t index) {
+bool hinged(const World& scene, std::size_t index) {
   for (const Hinge& h : scene.hinges)
     if (static_cast<std::size_t>(h.body) == index) return true;
   return false;
@@ -85,8 +85,9 @@ constexpr bool kSpringsByHand = false;
 
 class OdeSimulation : public Simulation {
  public:
-  OdeSimulation(const Scene& scene, double dt)
+  OdeSimulation(const World& scene, const EngineTables& engines, double dt)
       : scene_(scene),
+        engines_(engines),
         dt_(dt),
         start_(scene, dt, {kSpringsByHand}),
         world_(dWorldCreate()),
@@ -95,15 +96,15 @@ class OdeSimulation : public Simulation {
     // threads each need their own.
     dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_),
                                          threading_);
-    quick_step_ = engine_setting(scene, "ode", "quick_step") != 0.0;
-    gyroscopic_ = engine_setting(scene, "ode", "gyroscopic_term") != 0.0;
+    quick_step_ = engine_setting(engines, "ode", "quick_step") != 0.0;
+    gyroscopic_ = engine_setting(engines, "ode", "gyroscopic_term") != 0.0;
     dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), scene.gravity.z());
-    dWorldSetERP(world_, engine_setting(scene, "ode", "erp"));
-    dWorldSetCFM(world_, engine_setting(scene, "ode", "cfm"));
+    dWorldSetERP(world_, engine_setting(engines, "ode", "erp"));
+    dWorldSetCFM(world_, engine_setting(engines, "ode", "cfm"));
     dWorldSetQuickStepNumIterations(
-        world_, static_cast<int>(engine_setting(scene, "ode", "quick_step_iterations")));
-    dWorldSetLinearDamping(world_, engine_setting(scene, "ode", "linear_damping"));
-    dWorldSetAngularDamping(world_, engine_setting(scene, "ode", "angular_damping"));
+        world_, static_cast<int>(engine_setting(engines, "ode", "quick_step_iterations")));
+    dWorldSetLinearDamping(world_, engine_setting(engines, "ode", "linear_damping"));
+    dWorldSetAngularDamping(world_, engine_setting(engines, "ode", "angular_damping"));
     dWorldSetAutoDisableFlag(world_, 0);
     for (const Body& b : scene.bodies) {
       // No contacts in the scene: no space, no geoms, only bodies.
@@ -133,9 +134,9 @@ class OdeSimulation : public Simulation {
     }
     // Contacts: ODE's own geoms and detection, only when the scene has something to touch.
     if (scene_has_contacts(scene)) {
-      dWorldSetContactSurfaceLayer(world_, engine_setting(scene, "ode", "contact_surface_layer"));
+      dWorldSetContactSurfaceLayer(world_, engine_setting(engines, "ode", "contact_surface_layer"));
       contacts_ = std::make_unique<OdeContacts>(scene, world_, bodies_,
-                                                engine_setting(scene, "ode", "bounce_vel"));
+                                                engine_setting(engines, "ode", "bounce_vel"));
     }
     if (!kSpringsByHand) make_spring_joints();
     make_ode_hinges(scene, world_, bodies_);
@@ -182,7 +183,7 @@ class OdeSimulation : public Simulation {
   }
 
   Settings settings() const override {
-    Settings s = engine_key_settings(scene_, "ode");
+    Settings s = engine_key_settings(engines_, "ode");
     s.push_back({"precision", std::string(sizeof(dReal) == 8 ? "double" : "float")});
     s.push_back({"auto_disable", false});
     s.push_back({"gyroscopic", std::string(gyroscopic_ ? kOdeGyroscopicOn : kOdeGyroscopicOff)});
@@ -262,7 +263,8 @@ class OdeSimulation : public Simulation {
   }
 
   std::vector<dBodyID> planar_;  ///< moving, unhinged bodies of a 2D scene
-  const Scene& scene_;
+  const World& scene_;
+  const EngineTables& engines_;  ///< the case's [engines.ode] table among the others
   dReal dt_;
   StepStart start_;  ///< impulses due and the force model's loads
   bool quick_step_ = false;
@@ -328,7 +330,8 @@ class OdeBackend : public Backend {
   std::pair<std::string, std::string> library_version() const override {
     return {"ode", BB_ODE_VERSION};
   }
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
+  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
+                                        double dt) const override {
     static std::once_flag initialised;
     std::call_once(initialised, [] {
       dInitODE2(0);
@@ -338,7 +341,7 @@ class OdeBackend : public Backend {
     });
     // ODE keeps per-thread data; each thread that steps a world must allocate it.
     dAllocateODEDataForThread(dAllocateMaskAll);
-    return std::make_unique<OdeSimulation>(scene, dt);
+    return std::make_unique<OdeSimulation>(scene, *settings.engines, dt);
   }
 };
 

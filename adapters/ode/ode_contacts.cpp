@@ -19,11 +19,11 @@ int index_of(dGeomID geom) {
 
 }  // namespace
 
-bool scene_has_contacts(const Scene& scene) {
+bool scene_has_contacts(const World& scene) {
   return scene.ground.has_value() || !scene.contacts.empty();
 }
 
-OdeContacts::OdeContacts(const Scene& scene, dWorldID world, const std::vector<dBodyID>& bodies,
+OdeContacts::OdeContacts(const World& scene, dWorldID world, const std::vector<dBodyID>& bodies,
                          dReal bounce_vel)
     : world_(world),
       space_(dSimpleSpaceCreate(nullptr)),

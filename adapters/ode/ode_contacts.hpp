@@ -13,7 +13,7 @@
 namespace bb {
 
 /// Whether the scene has anything to touch: a ground or a [[contact]].
-bool scene_has_contacts(const Scene& scene);
+bool scene_has_contacts(const World& scene);
 
 /// Most contact points dCollide is asked for per pair of geoms.
 inline constexpr int kOdeMaxContactsPerPair = 4;
@@ -47,7 +47,7 @@ inline constexpr const char* kOdeFrictionModel =
 class OdeContacts {
  public:
   /// `bodies` are the scene's bodies in order; `bounce_vel` is ODE's bouncing threshold.
-  OdeContacts(const Scene& scene, dWorldID world, const std::vector<dBodyID>& bodies,
+  OdeContacts(const World& scene, dWorldID world, const std::vector<dBodyID>& bodies,
               dReal bounce_vel);
   ~OdeContacts();
   OdeContacts(const OdeContacts&) = delete;

@@ -4,7 +4,7 @@
 
 namespace bb {
 
-void make_ode_hinges(const Scene& scene, dWorldID world, const std::vector<dBodyID>& bodies) {
+void make_ode_hinges(const World& scene, dWorldID world, const std::vector<dBodyID>& bodies) {
   for (const Hinge& h : scene.hinges) {
     if (scene.bodies[static_cast<std::size_t>(h.body)].fixed) continue;
     dJointID joint = dJointCreateHinge(world, nullptr);

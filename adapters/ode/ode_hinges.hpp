@@ -12,7 +12,7 @@
 namespace bb {
 
 /// Builds the scene's hinges in `world` (which owns and destroys the joints).
-void make_ode_hinges(const Scene& scene, dWorldID world, const std::vector<dBodyID>& bodies);
+void make_ode_hinges(const World& scene, dWorldID world, const std::vector<dBodyID>& bodies);
 
 /// How make_ode_hinges builds them, for engine_settings.
 void add_ode_hinge_settings(dWorldID world, Settings& out);

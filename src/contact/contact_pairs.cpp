@@ -10,7 +10,7 @@ double radius(const Body& b) {
 
 }  // namespace
 
-Proximity measure(const Scene& scene, const ContactPair& pair, const Eigen::Vector3d& xa,
+Proximity measure(const World& scene, const ContactPair& pair, const Eigen::Vector3d& xa,
                   const Eigen::Vector3d& xb, const Eigen::Quaterniond& qb) {
   const Body& a = scene.bodies[pair.a];
   if (pair.ground() && a.shape == Shape::Box)

@@ -11,7 +11,7 @@ namespace bb::contact {
 /// against the ground, where there is no b, `qb` is a's orientation. Spheres, points
 /// (radius 0) and boxes against the plane; spheres against spheres and boxes (a is a box
 /// only against the ground).
-Proximity measure(const Scene& scene, const ContactPair& pair, const Eigen::Vector3d& xa,
+Proximity measure(const World& scene, const ContactPair& pair, const Eigen::Vector3d& xa,
                   const Eigen::Vector3d& xb, const Eigen::Quaterniond& qb);
 
 }  // namespace bb::contact

@@ -18,7 +18,7 @@ namespace bb {
 namespace {
 
 /// Per body: on a [[hinge]].
-std::vector<char> hinged_bodies(const Scene& scene) {
+std::vector<char> hinged_bodies(const World& scene) {
   std::vector<char> out(scene.bodies.size(), 0);
   for (const Hinge& h : scene.hinges) out[h.body] = 1;
   return out;
@@ -26,7 +26,7 @@ std::vector<char> hinged_bodies(const Scene& scene) {
 
 class CourseSimulation : public Simulation {
  public:
-  CourseSimulation(const Scene& scene, double dt, const CourseVariant& variant)
+  CourseSimulation(const World& scene, double dt, const CourseVariant& variant)
       : scene_(scene),
         dt_(dt),
         phases_{course::integrator(variant.integrator), course::ground_rule(variant.ground),
@@ -213,7 +213,7 @@ class CourseSimulation : public Simulation {
     spins_ = spins_ || omega_[i].norm() > 0.0;
   }
 
-  const Scene& scene_;
+  const World& scene_;
   double dt_;
   course::Phases phases_;
   course::ContactPhases contacts_;
@@ -249,7 +249,8 @@ FeatureSet CourseBackend::supports() const {
                                              Feature::Boxes,         Feature::Hinge};
 }
 
-std::unique_ptr<Simulation> CourseBackend::start(const Scene& scene, double dt) const {
+std::unique_ptr<Simulation> CourseBackend::start_run(const World& scene, const BackendSettings&,
+                                                     double dt) const {
   return std::make_unique<CourseSimulation>(scene, dt, variant_);
 }
 

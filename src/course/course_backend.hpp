@@ -12,7 +12,8 @@ class CourseBackend : public Backend {
   explicit CourseBackend(CourseVariant variant) : variant_(std::move(variant)) {}
   std::string name() const override { return variant_.name; }
   FeatureSet supports() const override;
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override;
+  std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
+                                        double dt) const override;
 
  private:
   CourseVariant variant_;

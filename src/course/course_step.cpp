@@ -5,7 +5,7 @@
 
 namespace bb::course {
 
-ContactPhases::ContactPhases(const Scene& scene, const Phases& phases, double dt)
+ContactPhases::ContactPhases(const World& scene, const Phases& phases, double dt)
     : scene_(scene), phases_(phases), dt_(dt), pairs_(contact_pairs(scene)) {
   // The course moves a box as a point with an orientation: against the ground and a ball it
   // has an exact gap, against another box none here.

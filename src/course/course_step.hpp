@@ -37,7 +37,7 @@ struct FoundContact {
 class ContactPhases {
  public:
   /// `dt` is the step, for the spin rule's per-step reading of a spin.
-  ContactPhases(const Scene& scene, const Phases& phases, double dt);
+  ContactPhases(const World& scene, const Phases& phases, double dt);
   /// Detect: every pair whose gap is below zero at positions `x` and orientations `q`.
   void detect(const std::vector<Vec3>& x, const std::vector<Quat>& q);
   /// Resolve: each found contact by the ground rule (ground, fixed bodies), the hit rule
@@ -54,7 +54,7 @@ class ContactPhases {
   void hit(const ContactPair& pair, const contact::Proximity& p, const std::vector<Vec3>& x,
            std::vector<Vec3>& v, const std::vector<Quat>& q, std::vector<Vec3>& w) const;
 
-  const Scene& scene_;
+  const World& scene_;
   Phases phases_;
   double dt_;
   std::vector<ContactPair> pairs_;

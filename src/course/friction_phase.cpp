@@ -7,7 +7,7 @@
 
 namespace bb::course {
 
-FrictionPhase::FrictionPhase(const Scene& scene, FrictionRule rule, double dt)
+FrictionPhase::FrictionPhase(const World& scene, FrictionRule rule, double dt)
     : scene_(scene), rule_(rule), dt_(dt) {
   for (const Contact& c : scene.contacts)
     if (!c.ground && (c.friction_static > 0.0 || c.friction_kinetic > 0.0))

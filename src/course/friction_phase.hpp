@@ -25,7 +25,7 @@ class FrictionPhase {
  public:
   /// `dt` is the step, which `low-speed` needs; throws UnsupportedScene when a [[contact]]
   /// between bodies has friction (the course's rules act against the ground only).
-  FrictionPhase(const Scene& scene, FrictionRule rule, double dt);
+  FrictionPhase(const World& scene, FrictionRule rule, double dt);
   /// No body can touch a ground with friction: the phase does nothing.
   bool empty() const { return bodies_.empty(); }
   /// Before the step: which bodies are in contact with the ground (above), and their
@@ -54,7 +54,7 @@ class FrictionPhase {
   static constexpr double kTouching = 1e-9;
 
  private:
-  const Scene& scene_;
+  const World& scene_;
   FrictionRule rule_;
   double dt_;
   Eigen::Vector3d normal_ = Eigen::Vector3d::UnitY();

@@ -29,7 +29,7 @@ double seed_inertia(const Body& body, const Hinge& hinge) {
 
 }  // namespace
 
-HingeTurning::HingeTurning(const Scene& scene) : scene_(scene) {
+HingeTurning::HingeTurning(const World& scene) : scene_(scene) {
   for (const Hinge& h : scene.hinges) {
     const Body& b = scene.bodies[h.body];
     hinges_.push_back(&h);

@@ -18,7 +18,7 @@ namespace bb::course {
 class HingeTurning {
  public:
   /// Sets up every hinged body of `scene` at its starting state.
-  explicit HingeTurning(const Scene& scene);
+  explicit HingeTurning(const World& scene);
   bool empty() const { return hinges_.empty(); }
   /// The seed's J (kg m^2) of hinge k's body about its axis.
   double inertia(std::size_t k) const { return inertia_[k]; }
@@ -38,7 +38,7 @@ class HingeTurning {
   bool into_ground(int i, const Hinge& h, const Vec3& x0, const Quat& q0, const Vec3& x1,
                    const Quat& q1) const;
 
-  const Scene& scene_;
+  const World& scene_;
   std::vector<const Hinge*> hinges_;
   std::vector<double> inertia_;   ///< the seed's J per hinge
   std::vector<double> momentum_;  ///< L about the axis per hinge, N m s

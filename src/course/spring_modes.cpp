@@ -14,7 +14,7 @@ namespace {
 constexpr int kDenseLimit = 1200;
 
 /// Each moving body's first degree of freedom, or -1 for a fixed body.
-std::vector<int> dof_index(const Scene& scene, int& count) {
+std::vector<int> dof_index(const World& scene, int& count) {
   std::vector<int> index(scene.bodies.size(), -1);
   count = 0;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i)
@@ -23,7 +23,7 @@ std::vector<int> dof_index(const Scene& scene, int& count) {
 }
 
 /// y = M^-1/2 K M^-1/2 x without forming K: a sweep over the springs.
-void apply_stiffness(const Scene& scene, const std::vector<int>& index, const Eigen::VectorXd& x,
+void apply_stiffness(const World& scene, const std::vector<int>& index, const Eigen::VectorXd& x,
                      Eigen::VectorXd& y) {
   y.setZero();
   const int d = scene.dims;
@@ -62,7 +62,7 @@ double spectral_radius(course::StepFn step, double omega, double gamma, double h
 
 }  // namespace
 
-std::optional<StiffestMode> stiffest_mode(const Scene& scene) {
+std::optional<StiffestMode> stiffest_mode(const World& scene) {
   int n = 0;
   const std::vector<int> index = dof_index(scene, n);
   bool any = false;

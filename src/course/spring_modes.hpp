@@ -19,7 +19,7 @@ struct StiffestMode {
 };
 
 /// nullopt when the scene has no spring between moving bodies.
-std::optional<StiffestMode> stiffest_mode(const Scene& scene);
+std::optional<StiffestMode> stiffest_mode(const World& scene);
 
 /// The largest step (s) for which `integrator`'s step matrix on x'' = -omega^2 x - gamma x'
 /// has a spectral radius of at most 1, found by bisection on the course's own step

@@ -12,7 +12,7 @@ namespace bb {
 namespace {
 
 /// Springs: the integrator on the network's stiffest mode, with its damping where known.
-std::optional<TheoreticalLimit> spring_limit(const Scene& scene, const std::string& integrator) {
+std::optional<TheoreticalLimit> spring_limit(const World& scene, const std::string& integrator) {
   const auto mode = stiffest_mode(scene);
   if (!mode) return std::nullopt;
   const double limit = linear_stability_limit(integrator, mode->omega, mode->damping_rate);
@@ -39,7 +39,7 @@ std::optional<TheoreticalLimit> spring_limit(const Scene& scene, const std::stri
 
 }  // namespace
 
-std::optional<TheoreticalLimit> theoretical_limit(const Scene& scene,
+std::optional<TheoreticalLimit> theoretical_limit(const World& scene,
                                                   const std::string& integrator) {
   // Springs and nothing that touches: the stiffest mode sets the limit.
   if (scene.features().has(Feature::Springs) && !scene.features().has(Feature::GroundContact) &&

@@ -16,7 +16,7 @@ struct TheoreticalLimit {
 
 /// The largest stable step theory predicts for `integrator` on `scene`, when the scene is
 /// one theory covers; nullopt otherwise.
-std::optional<TheoreticalLimit> theoretical_limit(const Scene& scene,
+std::optional<TheoreticalLimit> theoretical_limit(const World& scene,
                                                   const std::string& integrator);
 
 }  // namespace bb

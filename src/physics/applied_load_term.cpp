@@ -8,7 +8,7 @@ namespace {
 
 class AppliedLoadTerm : public ForceTerm {
  public:
-  explicit AppliedLoadTerm(const Scene& scene) {
+  explicit AppliedLoadTerm(const World& scene) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
       const Body& b = scene.bodies[i];
       if (b.force.isZero() && b.torque.isZero()) continue;
@@ -36,7 +36,7 @@ class AppliedLoadTerm : public ForceTerm {
 
 }  // namespace
 
-std::unique_ptr<ForceTerm> make_applied_load_term(const Scene& scene, const ForceOptions&) {
+std::unique_ptr<ForceTerm> make_applied_load_term(const World& scene, const ForceOptions&) {
   auto term = std::make_unique<AppliedLoadTerm>(scene);
   if (term->empty()) return nullptr;
   return term;

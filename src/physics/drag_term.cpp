@@ -8,7 +8,7 @@ namespace {
 
 class DragTerm : public ForceTerm {
  public:
-  explicit DragTerm(const Scene& scene) : air_(*scene.air) {
+  explicit DragTerm(const World& scene) : air_(*scene.air) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
       const Body& b = scene.bodies[i];
       if (b.drag_coefficient <= 0.0) continue;
@@ -46,7 +46,7 @@ class DragTerm : public ForceTerm {
 
 }  // namespace
 
-std::unique_ptr<ForceTerm> make_drag_term(const Scene& scene, const ForceOptions&) {
+std::unique_ptr<ForceTerm> make_drag_term(const World& scene, const ForceOptions&) {
   if (!scene.air) return nullptr;
   auto term = std::make_unique<DragTerm>(scene);
   if (term->empty()) return nullptr;

@@ -12,7 +12,7 @@ namespace bb {
 /// The equations set up once per run, so that evaluating them allocates nothing.
 class EquationsOfMotion {
  public:
-  explicit EquationsOfMotion(const Scene& scene);
+  explicit EquationsOfMotion(const World& scene);
   /// Linear acceleration (m/s^2) of every body at positions `x` and velocities `v`; `omega`
   /// is each body's angular velocity, `q` its orientation. Fixed bodies get zero. `out`
   /// must have one entry per body. The torques at that state are kept (torques()).

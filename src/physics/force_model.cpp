@@ -4,7 +4,7 @@
 
 namespace bb {
 
-ForceModel::ForceModel(const Scene& scene, const ForceOptions& options)
+ForceModel::ForceModel(const World& scene, const ForceOptions& options)
     : bodies_(scene.bodies.size()), gravity_(scene.gravity) {
   for (const ForceTermEntry& entry : force_terms())
     if (std::unique_ptr<ForceTerm> term = entry.make(scene, options)) {

@@ -20,7 +20,7 @@ struct Loads {
 
 class ForceModel {
  public:
-  ForceModel(const Scene& scene, const ForceOptions& options = {});
+  ForceModel(const World& scene, const ForceOptions& options = {});
   ForceModel(ForceModel&&) = default;
   ForceModel& operator=(ForceModel&&) = default;
   ~ForceModel();

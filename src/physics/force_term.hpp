@@ -58,7 +58,7 @@ class ForceTerm {
 };
 
 /// Builds a term for `scene`, or nothing when the scene has no use for it.
-using ForceTermFactory = std::unique_ptr<ForceTerm> (*)(const Scene& scene,
+using ForceTermFactory = std::unique_ptr<ForceTerm> (*)(const World& scene,
                                                         const ForceOptions& options);
 
 }  // namespace bb

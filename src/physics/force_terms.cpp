@@ -3,11 +3,11 @@
 namespace bb {
 
 // Each term's factory, defined in its own file.
-std::unique_ptr<ForceTerm> make_spring_term(const Scene&, const ForceOptions&);
-std::unique_ptr<ForceTerm> make_drag_term(const Scene&, const ForceOptions&);
-std::unique_ptr<ForceTerm> make_magnus_term(const Scene&, const ForceOptions&);
-std::unique_ptr<ForceTerm> make_panel_wind_term(const Scene&, const ForceOptions&);
-std::unique_ptr<ForceTerm> make_applied_load_term(const Scene&, const ForceOptions&);
+std::unique_ptr<ForceTerm> make_spring_term(const World&, const ForceOptions&);
+std::unique_ptr<ForceTerm> make_drag_term(const World&, const ForceOptions&);
+std::unique_ptr<ForceTerm> make_magnus_term(const World&, const ForceOptions&);
+std::unique_ptr<ForceTerm> make_panel_wind_term(const World&, const ForceOptions&);
+std::unique_ptr<ForceTerm> make_applied_load_term(const World&, const ForceOptions&);
 
 const std::vector<ForceTermEntry>& force_terms() {
   static const std::vector<ForceTermEntry> terms = {

@@ -8,7 +8,7 @@ namespace {
 
 class MagnusTerm : public ForceTerm {
  public:
-  explicit MagnusTerm(const Scene& scene) : wind_(scene.air->wind) {
+  explicit MagnusTerm(const World& scene) : wind_(scene.air->wind) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
       if (scene.bodies[i].magnus != 0.0) {
         bodies_.push_back(static_cast<int>(i));
@@ -41,7 +41,7 @@ class MagnusTerm : public ForceTerm {
 
 }  // namespace
 
-std::unique_ptr<ForceTerm> make_magnus_term(const Scene& scene, const ForceOptions&) {
+std::unique_ptr<ForceTerm> make_magnus_term(const World& scene, const ForceOptions&) {
   if (!scene.air) return nullptr;
   auto term = std::make_unique<MagnusTerm>(scene);
   if (term->empty()) return nullptr;

@@ -9,7 +9,7 @@ namespace {
 
 class PanelWindTerm : public ForceTerm {
  public:
-  explicit PanelWindTerm(const Scene& scene) {
+  explicit PanelWindTerm(const World& scene) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
       const Body& b = scene.bodies[i];
       if (b.wind_force.isZero()) continue;
@@ -38,7 +38,7 @@ class PanelWindTerm : public ForceTerm {
 
 }  // namespace
 
-std::unique_ptr<ForceTerm> make_panel_wind_term(const Scene& scene, const ForceOptions&) {
+std::unique_ptr<ForceTerm> make_panel_wind_term(const World& scene, const ForceOptions&) {
   auto term = std::make_unique<PanelWindTerm>(scene);
   if (term->empty()) return nullptr;
   return term;

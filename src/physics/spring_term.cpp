@@ -10,7 +10,7 @@ namespace {
 
 class SpringTerm : public ForceTerm {
  public:
-  explicit SpringTerm(const Scene& scene) : springs_(spring_network(scene)) {}
+  explicit SpringTerm(const World& scene) : springs_(spring_network(scene)) {}
 
   void add(const BodyStates& s, Vec3* force, Vec3*) const override {
     add_spring_forces(springs_, s.position, s.velocity, force);
@@ -47,7 +47,7 @@ class SpringTerm : public ForceTerm {
 
 }  // namespace
 
-std::unique_ptr<ForceTerm> make_spring_term(const Scene& scene, const ForceOptions& options) {
+std::unique_ptr<ForceTerm> make_spring_term(const World& scene, const ForceOptions& options) {
   if (scene.springs.empty() || !options.springs) return nullptr;
   return std::make_unique<SpringTerm>(scene);
 }

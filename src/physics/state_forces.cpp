@@ -2,7 +2,7 @@
 
 namespace bb {
 
-StateForces::StateForces(const Scene& scene, const ForceOptions& options)
+StateForces::StateForces(const World& scene, const ForceOptions& options)
     : model_(scene, options),
       x_(scene.bodies.size()),
       v_(scene.bodies.size()),

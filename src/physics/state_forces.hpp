@@ -11,7 +11,7 @@ namespace bb {
 
 class StateForces {
  public:
-  explicit StateForces(const Scene& scene, const ForceOptions& options = {});
+  explicit StateForces(const World& scene, const ForceOptions& options = {});
   /// The forces and torques at `state`, one entry per body (zero on fixed bodies); nothing
   /// allocates.
   const Loads& at(const State& state);

@@ -2,7 +2,7 @@
 
 namespace bb {
 
-StepStart::StepStart(const Scene& scene, double dt, const ForceOptions& options)
+StepStart::StepStart(const World& scene, double dt, const ForceOptions& options)
     : scene_(&scene), dt_(dt), forces_(scene, options) {}
 
 }  // namespace bb

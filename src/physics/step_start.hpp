@@ -12,7 +12,7 @@ namespace bb {
 
 class StepStart {
  public:
-  StepStart(const Scene& scene, double dt, const ForceOptions& options = {});
+  StepStart(const World& scene, double dt, const ForceOptions& options = {});
 
   /// Calls `push(impulse)` for each impulse due at the start of the step about to be
   /// taken (its time rounds to that step's start), then counts that step.
@@ -33,7 +33,7 @@ class StepStart {
   const Loads& loads(const State& state) { return forces_.at(state); }
 
  private:
-  const Scene* scene_;
+  const World* scene_;
   double dt_;
   long steps_ = 0;        ///< steps counted; the next one starts at steps_ * dt
   std::size_t next_ = 0;  ///< the first impulse not applied yet

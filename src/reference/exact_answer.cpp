@@ -18,7 +18,7 @@ namespace {
 /// Why the reference cannot turn the scene's hinged bodies exactly ("" when it can): one
 /// hinge per body, touching nothing, on no spring, starting at rest or turning about the
 /// hinge.
-std::string hinge_reason(const Scene& scene) {
+std::string hinge_reason(const World& scene) {
   const std::vector<ContactPair> pairs = contact_pairs(scene);
   for (const Hinge& h : scene.hinges) {
     const Body& b = scene.bodies[h.body];
@@ -51,7 +51,7 @@ std::string hinge_reason(const Scene& scene) {
 
 /// Why the reference cannot turn a body by its torque exactly ("" when it can): the torque
 /// is exact in free flight; at a contact or on a hinge its turn has no event model.
-std::string torque_reason(const Scene& scene) {
+std::string torque_reason(const World& scene) {
   const std::vector<ContactPair> pairs = contact_pairs(scene);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];
@@ -77,7 +77,7 @@ std::string shape_word(const Body& body) {
 }
 
 /// Whether body `i` starts touching the ground, not moving along its normal.
-bool starts_resting(const Scene& scene, int i) {
+bool starts_resting(const World& scene, int i) {
   const std::optional<ContactPair> pair = ground_pair(scene, i);
   if (!pair) return false;
   const Body& b = scene.bodies[i];
@@ -89,7 +89,7 @@ bool starts_resting(const Scene& scene, int i) {
 
 }  // namespace
 
-std::string SceneModel::beyond_exact_answer(const Scene& scene) {
+std::string SceneModel::beyond_exact_answer(const World& scene) {
   if (!scene.springs.empty() && scene.bodies.size() > kMaxReferenceBodies)
     return std::to_string(scene.bodies.size()) +
            " bodies on springs: a reference to 1e-10 would take longer than a report allows "

@@ -33,7 +33,7 @@ Methods methods(ReferenceSolver solver) {
 /// The fastest rate (1/s) at which springs move a body: for each body, the bound
 /// sqrt(2 sum k / m) on the angular frequency of the stiffest mode it takes part in
 /// (Gershgorin's circles on M^-1 K) and the damping rate 2 sum c / m.
-double spring_rate(const Scene& scene) {
+double spring_rate(const World& scene) {
   std::vector<double> k(scene.bodies.size()), c(scene.bodies.size());
   for (const Spring& s : scene.springs)
     for (int body : {s.body_a, s.body_b}) k[body] += s.stiffness, c[body] += s.damping;
@@ -50,7 +50,7 @@ double spring_rate(const Scene& scene) {
 /// velocity at state y: the largest singular value of dF/dv / m over the moving bodies (the
 /// force model's own derivatives), or the springs' rate when larger. Drag on a light body or
 /// a stiff spring makes it large; it is what limits an explicit method's step.
-double fastest_rate(const Scene& scene, const SceneModel& model, const std::vector<double>& y) {
+double fastest_rate(const World& scene, const SceneModel& model, const std::vector<double>& y) {
   State state(scene.bodies.size());
   model.read(y.data(), state);
   double rate = spring_rate(scene);
@@ -77,9 +77,10 @@ double fastest_rate(const Scene& scene, const SceneModel& model, const std::vect
 /// due at a step's start are applied first, as every backend applies them.
 class ReferenceSimulation : public Simulation {
  public:
-  ReferenceSimulation(const Scene& scene, double dt, double tolerance, double max_step,
-                      ReferenceSolver solver)
+  ReferenceSimulation(const World& scene, const BackendSettings& settings, double dt,
+                      double tolerance, double max_step, ReferenceSolver solver)
       : scene_(scene),
+        settings_(settings),
         dt_(dt),
         tolerance_(tolerance),
         max_step_(max_step),
@@ -165,9 +166,9 @@ class ReferenceSimulation : public Simulation {
     implicit_ = method == methods_.stiff;
     earlier_steps_ += integrator_ ? integrator_->steps() : 0;
     integrator_.reset();
-    model_ = std::make_unique<SceneModel>(scene_);
+    model_ = std::make_unique<SceneModel>(scene_, settings_);
     // The largest stretch and overlap, found between the solver's steps.
-    peaks_ = std::make_unique<PeakWatch>(scene_, model_->initial_state());
+    peaks_ = std::make_unique<PeakWatch>(scene_, settings_.observed(), model_->initial_state());
     if (!peaks_->active()) peaks_.reset();
     integrator_ =
         std::make_unique<HybridIntegrator>(*model_, options(method), model_->initial_state());
@@ -197,20 +198,20 @@ class ReferenceSimulation : public Simulation {
   void check_stiffness() {
     if (implicit_) return;
     const double rate = fastest_rate(scene_, *model_, integrator_->state());
-    if (rate * scene_.sample <= kStiffRateTimesSample) return;
+    if (rate * settings_.sample <= kStiffRateTimesSample) return;
     const double t = integrator_->time();
     // The implicit methods factor a dense Jacobian of the whole state: beyond some size, too
     // slow to use.
     if (scene_.bodies.size() > kMaxImplicitBodies)
       throw BeyondExactAnswer("stiff (the fastest rate times the sample is " +
-                              short_number(rate * scene_.sample) + ") with " +
+                              short_number(rate * settings_.sample) + ") with " +
                               std::to_string(scene_.bodies.size()) +
                               " bodies: the implicit solver's "
                               "dense Jacobian would take too long (it is used up to " +
                               std::to_string(kMaxImplicitBodies) + " bodies)");
     switch_note_ = "stiff from t = " + short_number(t) + " s, where the fastest rate is " +
                    short_number(rate) +
-                   " /s (times the sample: " + short_number(rate * scene_.sample) + ")";
+                   " /s (times the sample: " + short_number(rate * settings_.sample) + ")";
     implicit_ = true;
     earlier_steps_ += integrator_->steps();
     std::vector<double> y = integrator_->state();
@@ -219,7 +220,8 @@ class ReferenceSimulation : public Simulation {
         std::make_unique<HybridIntegrator>(*model_, options(methods_.stiff), std::move(y), t);
   }
 
-  const Scene& scene_;
+  const World& scene_;
+  BackendSettings settings_;  ///< the sample interval and the observes
   double dt_;
   double tolerance_;
   double max_step_;  ///< seconds, 0: none
@@ -248,11 +250,13 @@ std::pair<std::string, std::string> ReferenceBackend::library_version() const {
   return {"gsl", GSL_VERSION};
 }
 
-std::unique_ptr<Simulation> ReferenceBackend::start(const Scene& scene, double dt) const {
+std::unique_ptr<Simulation> ReferenceBackend::start_run(const World& scene,
+                                                        const BackendSettings& settings,
+                                                        double dt) const {
   if (const std::string why = SceneModel::beyond_exact_answer(scene); !why.empty())
     throw BeyondExactAnswer(why);
-  return std::make_unique<ReferenceSimulation>(scene, dt, tolerance_,
-                                               max_step_per_sample_ * scene.sample, solver_);
+  return std::make_unique<ReferenceSimulation>(scene, settings, dt, tolerance_,
+                                               max_step_per_sample_ * settings.sample, solver_);
 }
 
 }  // namespace bb

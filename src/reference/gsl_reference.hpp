@@ -54,7 +54,8 @@ class ReferenceBackend : public Backend {
   std::string name() const override { return "reference"; }
   FeatureSet supports() const override;
   std::pair<std::string, std::string> library_version() const override;
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override;
+  std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
+                                        double dt) const override;
   double tolerance() const { return tolerance_; }
   /// The self-check's solver: other methods and step control (ReferenceSolver::Check),
   /// 100 times tighter, with steps of at most an eighth of a sample.

@@ -18,10 +18,11 @@ constexpr double kPeakTimeTolerance = 1e-12;
 
 }  // namespace
 
-PeakWatch::PeakWatch(const Scene& scene, const std::vector<double>& y0)
+PeakWatch::PeakWatch(const World& scene, const std::vector<Observe>& observes,
+                     const std::vector<double>& y0)
     : scene_(scene), penetration_(scene.bodies.size(), 0.0) {
   std::vector<bool> overlap_watched(scene.bodies.size(), false);
-  for (const Observe& o : scene.observes) {
+  for (const Observe& o : observes) {
     if (observable_needs(o.kind, kWatchesStretch)) stretch_ = true;
     if (observable_needs(o.kind, kWatchesOverlap)) overlap_watched[o.body] = true;
   }

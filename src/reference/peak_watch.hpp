@@ -20,7 +20,8 @@ class PeakWatch : public SpanWatcher {
   /// Watches what `scene`'s observables ask for: max_stretch (every spring with a rest
   /// length) and max_penetration (every contact pair of the observed bodies). `y0`: the
   /// state at t = 0, which counts too.
-  PeakWatch(const Scene& scene, const std::vector<double>& y0);
+  PeakWatch(const World& scene, const std::vector<Observe>& observes,
+            const std::vector<double>& y0);
   /// Whether anything is watched at all.
   bool active() const { return stretch_ || !pairs_.empty(); }
   /// Each spring's stretch at the span's end; between its ends, where a spring's stretch
@@ -43,7 +44,7 @@ class PeakWatch : public SpanWatcher {
   double locate_peak(HybridIntegrator& integrator, std::size_t k, double t0, double r0, double t1,
                      double r1);
 
-  const Scene& scene_;
+  const World& scene_;
   bool stretch_ = false;             ///< max_stretch is observed
   std::vector<int> springs_;         ///< the springs with a rest length
   double max_stretch_ = 0.0;         ///< as the step observer's: never below 0

@@ -42,8 +42,9 @@ Eigen::Matrix3d angular_acceleration_by_spin(const Body& body, const Vector3d& b
 
 }  // namespace
 
-SceneModel::SceneModel(const Scene& scene)
+SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
     : scene_(scene),
+      settings_(settings),
       resting_(scene.bodies.size(), false),
       after_bounce_(scene.bodies.size(), false),
       forces_(scene),
@@ -80,11 +81,11 @@ SceneModel::SceneModel(const Scene& scene)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
       if (!scene.bodies[i].fixed) sources_.push_back({true, -1, i, {}});
   // Falls are timed exactly, as every backend's are from its steps.
-  for (const Observe& o : scene.observes)
+  for (const Observe& o : settings.observed())
     if (observable_needs(o.kind, kWatchesFalls) && scene.ground)
       sources_.push_back({false, -1, o.body, {}, false, true});
   // Swings are timed exactly, as every backend's are from its steps.
-  for (const Observe& o : scene.observes)
+  for (const Observe& o : settings.observed())
     if (observable_needs(o.kind, kWatchesSwings))
       for (int axis = 0; axis < 3; ++axis) sources_.push_back({false, axis, o.body, {}});
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it

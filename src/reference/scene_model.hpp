@@ -32,7 +32,11 @@ class SceneModel : public HybridModel {
   /// angular velocity in the body's own frame (read() turns it into the world's).
   static constexpr std::size_t kPerBody = 13;
 
-  explicit SceneModel(const Scene& scene);
+  /// The world's model; `settings` name the observes whose events it locates and the sample
+  /// interval (none and 0 when not given: no observed events, no rest below a bounce).
+  explicit SceneModel(const World& world, const BackendSettings& settings = {});
+  /// The model of a case's world, told its study's settings.
+  explicit SceneModel(const Scene& scene) : SceneModel(scene, BackendSettings::of(scene)) {}
   /// The integrated state at t = 0.
   std::vector<double> initial_state() const;
   /// `y` as the runner's per-body state.
@@ -61,9 +65,9 @@ class SceneModel : public HybridModel {
   /// A ground bounce whose rebound would keep the body off the ground for less than this
   /// many seconds leaves it resting on the ground instead (ending a geometric series of
   /// ever smaller bounces): a millionth of the sample interval.
-  double rest_flight_time() const { return 1e-6 * scene_.sample; }
+  double rest_flight_time() const { return 1e-6 * settings_.sample; }
   /// Why the reference cannot answer this scene exactly, or "" when it can.
-  static std::string beyond_exact_answer(const Scene& scene);
+  static std::string beyond_exact_answer(const World& scene);
 
  private:
   /// What one event function watches: a contact pair's gap, a body's apex, the upward
@@ -118,7 +122,8 @@ class SceneModel : public HybridModel {
   /// motion recorded (it sticks there or turns back), and the body settled anew.
   void stop(int body, double* y, double t);
 
-  const Scene& scene_;
+  const World& scene_;
+  BackendSettings settings_;
   std::vector<Source> sources_;
   std::vector<bool> resting_;       ///< per body: resting on the ground
   std::vector<bool> after_bounce_;  ///< per body: an apex is awaited

@@ -37,7 +37,7 @@ SlideDecision decide_slide(double mu_static, const Eigen::Vector3d& n, const Eig
   return d;
 }
 
-std::string tipping_reason(const Scene& scene, const Body& box) {
+std::string tipping_reason(const World& scene, const Body& box) {
   const int index = static_cast<int>(&box - scene.bodies.data());
   const std::optional<ContactPair> g = ground_pair(scene, index);
   if (!g || box.shape != Shape::Box) return "";
@@ -64,7 +64,7 @@ std::string tipping_reason(const Scene& scene, const Body& box) {
          " m (tipping has no event model in the reference)";
 }
 
-std::string box_slide_reason(const Scene& scene, int index) {
+std::string box_slide_reason(const World& scene, int index) {
   const Body& box = scene.bodies[index];
   const std::string name = "moving box '" + box.name + "' ";
   // Away from any ground a ball's hit on the box is one point, resolved by the impulse.

@@ -37,12 +37,12 @@ SlideDecision decide_slide(double mu_static, const Eigen::Vector3d& n, const Eig
 /// friction at its face, h below its centre, tips it once h F_t / N exceeds its smallest
 /// half width across the normal; F_t / N is mu_k while it slides and tan(slope) while it
 /// is held.
-std::string tipping_reason(const Scene& scene, const Body& box);
+std::string tipping_reason(const World& scene, const Body& box);
 
 /// Why the reference cannot follow moving box `box` of `scene` exactly ("" when it can): it
 /// must start flat on a face on the ground, at rest along the normal and without spin,
 /// touch nothing else, hang on no spring, be pushed only through its centre along the
 /// ground, and not tip (tipping_reason).
-std::string box_slide_reason(const Scene& scene, int box);
+std::string box_slide_reason(const World& scene, int box);
 
 }  // namespace bb

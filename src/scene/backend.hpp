@@ -47,6 +47,26 @@ class Simulation {
   virtual std::optional<long> internal_steps() const { return std::nullopt; }
 };
 
+/// What a backend is told besides the world, all from the case's study: the engines'
+/// settings tables (each engine reads its own [engines.<engine>]) and, for the reference,
+/// the sample interval (its stiffness bound) and the observes whose events it locates
+/// exactly. The pointers point into the case, which outlives every run.
+struct BackendSettings {
+  const EngineTables* engines = nullptr;
+  double sample = 0.0;
+  const std::vector<Observe>* observes = nullptr;
+
+  /// The observes, none when not given.
+  const std::vector<Observe>& observed() const {
+    static const std::vector<Observe> none;
+    return observes ? *observes : none;
+  }
+  /// The settings a case gives its backends.
+  static BackendSettings of(const Study& study) {
+    return {&study.engines, study.sample, &study.observes};
+  }
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -59,8 +79,14 @@ class Backend {
   virtual FeatureSet needs() const { return {}; }
   /// Library and version, e.g. {"bullet", "3.24"}; empty name for none.
   virtual std::pair<std::string, std::string> library_version() const { return {}; }
-  /// Start a run of `scene` at step `dt`; the scene outlives the simulation.
-  virtual std::unique_ptr<Simulation> start(const Scene& scene, double dt) const = 0;
+  /// Start a run of `world` at step `dt`, told only `settings` of the study; the world and
+  /// what the settings point to outlive the simulation.
+  virtual std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
+                                                double dt) const = 0;
+  /// Start a run of a case: its world, and of its study the settings above only.
+  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const {
+    return start_run(scene, BackendSettings::of(scene), dt);
+  }
 };
 
 }  // namespace bb

@@ -5,7 +5,7 @@
 
 namespace bb {
 
-std::vector<ContactPair> contact_pairs(const Scene& scene) {
+std::vector<ContactPair> contact_pairs(const World& scene) {
   std::vector<ContactPair> out;
   const int n = static_cast<int>(scene.bodies.size());
   // A body's own [[contact]] with the ground, when it has one (the loader allows one each).
@@ -60,13 +60,13 @@ std::vector<ContactPair> contact_pairs(const Scene& scene) {
   return out;
 }
 
-std::optional<ContactPair> ground_pair(const Scene& scene, int body) {
+std::optional<ContactPair> ground_pair(const World& scene, int body) {
   for (const ContactPair& p : contact_pairs(scene))
     if (p.ground() && p.a == body) return p;
   return std::nullopt;
 }
 
-bool ground_rubs(const Scene& scene) {
+bool ground_rubs(const World& scene) {
   for (const ContactPair& p : contact_pairs(scene))
     if (p.ground() && (p.friction_static > 0.0 || p.friction_kinetic > 0.0)) return true;
   return false;

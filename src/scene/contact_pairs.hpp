@@ -25,13 +25,13 @@ struct ContactPair {
 /// entries name one by one, then those ["*"] adds. A pair named by itself takes its own
 /// values whatever comes before or after it; two fixed bodies never touch. (The loader
 /// refuses a pair named twice.)
-std::vector<ContactPair> contact_pairs(const Scene& scene);
+std::vector<ContactPair> contact_pairs(const World& scene);
 
 /// Body `body`'s pair with the ground, as contact_pairs() gives it; nullopt when the scene
 /// has no ground or the body is fixed.
-std::optional<ContactPair> ground_pair(const Scene& scene, int body);
+std::optional<ContactPair> ground_pair(const World& scene, int body);
 
 /// Whether some body's contact with the ground has friction.
-bool ground_rubs(const Scene& scene);
+bool ground_rubs(const World& scene);
 
 }  // namespace bb

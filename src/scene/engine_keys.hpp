@@ -17,8 +17,9 @@ std::vector<std::string> engine_names();
 /// The key, or nullptr when unknown.
 const EngineKey* find_engine_key(const std::string& engine, const std::string& key);
 /// The case's value for `engine`.`key`, or the default.
-double engine_setting(const Scene& scene, const std::string& engine, const std::string& key);
+double engine_setting(const EngineTables& tables, const std::string& engine,
+                      const std::string& key);
 /// Every key of `engine` with the value this case gives it, for a run's engine_settings.
-Settings engine_key_settings(const Scene& scene, const std::string& engine);
+Settings engine_key_settings(const EngineTables& tables, const std::string& engine);
 
 }  // namespace bb

@@ -19,7 +19,7 @@ Vec3 angular_momentum(const Body& body, const BodyState& s) {
   return s.position.cross(body.mass * s.velocity) + spin;
 }
 
-double total_energy(const Scene& scene, const State& state) {
+double total_energy(const World& scene, const State& state) {
   double energy = 0.0;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& body = scene.bodies[i];
@@ -35,7 +35,7 @@ double total_energy(const Scene& scene, const State& state) {
   return energy;
 }
 
-State initial_state(const Scene& scene) {
+State initial_state(const World& scene) {
   State state(scene.bodies.size());
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];

@@ -15,9 +15,9 @@ Vec3 angular_momentum(const Body& body, const BodyState& state);
 
 /// Total mechanical energy (J): kinetic, rotational, gravitational (zero at the origin) and
 /// the springs' potential energy.
-double total_energy(const Scene& scene, const State& state);
+double total_energy(const World& scene, const State& state);
 
 /// The state the case file describes at t = 0.
-State initial_state(const Scene& scene);
+State initial_state(const World& scene);
 
 }  // namespace bb

@@ -5,21 +5,21 @@
 
 namespace bb {
 
-int Scene::sample_count() const {
+int Study::sample_count() const {
   return static_cast<int>(std::llround(duration / sample));
 }
 
-int Scene::steps_per_sample(double step) const {
+int Study::steps_per_sample(double step) const {
   return static_cast<int>(std::llround(sample / step));
 }
 
-int Scene::body_index(const std::string& body_name) const {
+int World::body_index(const std::string& body_name) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == body_name) return static_cast<int>(i);
   return -1;
 }
 
-FeatureSet Scene::features() const {
+FeatureSet World::features() const {
   FeatureSet f;
   if (dims == 3) f.add(Feature::ThreeD);
   if (gravity.norm() > 0.0) f.add(Feature::Gravity);

@@ -130,6 +130,9 @@ struct EngineValue {
   int line = 0;
 };
 
+/// Per engine ([engines.<engine>]), the values a case sets, by key.
+using EngineTables = std::map<std::string, std::map<std::string, EngineValue>>;
+
 /// A case-specific quantity to report, e.g. terminal_velocity of one body.
 struct Observe {
   std::string kind;
@@ -216,16 +219,10 @@ struct StabilityOptions {
   double dt_max = 0.0;  ///< seconds; 0: a sixteenth of the duration (16 steps a run)
 };
 
-struct Scene {
-  std::string file;  ///< where it was loaded from, for messages
-  std::string name;
-  std::string title;
-  std::string seed;  ///< section of the course text, may be empty
+/// What is simulated: the bodies and everything that acts on them. A backend sees only this
+/// and its own settings (BackendSettings in backend.hpp), never how the case is examined.
+struct World {
   int dims = 2;
-  double duration = 0.0;   ///< simulated seconds
-  double sample = 0.0;     ///< seconds between samples
-  std::vector<double> dt;  ///< fixed steps to sweep, seconds
-  double report_dt = 0.0;  ///< the game-frame step for tables and gates
   Vec3 gravity{0.0, -9.81, 0.0};
   std::optional<Air> air;
   std::optional<Ground> ground;
@@ -235,8 +232,27 @@ struct Scene {
   std::optional<Grid> grid;
   std::vector<Hinge> hinges;
   std::vector<Impulse> impulses;  ///< in time order
+
+  /// The features this world uses; a backend must support all of them.
+  FeatureSet features() const;
+  /// Index of the body called `name`, or -1.
+  int body_index(const std::string& name) const;
+};
+
+/// How the world is examined: the run's length and steps, the course's variants, the
+/// engines' settings, what is observed, gated and claimed, the sweep, the report and the
+/// stability search.
+struct Study {
+  std::string file;  ///< where it was loaded from, for messages
+  std::string name;
+  std::string title;
+  std::string seed;        ///< section of the course text, may be empty
+  double duration = 0.0;   ///< simulated seconds
+  double sample = 0.0;     ///< seconds between samples
+  std::vector<double> dt;  ///< fixed steps to sweep, seconds
+  double report_dt = 0.0;  ///< the game-frame step for tables and gates
   CourseOptions course;
-  std::map<std::string, std::map<std::string, EngineValue>> engines;
+  EngineTables engines;
   std::vector<Observe> observes;
   std::vector<Gate> gates;
   std::vector<Claim> claims;
@@ -248,11 +264,10 @@ struct Scene {
   int sample_count() const;
   /// Steps of size `dt` between two samples (sample / dt).
   int steps_per_sample(double dt) const;
-  /// The features this scene uses; a backend must support all of them.
-  FeatureSet features() const;
-  /// Index of the body called `name`, or -1.
-  int body_index(const std::string& name) const;
 };
+
+/// A case: a World and a Study, as loaded from one case file.
+struct Scene : World, Study {};
 
 /// Principal moments of inertia (kg m^2) of a body about its centre.
 Vec3 principal_inertia(const Body& body);

@@ -2,7 +2,7 @@
 
 namespace bb {
 
-SpringNetwork spring_network(const Scene& scene) {
+SpringNetwork spring_network(const World& scene) {
   SpringNetwork s;
   for (auto* v : {&s.a, &s.b}) v->reserve(scene.springs.size());
   for (auto* v : {&s.stiffness, &s.damping, &s.rest_length}) v->reserve(scene.springs.size());

@@ -22,7 +22,7 @@ struct SpringNetwork {
   bool empty() const { return a.empty(); }
 };
 
-SpringNetwork spring_network(const Scene& scene);
+SpringNetwork spring_network(const World& scene);
 
 /// Adds every spring's force to `force` (N): k (l - L) + c (v_b - v_a).u along the unit
 /// vector u from a to b, pulling a towards b when stretched; b gets the opposite. A spring

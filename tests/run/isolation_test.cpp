@@ -26,7 +26,8 @@ class FailingBackend : public Backend {
   FeatureSet supports() const override {
     return {Feature::Gravity, Feature::Drag, Feature::ThreeD};
   }
-  std::unique_ptr<Simulation> start(const Scene&, double) const override {
+  std::unique_ptr<Simulation> start_run(const World&, const BackendSettings&,
+                                        double) const override {
     struct Sim : Simulation {
       Fault fault;
       void step() override {

@@ -30,7 +30,8 @@ class FaultyBackend : public Backend {
   FeatureSet supports() const override {
     return {Feature::Gravity, Feature::Drag, Feature::ThreeD, Feature::Wind};
   }
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
+  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings&,
+                                        double dt) const override {
     struct Sim : Simulation {
       State state;
       double dt, t = 0, blow_up_at, throw_at;
@@ -211,17 +212,20 @@ max = 10.0
   EXPECT_TRUE(gated.gates[0].passed);
 }
 
-/// The course's semi-implicit Euler, except that it refuses the case's finest dt.
+/// The course's semi-implicit Euler, except that it refuses steps of `finest` and below.
 class FinestFailsBackend : public Backend {
  public:
+  explicit FinestFailsBackend(double finest) : finest_(finest) {}
   std::string name() const override { return "fails-finest"; }
   FeatureSet supports() const override { return inner_.supports(); }
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
-    if (dt <= scene.dt.back()) throw std::runtime_error("no step this small");
-    return inner_.start(scene, dt);
+  std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
+                                        double dt) const override {
+    if (dt <= finest_) throw std::runtime_error("no step this small");
+    return inner_.start_run(world, settings, dt);
   }
 
  private:
+  double finest_;
   CourseBackend inner_{{"fails-finest", "semi-implicit-euler", "mirror", "clamp"}};
 };
 
@@ -231,7 +235,7 @@ class FinestFailsBackend : public Backend {
 TEST(Runner, WithoutAReferenceTheNextFinestStandsInWhenTheFinestFails) {
   const Scene scene = test::scene_from(test::kStackedBalls);
   Registry registry = Registry::load();
-  registry.add_engine(std::make_unique<FinestFailsBackend>());
+  registry.add_engine(std::make_unique<FinestFailsBackend>(scene.dt.back()));
   RunOptions options;
   options.cost = false;
   const CaseResults results = run_case(scene, registry, options);

@@ -20,7 +20,8 @@ class VerdictBackend : public Backend {
  public:
   std::string name() const override { return "threshold"; }
   FeatureSet supports() const override { return {Feature::Gravity, Feature::Drag}; }
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const override {
+  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings&,
+                                        double dt) const override {
     struct Sim : Simulation {
       State state;
       bool blow_up = false;
@@ -134,7 +135,8 @@ class CountingBackend : public Backend {
  public:
   std::string name() const override { return "counting"; }
   FeatureSet supports() const override { return {Feature::Gravity, Feature::Drag}; }
-  std::unique_ptr<Simulation> start(const Scene& scene, double) const override {
+  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings&,
+                                        double) const override {
     struct Sim : Simulation {
       State state;
       long* steps;

@@ -50,9 +50,10 @@ TEST(EngineCatalogue, ACaseMaySetEveryKeyOfEveryEngine) {
   const Scene scene = test::scene_from(text);
   for (const EngineDescription& e : engine_catalogue())
     for (const EngineKey& k : e.keys)
-      EXPECT_EQ(engine_setting(scene, e.engine, k.key), k.kind == KeyKind::Boolean   ? 1.0
-                                                        : k.kind == KeyKind::Integer ? 7.0
-                                                                                     : 0.125)
+      EXPECT_EQ(engine_setting(scene.engines, e.engine, k.key), k.kind == KeyKind::Boolean ? 1.0
+                                                                : k.kind == KeyKind::Integer
+                                                                    ? 7.0
+                                                                    : 0.125)
           << e.engine << "." << k.key;
 }
 

@@ -43,9 +43,9 @@ TEST(LoadCase, EveryKeyOfTheFormatLoads) {
   EXPECT_DOUBLE_EQ(s.springs.back().rest_length, 1.5);
   ASSERT_EQ(s.hinges.size(), 1u);
   EXPECT_EQ(s.hinges[0].body, 2);
-  EXPECT_EQ(engine_setting(s, "bullet", "solver_iterations"), 20.0);
-  EXPECT_EQ(engine_setting(s, "ode", "quick_step"), 1.0);
-  EXPECT_EQ(engine_setting(s, "ode", "quick_step_iterations"), 20.0);  // default
+  EXPECT_EQ(engine_setting(s.engines, "bullet", "solver_iterations"), 20.0);
+  EXPECT_EQ(engine_setting(s.engines, "ode", "quick_step"), 1.0);
+  EXPECT_EQ(engine_setting(s.engines, "ode", "quick_step_iterations"), 20.0);  // default
   ASSERT_EQ(s.observes.size(), 2u);
   EXPECT_EQ(s.observes[0].name, "bounce_apex/a/2");
   ASSERT_EQ(s.gates.size(), 1u);
