@@ -13,6 +13,12 @@ namespace bb {
 // Kinds measured in a file of their own.
 ObservableValue measure_max_speed(const Scene&, const Observe&, const Trajectory&,
                                   const EventTrace*);
+ObservableValue measure_forward_speed(const Scene&, const Observe&, const Trajectory&,
+                                      const EventTrace*);
+ObservableValue measure_drift_angle(const Scene&, const Observe&, const Trajectory&,
+                                    const EventTrace*);
+ObservableValue measure_made_good_upwind(const Scene&, const Observe&, const Trajectory&,
+                                         const EventTrace*);
 
 const ObservableMeasure* observable_measure(const std::string& kind) {
   static const std::map<std::string, ObservableMeasure> registry = {
@@ -42,6 +48,9 @@ const ObservableMeasure* observable_measure(const std::string& kind) {
       {"hinge_force", {measure_hinge_force}},
       {"final_height", {measure_final_height}},
       {"final_shear", {measure_final_shear}},
+      {"forward_speed", {measure_forward_speed}},
+      {"drift_angle", {measure_drift_angle}},
+      {"made_good_upwind", {measure_made_good_upwind}},
   };
   const auto found = registry.find(kind);
   return found == registry.end() ? nullptr : &found->second;

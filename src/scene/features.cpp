@@ -37,6 +37,8 @@ std::string feature_name(Feature f) {
       return "impulse";
     case Feature::AppliedForce:
       return "applied-force";
+    case Feature::Sailing:
+      return "sailing";
     case Feature::Rotation:
       return "rotation";
     case Feature::Boxes:

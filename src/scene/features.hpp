@@ -23,6 +23,7 @@ enum class Feature {
   Boxes,          ///< box-shaped bodies
   Impulse,        ///< instantaneous pushes at given times
   AppliedForce,   ///< a constant force or torque on some body
+  Sailing,        ///< a boat's sail in the wind, its hull in the water
   Count
 };
 
@@ -53,7 +54,8 @@ std::string feature_name(Feature f);
 /// What a backend simulates by taking the force model's loads before each step
 /// (physics/step_start.hpp): gravity and every force term.
 inline FeatureSet force_stage_features() {
-  return {Feature::Gravity, Feature::Drag, Feature::Magnus, Feature::Wind, Feature::AppliedForce};
+  return {Feature::Gravity, Feature::Drag,         Feature::Magnus,
+          Feature::Wind,    Feature::AppliedForce, Feature::Sailing};
 }
 
 /// Every feature in order, for listings.

@@ -120,6 +120,71 @@ void read_applied_load(TomlReader& r, const Scene& scene, Body& b) {
                                  "' on it moves nothing; leave it out");
 }
 
+/// What every boat needs: a 2D case seen from above, with the water holding it up.
+void require_boat_world(TomlReader& r, const Scene& scene, const std::string& key) {
+  if (scene.dims != 2)
+    r.fail(r.line_of(key), "a boat sails on the water seen from above: '" + key +
+                               "' needs a 2D case (the x-y plane is the water)");
+  if (!scene.gravity.isZero(0.0))
+    r.fail(r.line_of(key), "the water holds a boat up: a case with a '" + key +
+                               "' sets gravity = [0.0, 0.0, 0.0] (the x-y plane is the water "
+                               "seen from above)");
+  if (r.has("drag_coefficient") || r.has("magnus") || r.has("wind_force"))
+    r.fail(r.line_of(key),
+           "a boat feels the wind through its sail only: leave "
+           "'drag_coefficient', 'magnus' and 'wind_force' out of " +
+               r.where());
+}
+
+/// [body.sail] (seed section 9): area, coefficient, angle from the heading, heel stiffness.
+void read_sail(TomlReader& r, const Scene& scene, Body& b) {
+  const toml::table* t = r.table("sail");
+  if (t == nullptr) return;
+  require_boat_world(r, scene, "sail");
+  if (!scene.air) r.fail(r.line_of("sail"), "a sail needs the wind: the case has no [air] section");
+  TomlReader s = sub_reader(r, *t, "[body.sail]");
+  Sail sail;
+  sail.area = s.number("area");
+  require_range(s, "area", sail.area, 0.0, 0.0, false);
+  sail.coefficient = s.number_or("coefficient", sail.coefficient);
+  require_range(s, "coefficient", sail.coefficient, 0.0, 0.0, false);
+  sail.angle = s.number("angle");
+  require_range(s, "angle", sail.angle, 0.0, 90.0);
+  sail.heel_stiffness = s.number_or("heel_stiffness", 0.0);
+  require_range(s, "heel_stiffness", sail.heel_stiffness, 0.0, 0.0);
+  s.finish();
+  b.sail = sail;
+}
+
+/// [body.hull]: drag areas ahead, astern and across, or no drift at all.
+void read_hull(TomlReader& r, const Scene& scene, Body& b) {
+  const toml::table* t = r.table("hull");
+  if (t == nullptr) return;
+  require_boat_world(r, scene, "hull");
+  if (!scene.water)
+    r.fail(r.line_of("hull"), "a hull needs the water: the case has no [water] section");
+  TomlReader s = sub_reader(r, *t, "[body.hull]");
+  Hull hull;
+  hull.forward = s.number("forward");
+  require_range(s, "forward", hull.forward, 0.0, 0.0);
+  hull.backward = s.number_or("backward", hull.forward);
+  require_range(s, "backward", hull.backward, 0.0, 0.0);
+  hull.no_drift = s.boolean_or("no_drift", false);
+  if (hull.no_drift && s.has("sideways"))
+    s.fail(s.line_of("sideways"),
+           "'no_drift' makes the sideways drag infinite: leave 'sideways' out");
+  hull.sideways = hull.no_drift ? 0.0 : s.number("sideways");
+  require_range(s, "sideways", hull.sideways, 0.0, 0.0);
+  s.finish();
+  // With no drift the boat starts as it goes on: along its heading.
+  const Vec3 across = b.orientation * Vec3(0.0, 1.0, 0.0);
+  if (hull.no_drift && std::abs(b.velocity.dot(across)) > 1e-9 * b.velocity.norm())
+    r.fail(r.line_of("velocity"), r.where() +
+                                      " has no drift: its 'velocity' must point along "
+                                      "its heading (the body's x axis at 'angle')");
+  b.hull = hull;
+}
+
 }  // namespace
 
 void read_bodies(TomlReader& root, Scene& scene) {
@@ -151,6 +216,8 @@ void read_bodies(TomlReader& root, Scene& scene) {
     refuse_motion_of_fixed(r, b);
     read_air_coefficients(r, scene, b);
     read_applied_load(r, scene, b);
+    read_sail(r, scene, b);
+    read_hull(r, scene, b);
     refuse_ground_overlap(r, scene, b, r.line_of("position"));
     r.finish();
     scene.bodies.push_back(b);

@@ -70,6 +70,14 @@ void read_air_and_ground(TomlReader& root, Scene& scene) {
     r.finish();
     scene.air = air;
   }
+  if (const toml::table* t = root.table("water")) {
+    TomlReader r = sub_reader(root, *t, "[water]");
+    Water water;
+    water.density = r.number_or("density", water.density);
+    require_range(r, "density", water.density, 0.0, 0.0, false);
+    r.finish();
+    scene.water = water;
+  }
   if (const toml::table* t = root.table("ground")) {
     TomlReader r = sub_reader(root, *t, "[ground]");
     Ground g;

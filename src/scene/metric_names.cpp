@@ -38,6 +38,9 @@ const std::vector<ObservableKind>& observable_kind_table() {
       {"hinge_force"},
       {"final_height"},
       {"final_shear", true},
+      {"forward_speed"},
+      {"drift_angle"},
+      {"made_good_upwind"},
   };
   return kinds;
 }

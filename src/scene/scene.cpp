@@ -33,6 +33,7 @@ FeatureSet World::features() const {
     if (b.shape == Shape::Box) f.add(Feature::Boxes);
     if (b.wind_force.norm() > 0.0) f.add(Feature::Wind);
     if (b.force.norm() > 0.0 || b.torque.norm() > 0.0) f.add(Feature::AppliedForce);
+    if (b.sail || b.hull) f.add(Feature::Sailing);
   }
   if (drag) f.add(Feature::Drag);
   if (magnus_used) f.add(Feature::Magnus);

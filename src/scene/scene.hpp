@@ -16,6 +16,24 @@ namespace bb {
 enum class Shape { Sphere, Box, Point };
 
 /// One rigid body (or particle) of the scene.
+/// A boat's sail (seed section 9, "Boat 1"): planar and friction-free, so the apparent wind
+/// pushes it only along its normal, by the drag formula on its area.
+struct Sail {
+  double area = 0.0;            ///< square metres
+  double coefficient = 1.0;     ///< C_s, dimensionless
+  double angle = 0.0;           ///< degrees from the heading; the boom swings out to leeward
+  double heel_stiffness = 0.0;  ///< N per radian of heel; 0: the boat stays upright
+};
+
+/// A boat's hull in still water: quadratic drag split along the heading and across it (the
+/// keel), each direction with its own drag area C A.
+struct Hull {
+  double forward = 0.0;   ///< square metres, moving ahead
+  double backward = 0.0;  ///< square metres, moving astern
+  double sideways = 0.0;  ///< square metres, across the heading
+  bool no_drift = false;  ///< sideways drag infinite: the boat goes only where it heads
+};
+
 struct Body {
   std::string name;
   Shape shape = Shape::Sphere;
@@ -33,16 +51,23 @@ struct Body {
   /// box feels its part along the face's normal, (F.n) n, at its centre (seed section 8,
   /// the falling wall: F_w cos(phi) as the wall tips).
   Vec3 wind_force;
-  Vec3 force;          ///< newtons, world frame: a constant push at the centre
-  Vec3 torque;         ///< newton metres, world frame: a constant turn about the centre
-  bool fixed = false;  ///< infinite mass, never moves
-  int line = 0;        ///< line of the [[body]] header in the case file
+  Vec3 force;                ///< newtons, world frame: a constant push at the centre
+  Vec3 torque;               ///< newton metres, world frame: a constant turn about the centre
+  bool fixed = false;        ///< infinite mass, never moves
+  std::optional<Sail> sail;  ///< a boat's sail, seen from above (2D, no gravity)
+  std::optional<Hull> hull;  ///< a boat's hull in the [water]
+  int line = 0;              ///< line of the [[body]] header in the case file
 };
 
 /// Still air with an optional uniform wind.
 struct Air {
   double density = 1.2;  ///< kilograms per cubic metre
   Vec3 wind;             ///< metres per second
+};
+
+/// Still water under the boats, seen from above.
+struct Water {
+  double density = 1000.0;  ///< kilograms per cubic metre
 };
 
 /// An infinite plane that every body touches.
@@ -225,6 +250,7 @@ struct World {
   int dims = 2;
   Vec3 gravity{0.0, -9.81, 0.0};
   std::optional<Air> air;
+  std::optional<Water> water;
   std::optional<Ground> ground;
   std::vector<Body> bodies;
   std::vector<Contact> contacts;

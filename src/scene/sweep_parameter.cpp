@@ -47,6 +47,14 @@ std::conditional_t<std::is_const_v<S>, const double*, double*> target(
       if (p[2] == "magnus") return &b.magnus;
       return nullptr;
     }
+    if (p[2] == "sail") {
+      if (!b.sail) return nullptr;
+      if (p[3] == "angle") return &b.sail->angle;
+      if (p[3] == "area") return &b.sail->area;
+      if (p[3] == "coefficient") return &b.sail->coefficient;
+      if (p[3] == "heel_stiffness") return &b.sail->heel_stiffness;
+      return nullptr;
+    }
     const int c = component(p[3]);
     if (c < 0) return nullptr;
     if (p[2] == "position") return &b.position[c];
@@ -113,6 +121,7 @@ Vec3 swept_vector(const Scene& scene, const std::vector<std::string>& p) {
 const char* kKnownPaths =
     "body.<name>.mass|radius|drag_coefficient|magnus, "
     "body.<name>.position|velocity|angular_velocity|half_extents|wind_force|force|torque.x|y|z, "
+    "body.<name>.sail.angle|area|coefficient|heel_stiffness, "
     "ground.restitution|friction_static|friction_kinetic|normal (an angle in degrees), "
     "air.density, air.wind.x|y|z, gravity.x|y|z";
 
@@ -152,7 +161,7 @@ std::string sweep_path_problem(const Scene& scene, const std::string& path) {
 
 std::string sweep_value_problem(const Scene& scene, const std::string& path, double value) {
   const std::vector<std::string> p = sweep_path_parts(path);
-  const std::string& field = p[0] == "body" ? p[2] : p.back();
+  const std::string& field = p[0] == "body" && p[2] != "sail" ? p[2] : p.back();
   const std::string at = "the value " + short_number(value) + " for '" + path + "'";
   if (!std::isfinite(value)) return at + " is not a finite number";
   if ((field == "mass" || field == "radius" || field == "half_extents") && value <= 0.0)
@@ -161,6 +170,11 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
        field == "density") &&
       value < 0.0)
     return at + " must not be negative";
+  if ((field == "area" || field == "coefficient") && value <= 0.0)
+    return at + " must be greater than 0";
+  if (field == "heel_stiffness" && value < 0.0) return at + " must not be negative";
+  if (field == "angle" && (value < 0.0 || value > 90.0))
+    return at + " is the sail's angle from the heading and must lie between 0 and 90 degrees";
   if (field == "restitution" && (value < 0.0 || value > 1.0))
     return at + " must be between 0 and 1";
   if (p[0] == "ground" && field == "normal" && std::abs(value) >= 90.0)

@@ -94,5 +94,22 @@ TEST(SweepParameter, ARangeHasCountEvenlySpacedValuesWithBothEnds) {
   EXPECT_NEAR(v[20], 10.1, 1e-12);
 }
 
+// A boat's sail: its angle (degrees), area, coefficient and heel stiffness, on a body that
+// has a sail, within the loader's ranges.
+TEST(SweepParameter, NamesABoatsSailAndKeepsItsAngleBetween0And90Degrees) {
+  Scene s = load_case(test::source_path("cases/sail_beating.toml"));
+  EXPECT_EQ(sweep_path_problem(s, "body.boat.sail.angle"), "");
+  EXPECT_EQ(sweep_path_problem(s, "body.boat.sail.heel_stiffness"), "");
+  EXPECT_NE(sweep_path_problem(s, "body.boat.sail.mast"), "");
+  EXPECT_DOUBLE_EQ(sweep_parameter_value(s, "body.boat.sail.angle"), 15.0);
+  EXPECT_NE(sweep_value_problem(s, "body.boat.sail.angle", 95.0).find("between 0 and 90"),
+            std::string::npos);
+  EXPECT_NE(sweep_value_problem(s, "body.boat.sail.area", 0.0), "");
+  EXPECT_EQ(sweep_value_problem(s, "body.boat.sail.angle", 30.0), "");
+  set_sweep_parameter(s, "body.boat.sail.angle", 30.0);
+  EXPECT_DOUBLE_EQ(s.bodies[0].sail->angle, 30.0);
+  EXPECT_NE(sweep_path_problem(block_scene(), "body.block.sail.angle"), "");
+}
+
 }  // namespace
 }  // namespace bb
