@@ -77,8 +77,8 @@ std::optional<GrowthVerdict> early_verdict(const EnergyHistory& whole) {
             "motion's nonlinearity (a spring folding through itself), not by the step"};
   // Too few steps to tell how it grows: only a rise far beyond the physics counts.
   if (all < kGrowthWindows) {
-    const std::string few = "too few steps (" + std::to_string(all) +
-                            ") to tell how the energy grows; its rise above the start reached " +
+    const std::string few = "energy seen over too few steps (" + std::to_string(all) +
+                            ") to tell how it grows; its rise above the start reached " +
                             significant_digits(last) + " J";
     if (last > 10.0 * whole.scale && last > 2.0 * first)
       return GrowthVerdict{Growth::Runaway, false,

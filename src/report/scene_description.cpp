@@ -49,6 +49,24 @@ std::string ground_line(const Scene& scene) {
       g.restitution, friction(g.friction_static, g.friction_kinetic));
 }
 
+/// A boat's line (seed section 9): its heading, its sail and its hull, where it has them.
+std::string boat_line(const Body& b) {
+  const double heading = 2.0 * std::atan2(b.orientation.z(), b.orientation.w()) * 180.0 / M_PI;
+  std::string out = fmt::format("- boat {}: heading {:g} degrees", b.name, heading);
+  if (const std::optional<Sail>& s = b.sail) {
+    out += fmt::format("; sail {:g} m^2, C_s {:g}, at {:g} degrees from the heading", s->area,
+                       s->coefficient, s->angle);
+    if (s->heel_stiffness > 0.0)
+      out += fmt::format(", heeling by F_across / {:g} N/rad", s->heel_stiffness);
+  }
+  if (const std::optional<Hull>& h = b.hull)
+    out += fmt::format("; hull drag areas C A ahead {:g}, astern {:g}, across {} m^2", h->forward,
+                       h->backward,
+                       h->no_drift ? std::string("infinite (no drift)")
+                                   : fmt::format("{:g}", h->sideways));
+  return out + "\n";
+}
+
 }  // namespace
 
 std::string describe_scene(const Scene& scene) {
@@ -66,6 +84,13 @@ std::string describe_scene(const Scene& scene) {
         scene.air->density, vec(scene.air->wind, scene.dims));
   else
     out += "- no air: no drag, no wind, no Magnus\n";
+  if (scene.water)
+    out += fmt::format(
+        "- still water, density {:g} kg/m^3: the x-y plane seen from above, holding the boats "
+        "up\n",
+        scene.water->density);
+  for (const Body& b : scene.bodies)
+    if (b.sail || b.hull) out += boat_line(b);
   out += scene.ground ? ground_line(scene) : "- no ground: nothing to touch\n";
   for (const Contact& c : scene.contacts) {
     const std::string who =
