@@ -128,6 +128,8 @@ class FrictionEngines : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
     if (engine(GetParam()) == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+    if (!test::described_with(GetParam(), Feature::Friction))
+      GTEST_SKIP() << GetParam() << " does not simulate friction (its description says so)";
   }
   const Backend& backend() const { return *engine(GetParam()); }
 };

@@ -95,6 +95,8 @@ class HingeEngines : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
     if (engine(GetParam()) == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+    if (!test::described_with(GetParam(), Feature::Hinge))
+      GTEST_SKIP() << GetParam() << " does not simulate hinges (its description says so)";
   }
   const Backend& backend() const { return *engine(GetParam()); }
 };

@@ -57,6 +57,12 @@ inline std::vector<std::string> rigid_engines_with(Feature feature) {
   return out;
 }
 
+/// Whether backend `name`'s description says it simulates `feature`.
+inline bool described_with(const std::string& name, Feature feature) {
+  const EngineDescription* d = description_of(name);
+  return d != nullptr && d->supports.count(name) && d->supports.at(name).has(feature);
+}
+
 /// The engines built a second way with their springs added by hand (`<engine>/force`).
 inline std::vector<std::string> engines_with_force_build() {
   std::vector<std::string> out;
