@@ -24,6 +24,13 @@ inline Vec3 engine_inertia(const Body& body) {
   return {i, i, i};
 }
 
+/// The inertia tensor (kg m^2, world frame) an engine gets for `body` turned to
+/// `orientation`: R diag(I) R^T, for an impulse's turn or a torque computed by hand.
+inline Eigen::Matrix3d engine_world_inertia(const Body& body, const Quat& orientation) {
+  const Eigen::Matrix3d r = orientation.normalized().toRotationMatrix();
+  return r * engine_inertia(body).asDiagonal() * r.transpose();
+}
+
 /// Adds the "point_body" engine setting when the scene has a non-fixed point body.
 inline void add_point_body_setting(const World& scene, Settings& settings) {
   const bool any = std::any_of(scene.bodies.begin(), scene.bodies.end(),

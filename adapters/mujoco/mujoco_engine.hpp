@@ -1,13 +1,33 @@
-// MuJoCo, named by the design (libmujoco-dev is in Debian) but without an adapter yet: it
-// has a row, saying so, only when a user asks for it by name, and no settings keys.
+// MuJoCo as the harness knows it: `mujoco`, MuJoCo's own default integrator (Euler:
+// velocities first, then positions with the new velocities), on free bodies for now: the
+// force stage (gravity is MuJoCo's own), impulses, rotation, boxes, 2D and 3D. Contacts,
+// springs and hinges are not built yet: a case with them is `unsupported`, the feature named.
 #pragma once
 
 #include "scene/engine_catalogue.hpp"
 
 namespace bb {
 
+inline FeatureSet mujoco_supports() {
+  return force_stage_features() |
+         FeatureSet{Feature::ThreeD, Feature::Rotation, Feature::Boxes, Feature::Impulse};
+}
+
 inline EngineDescription mujoco_engine() {
-  return {"mujoco", {"mujoco"}, {}, false};
+  const std::string e = "mujoco";
+  return {e,
+          {"mujoco"},
+          {{e, "gyroscopic_term", KeyKind::Boolean, 1,
+            "the gyroscopic term w x I w of a free body, part of MuJoCo's bias force "
+            "qfrc_bias (on, as MuJoCo always has it); false cancels it with the opposite "
+            "torque through xfrc_applied before each step"}},
+          true,
+          {},
+          {{"mujoco", mujoco_supports()}},
+          false,
+          {},
+          {{"gyroscopic", "qfrc_bias"}, {"plane_2d", "slide joints"}},
+          {}};
 }
 
 }  // namespace bb

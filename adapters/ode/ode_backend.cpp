@@ -307,8 +307,7 @@ class OdeSimulation : public Simulation {
     if (!imp.point) return;
     const Vec3 arm = *imp.point - from_ode(dBodyGetPosition(b));
     const dReal* q = dBodyGetQuaternion(b);
-    const Eigen::Matrix3d r = Quat(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
-    const Eigen::Matrix3d inertia = r * engine_inertia(body).asDiagonal() * r.transpose();
+    const Eigen::Matrix3d inertia = engine_world_inertia(body, Quat(q[0], q[1], q[2], q[3]));
     const Vec3 w =
         from_ode(dBodyGetAngularVel(b)) + Vec3(inertia.ldlt().solve(arm.cross(imp.impulse)));
     dBodySetAngularVel(b, w.x(), w.y(), w.z());

@@ -130,13 +130,12 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 // The refusal of an unknown backend lists the backends the case runs: those that exist in
-// this build and can run it (drag_fall is 2D without springs: no mujoco, no springs by hand).
+// this build and can run it (drag_fall is 2D without springs: no springs by hand).
 TEST(Cli, AnUnknownBackendIsRefusedWithTheBackendsThatRunTheCase) {
   const test::Outcome o = beachball("run " + test::source_path("cases/drag_fall.toml") +
                                     " --backends physx --no-cost --out " + fresh_dir("usage"));
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_NE(o.out.find("it runs: reference, course/"), std::string::npos) << o.out;
-  EXPECT_EQ(o.out.find("mujoco"), std::string::npos) << o.out;
   EXPECT_EQ(o.out.find("ode/force"), std::string::npos) << o.out;
 }
 

@@ -1,0 +1,237 @@
+// MuJoCo as a backend: the World written as MJCF (mujoco_model.hpp), loaded from memory,
+// stepped with mj_step. Forces and torques of the force model go in through xfrc_applied
+// before each step, as a game adds them; an impulse changes qvel at the step's start.
+#include <mujoco/mujoco.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "../point_body.hpp"
+#include "mujoco_model.hpp"
+#include "physics/step_start.hpp"
+#include "scene/engine_catalogue.hpp"
+#include "scene/engine_keys.hpp"
+#include "scene/plugin_api.hpp"
+
+namespace bb {
+
+namespace {
+
+/// MuJoCo's errors: said on stderr, which the runner's child process captures into the
+/// run's reason, then the run ends (MuJoCo's default would exit the program).
+[[noreturn]] void mujoco_error(const char* message) {
+  std::fprintf(stderr, "MuJoCo error: %s\n", message);
+  std::fflush(stderr);
+  std::abort();
+}
+
+/// MuJoCo's warnings: said on stderr, and the run goes on.
+void mujoco_warning(const char* message) {
+  std::fprintf(stderr, "MuJoCo warning: %s\n", message);
+}
+
+/// The model compiled from `xml`, through a virtual file (mjVFS is large: on the heap).
+mjModel* load_model(const std::string& xml) {
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  const char* name = "beachball.xml";
+  if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0)
+    throw std::runtime_error("MuJoCo: no room for the model in its virtual file system");
+  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), name)], xml.data(), xml.size());
+  char error[1000] = "";
+  mjModel* model = mj_loadXML(name, vfs.get(), error, sizeof error);
+  mj_deleteVFS(vfs.get());
+  if (model == nullptr) throw std::runtime_error(std::string("MuJoCo refused the model: ") + error);
+  return model;
+}
+
+constexpr const char* kGyroscopicOn =
+    "MuJoCo's bias force qfrc_bias (mj_rne: Coriolis and centrifugal forces, for a free body "
+    "the gyroscopic torque -w x I w), evaluated at the step's start and stepped explicitly "
+    "like every other force";
+constexpr const char* kGyroscopicOff =
+    "gyroscopic_term = false: the opposite torque w x I w added through xfrc_applied before "
+    "each step cancels the bias force's gyroscopic part, so a free body keeps its world "
+    "angular velocity and never flips";
+
+class MujocoSimulation : public Simulation {
+ public:
+  MujocoSimulation(const World& world, const EngineTables& engines, double dt)
+      : world_(world),
+        engines_(engines),
+        start_(world, dt, {}),
+        model_(load_model(mujoco_model_xml(world, dt))),
+        data_(mj_makeData(model_)),
+        gyroscopic_(engine_setting(engines, "mujoco", "gyroscopic_term") != 0.0) {
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+      const Body& b = world.bodies[i];
+      const int id = static_cast<int>(i) + 1;  // 0 is the world body
+      qpos_.push_back(b.fixed ? -1 : model_->jnt_qposadr[model_->body_jntadr[id]]);
+      dof_.push_back(b.fixed ? -1 : model_->body_dofadr[id]);
+      if (!b.fixed) set_state(i, b.position, b.orientation, b.velocity, b.angular_velocity);
+    }
+    mj_forward(model_, data_);
+  }
+  ~MujocoSimulation() override {
+    mj_deleteData(data_);
+    mj_deleteModel(model_);
+  }
+  MujocoSimulation(const MujocoSimulation&) = delete;
+  MujocoSimulation& operator=(const MujocoSimulation&) = delete;
+
+  void step() override {
+    start_.impulses_due([this](const Impulse& imp) { push(imp); });
+    mju_zero(data_->xfrc_applied, 6 * model_->nbody);
+    if (start_.has_loads() || !gyroscopic_) read(state_);
+    const Loads* loads = start_.has_loads() ? &start_.loads(state_) : nullptr;
+    for (std::size_t i = 0; i < world_.bodies.size(); ++i) {
+      if (world_.bodies[i].fixed) continue;
+      mjtNum* f = data_->xfrc_applied + 6 * (i + 1);
+      Vec3 torque = Vec3::Zero();
+      if (loads) {
+        for (int k = 0; k < 3; ++k) f[k] = loads->force[i][k];
+        if (start_.torques()) torque = loads->torque[i];
+      }
+      if (!gyroscopic_) torque += gyroscopic_torque(i);
+      for (int k = 0; k < 3; ++k) f[3 + k] = torque[k];
+    }
+    mj_step(model_, data_);
+  }
+
+  void read(State& out) const override {
+    for (std::size_t i = 0; i < world_.bodies.size(); ++i) {
+      const Body& b = world_.bodies[i];
+      if (b.fixed) {
+        out[i] = {b.position, Vec3::Zero(), b.orientation, Vec3::Zero()};
+        continue;
+      }
+      const mjtNum* q = data_->qpos + qpos_[i];
+      const mjtNum* v = data_->qvel + dof_[i];
+      if (world_.dims == 3) {
+        const Quat orientation(q[3], q[4], q[5], q[6]);
+        // A free joint's angular velocity is in the body's frame.
+        out[i] = {{q[0], q[1], q[2]},
+                  {v[0], v[1], v[2]},
+                  orientation,
+                  orientation.normalized() * Vec3(v[3], v[4], v[5])};
+      } else {
+        out[i] = {{q[0], q[1], 0.0},
+                  {v[0], v[1], 0.0},
+                  Quat(Eigen::AngleAxisd(q[2], Vec3::UnitZ())),
+                  {0.0, 0.0, v[2]}};
+      }
+    }
+  }
+
+  Settings settings() const override {
+    Settings s = engine_key_settings(engines_, "mujoco");
+    s.push_back({"precision", std::string(sizeof(mjtNum) == 8 ? "double" : "float")});
+    s.push_back({"integrator", std::string("Euler (MuJoCo's default, set explicitly): the new "
+                                           "velocities first, then the positions with them")});
+    s.push_back({"gyroscopic", std::string(gyroscopic_ ? kGyroscopicOn : kGyroscopicOff)});
+    s.push_back({"forces", std::string("the force model's forces and torques through "
+                                       "xfrc_applied at each body's centre, set before each "
+                                       "step; gravity MuJoCo's own (option gravity)")});
+    // MuJoCo's joint damping, as the other engines' built-in damping: none, its default.
+    s.push_back({"linear_damping", 0.0});
+    s.push_back({"angular_damping", 0.0});
+    s.push_back({"fluid", std::string("option density 0 and viscosity 0: MuJoCo's own "
+                                      "fluid forces off")});
+    s.push_back({"collision", std::string("none: the adapter builds no geoms (contacts, "
+                                          "springs and hinges are not built on MuJoCo yet)")});
+    s.push_back(
+        {"plane_2d", std::string(world_.dims == 2 ? "two slide joints (x, y) and a hinge (z) per "
+                                                    "moving body: MuJoCo's own joints hold it in "
+                                                    "the plane"
+                                                  : "none (3D scene)")});
+    if (!world_.impulses.empty())
+      s.push_back({"impulse", std::string("qvel changed at the start of the step: v += J / m, "
+                                          "omega += I_world^-1 (r x J) (MuJoCo has no "
+                                          "impulse call)")});
+    add_point_body_setting(world_, s);
+    return s;
+  }
+
+ private:
+  /// Sets body `i`'s joint positions and velocities from a world state.
+  void set_state(std::size_t i, const Vec3& x, const Quat& q, const Vec3& v, const Vec3& w) {
+    mjtNum* qpos = data_->qpos + qpos_[i];
+    mjtNum* qvel = data_->qvel + dof_[i];
+    if (world_.dims == 3) {
+      const Vec3 local = q.normalized().conjugate() * w;
+      const mjtNum values[7] = {x.x(), x.y(), x.z(), q.w(), q.x(), q.y(), q.z()};
+      std::copy(values, values + 7, qpos);
+      const mjtNum speeds[6] = {v.x(), v.y(), v.z(), local.x(), local.y(), local.z()};
+      std::copy(speeds, speeds + 6, qvel);
+    } else {
+      qpos[0] = x.x(), qpos[1] = x.y(), qpos[2] = 2.0 * std::atan2(q.z(), q.w());
+      qvel[0] = v.x(), qvel[1] = v.y(), qvel[2] = w.z();
+    }
+  }
+
+  /// w x I w of body `i` at the state read last, world frame: the torque that cancels the
+  /// bias force's gyroscopic part.
+  Vec3 gyroscopic_torque(std::size_t i) const {
+    const BodyState& s = state_[i];
+    const Eigen::Matrix3d inertia = engine_world_inertia(world_.bodies[i], s.orientation);
+    return s.angular_velocity.cross(Vec3(inertia * s.angular_velocity));
+  }
+
+  /// An impulse J at a point: v += J / m and omega += I_world^-1 (r x J).
+  void push(const Impulse& imp) {
+    const std::size_t i = static_cast<std::size_t>(imp.body);
+    const Body& body = world_.bodies[i];
+    if (body.fixed) return;
+    read(state_);
+    BodyState s = state_[i];
+    s.velocity += imp.impulse / body.mass;
+    if (imp.point) {
+      const Eigen::Matrix3d inertia = engine_world_inertia(body, s.orientation);
+      s.angular_velocity += inertia.ldlt().solve((*imp.point - s.position).cross(imp.impulse));
+    }
+    set_state(i, s.position, s.orientation, s.velocity, s.angular_velocity);
+  }
+
+  const World& world_;
+  const EngineTables& engines_;  ///< the case's [engines.mujoco] table among the others
+  StepStart start_;              ///< impulses due and the force model's loads
+  mjModel* model_;
+  mjData* data_;
+  bool gyroscopic_;
+  std::vector<int> qpos_, dof_;        ///< per body: its first qpos and dof, -1 when fixed
+  State state_{world_.bodies.size()};  ///< read before each step for the forces
+};
+
+class MujocoBackend : public Backend {
+ public:
+  std::string name() const override { return "mujoco"; }
+  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
+  FeatureSet supports() const override { return catalogue_supports(name()); }
+  std::pair<std::string, std::string> library_version() const override {
+    const int v = mj_version();
+    return {"mujoco", std::to_string(v / 100) + "." + std::to_string(v / 10 % 10) + "." +
+                          std::to_string(v % 10)};
+  }
+  std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
+                                        double dt) const override {
+    static std::once_flag handlers;
+    std::call_once(handlers, [] {
+      mju_user_error = mujoco_error;
+      mju_user_warning = mujoco_warning;
+    });
+    return std::make_unique<MujocoSimulation>(world, *settings.engines, dt);
+  }
+};
+
+}  // namespace
+
+}  // namespace bb
+
+extern "C" bb::Backend* beachball_create_backend() {
+  return new bb::MujocoBackend();
+}
