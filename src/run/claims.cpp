@@ -91,8 +91,12 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
       v.diverged.empty() ? "" : "diverged at dt " + listed(v.diverged) + " s";
   if (holding.empty() && failing.empty()) {
     v.kind = VerdictKind::NotMeasured;
-    v.verdict =
-        "not measured (" + (blew_up.empty() ? backend + " has no value for it" : blew_up) + ")";
+    // A backend that cannot run the case says why (the features it lacks).
+    const bool unsupported = at_report != nullptr && at_report->status == RunStatus::Unsupported;
+    const std::string why = !blew_up.empty() ? blew_up
+                            : unsupported    ? "unsupported: " + at_report->reason
+                                             : backend + " has no value for it";
+    v.verdict = "not measured (" + why + ")";
   } else {
     std::tie(v.verdict, v.kind) = core_verdict(holding, failing);
     if (!blew_up.empty())

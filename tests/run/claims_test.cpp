@@ -373,5 +373,31 @@ right = 19.62
             std::string::npos);
 }
 
+// A backend that cannot run the case is not measured, and its verdict says why: the run's
+// reason, the features it lacks.
+TEST(Claims, ABackendThatCannotRunTheCaseSaysWhyItIsNotMeasured) {
+  static Scene scene;
+  scene = test::scene_from(fall_case() + R"(
+[[claim]]
+text = "every backend's ball ends below 10 m/s"
+own = true
+left = "*:final_speed/ball"
+op = "<"
+right = 10.0
+)");
+  CaseResults results = made_up(scene, "course/explicit-euler", {9.0, 7.0, 4.0, 3.0}, 3.0);
+  RunRecord lacking;
+  lacking.backend = "engine-without-drag";
+  lacking.dt = scene.report_dt;
+  lacking.status = RunStatus::Unsupported;
+  lacking.reason = "does not support: drag";
+  results.runs.push_back(lacking);
+  const ClaimResult claim = judge_claims(results)[0];
+  const ClaimVerdict& v = verdict(claim, "engine-without-drag");
+  EXPECT_EQ(v.kind, VerdictKind::NotMeasured);
+  EXPECT_EQ(v.verdict, "not measured (unsupported: does not support: drag)");
+  EXPECT_EQ(verdict(claim, "course/explicit-euler").kind, VerdictKind::Holds);
+}
+
 }  // namespace
 }  // namespace bb
