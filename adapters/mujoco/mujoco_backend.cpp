@@ -14,6 +14,7 @@
 #include "../point_body.hpp"
 #include "mujoco_model.hpp"
 #include "physics/step_start.hpp"
+#include "scene/contact_pairs.hpp"
 #include "scene/engine_catalogue.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
@@ -64,6 +65,7 @@ class MujocoSimulation : public Simulation {
   MujocoSimulation(const World& world, const EngineTables& engines, double dt)
       : world_(world),
         engines_(engines),
+        dt_(dt),
         start_(world, dt, {}),
         model_(load_model(mujoco_model_xml(world, dt))),
         data_(mj_makeData(model_)),
@@ -142,8 +144,7 @@ class MujocoSimulation : public Simulation {
     s.push_back({"angular_damping", 0.0});
     s.push_back({"fluid", std::string("option density 0 and viscosity 0: MuJoCo's own "
                                       "fluid forces off")});
-    s.push_back({"collision", std::string("none: the adapter builds no geoms (contacts, "
-                                          "springs and hinges are not built on MuJoCo yet)")});
+    add_contact_settings(s);
     s.push_back(
         {"plane_2d", std::string(world_.dims == 2 ? "two slide joints (x, y) and a hinge (z) per "
                                                     "moving body: MuJoCo's own joints hold it in "
@@ -197,9 +198,49 @@ class MujocoSimulation : public Simulation {
     set_state(i, s.position, s.orientation, s.velocity, s.angular_velocity);
   }
 
+  /// How the ground's contacts are built, and their numbers (the first pair's).
+  void add_contact_settings(Settings& s) const {
+    if (!world_.ground) {
+      s.push_back({"collision", std::string("none: no ground, and bodies do not touch each other "
+                                            "on MuJoCo yet")});
+      return;
+    }
+    s.push_back(
+        {"collision",
+         std::string("MuJoCo's own detection (mj_collision) of each body's sphere or box geom "
+                     "against a plane geom for the ground, only in the <pair>s the adapter "
+                     "writes, one per body with the ground (contype and conaffinity 0 "
+                     "elsewhere); bodies do not touch each other on MuJoCo yet")});
+    s.push_back({"contact_model",
+                 std::string("soft, as MuJoCo's contacts are: frictionless (condim 1), solref in "
+                             "the direct form (-k, -b), the reference acceleration -b v - k x of "
+                             "a spring and damper with k = 1 / tau^2 and b = 2 zeta / tau, "
+                             "solimp 0.9999 0.9999 0.001 0.5 2 (the impedance at its largest, so "
+                             "that acceleration is followed), margin 0")});
+    s.push_back({"restitution_rule",
+                 std::string("MuJoCo has no restitution: the pair's restitution e sets the damping "
+                             "ratio zeta of that spring and damper, which rebounds at e of its "
+                             "approach speed, e = exp(-zeta pi / sqrt(1 - zeta^2))")});
+    const double tau = std::max(kMujocoContactTime, 2.0 * dt_);
+    s.push_back({"contact_time", tau});
+    s.push_back({"contact_time_rule",
+                 std::string("tau = max(0.02 s, 2 dt): MuJoCo's default time constant, never "
+                             "below two steps, as its refsafe keeps its standard form")});
+    if (const std::optional<ContactPair> first = first_ground_pair())
+      s.push_back(
+          {"contact_damping_ratio_first", mujoco_contact(first->restitution, dt_).damping_ratio});
+  }
+  /// The first body's pair with the ground, if any.
+  std::optional<ContactPair> first_ground_pair() const {
+    for (const ContactPair& pair : contact_pairs(world_))
+      if (pair.ground()) return pair;
+    return std::nullopt;
+  }
+
   const World& world_;
   const EngineTables& engines_;  ///< the case's [engines.mujoco] table among the others
-  StepStart start_;              ///< impulses due and the force model's loads
+  double dt_;
+  StepStart start_;  ///< impulses due and the force model's loads
   mjModel* model_;
   mjData* data_;
   bool gyroscopic_;

@@ -1,7 +1,8 @@
 // MuJoCo as the harness knows it: `mujoco`, MuJoCo's own default integrator (Euler:
-// velocities first, then positions with the new velocities), on free bodies for now: the
-// force stage (gravity is MuJoCo's own), impulses, rotation, boxes, 2D and 3D. Contacts,
-// springs and hinges are not built yet: a case with them is `unsupported`, the feature named.
+// velocities first, then positions with the new velocities), on free bodies and their
+// frictionless contact with the ground for now: the force stage (gravity is MuJoCo's own),
+// impulses, rotation, boxes, 2D and 3D. Body contacts, friction, springs and hinges are not
+// built yet: a case with them is `unsupported`, the feature named.
 #pragma once
 
 #include "scene/engine_catalogue.hpp"
@@ -9,8 +10,9 @@
 namespace bb {
 
 inline FeatureSet mujoco_supports() {
-  return force_stage_features() |
-         FeatureSet{Feature::ThreeD, Feature::Rotation, Feature::Boxes, Feature::Impulse};
+  return force_stage_features() | FeatureSet{Feature::ThreeD,        Feature::Rotation,
+                                             Feature::Boxes,         Feature::Impulse,
+                                             Feature::GroundContact, Feature::Restitution};
 }
 
 inline EngineDescription mujoco_engine() {

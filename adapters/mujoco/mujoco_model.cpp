@@ -2,9 +2,25 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "../point_body.hpp"
+#include "scene/contact_pairs.hpp"
 
 namespace bb {
+
+MujocoContact mujoco_contact(double restitution, double dt) {
+  // A linear spring and damper x'' = -b x' - k x rebounds at exp(-zeta pi / sqrt(1 - zeta^2))
+  // of its approach speed, zeta = b / (2 sqrt(k)): the damping ratio that gives e.
+  const double log_e = std::log(std::max(restitution, 1e-12));
+  const double zeta = restitution >= 1.0
+                          ? 0.0
+                          : -log_e / std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
+  const double omega = 1.0 / std::max(kMujocoContactTime, 2.0 * dt);
+  return {omega * omega, 2.0 * zeta * omega, zeta};
+}
 
 std::string mujoco_model_xml(const World& world, double dt) {
   // MuJoCo's own fluid forces off: drag, Magnus and wind come from the force model.
@@ -14,6 +30,13 @@ std::string mujoco_model_xml(const World& world, double dt) {
       "density=\"0\" viscosity=\"0\"/>\n"
       "  <worldbody>\n",
       dt, world.gravity.x(), world.gravity.y(), world.gravity.z());
+  // The ground, touched only through the pairs below.
+  if (world.ground)
+    xml += fmt::format(
+        "    <geom name=\"ground\" type=\"plane\" size=\"0 0 1\" pos=\"{:.17g} {:.17g} {:.17g}\" "
+        "zaxis=\"{:.17g} {:.17g} {:.17g}\" contype=\"0\" conaffinity=\"0\"/>\n",
+        world.ground->point.x(), world.ground->point.y(), world.ground->point.z(),
+        world.ground->normal.x(), world.ground->normal.y(), world.ground->normal.z());
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const Body& b = world.bodies[i];
     // A fixed body is part of the world; a moving one starts at the origin, its joints'
@@ -33,11 +56,37 @@ std::string mujoco_model_xml(const World& world, double dt) {
           "      <joint type=\"slide\" axis=\"0 1 0\"/>\n"
           "      <joint type=\"hinge\" axis=\"0 0 1\"/>\n";
     xml += fmt::format(
-        "      <inertial pos=\"0 0 0\" mass=\"{:.17g}\" diaginertia=\"{:.17g} {:.17g} {:.17g}\"/>\n"
-        "    </body>\n",
+        "      <inertial pos=\"0 0 0\" mass=\"{:.17g}\" diaginertia=\"{:.17g} {:.17g} "
+        "{:.17g}\"/>\n",
         b.mass, inertia.x(), inertia.y(), inertia.z());
+    // Its shape, for the ground to touch; no pair is automatic (contype 0).
+    if (world.ground && b.shape == Shape::Sphere)
+      xml += fmt::format(
+          "      <geom name=\"g{}\" type=\"sphere\" size=\"{:.17g}\" contype=\"0\" "
+          "conaffinity=\"0\" mass=\"0\"/>\n",
+          i, b.radius);
+    else if (world.ground && b.shape == Shape::Box)
+      xml += fmt::format(
+          "      <geom name=\"g{}\" type=\"box\" size=\"{:.17g} {:.17g} {:.17g}\" contype=\"0\" "
+          "conaffinity=\"0\" mass=\"0\"/>\n",
+          i, b.half_extents.x(), b.half_extents.y(), b.half_extents.z());
+    xml += "    </body>\n";
   }
-  return xml + "  </worldbody>\n</mujoco>\n";
+  xml += "  </worldbody>\n";
+  // Each body's pair with the ground, frictionless (condim 1), its restitution as the
+  // damping ratio of a spring and damper in MuJoCo's direct form, solref = (-k, -b), with
+  // the impedance at its largest so that the reference acceleration is followed.
+  std::string pairs;
+  for (const ContactPair& pair : contact_pairs(world)) {
+    if (!pair.ground() || world.bodies[pair.a].shape == Shape::Point) continue;
+    const MujocoContact c = mujoco_contact(pair.restitution, dt);
+    pairs += fmt::format(
+        "    <pair geom1=\"g{}\" geom2=\"ground\" condim=\"1\" solref=\"{:.17g} {:.17g}\" "
+        "solimp=\"{} {} 0.001 0.5 2\" margin=\"0\"/>\n",
+        pair.a, -c.stiffness, -c.damping, kMujocoImpedance, kMujocoImpedance);
+  }
+  if (!pairs.empty()) xml += "  <contact>\n" + pairs + "  </contact>\n";
+  return xml + "</mujoco>\n";
 }
 
 }  // namespace bb

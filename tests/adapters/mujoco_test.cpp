@@ -1,0 +1,69 @@
+// MuJoCo's soft contact with the ground: the case's restitution e becomes the damping ratio
+// zeta of a spring and damper (e = exp(-zeta pi / sqrt(1 - zeta^2))), and a ball dropped
+// from 1 m rebounds, at steps fine enough to resolve the contact, to the reference's first
+// apex within 3 %. At e = 0.1 the soft contact gives back more than e (see the pal_restitution
+// page); that is MuJoCo's, not asserted away here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "support/engine_support.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+/// PAL's drop: a 0.5 m sphere, its bottom 1 m above the ground, restitution `e`.
+Scene drop(double e) {
+  return test::scene_from(R"(name = "drop"
+dims = 2
+duration = 1.5
+sample = 0.0041666666666666667
+dt = [0.0041666666666666667]
+report_dt = 0.0041666666666666667
+[ground]
+restitution = )" + std::to_string(e) +
+                          R"(
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 1.5, 0.0]
+)");
+}
+
+/// The centre's highest point after its first contact, stepping `backend` at `dt` for 1.5 s.
+double first_apex(const Backend& backend, const Scene& scene, double dt) {
+  std::unique_ptr<Simulation> sim = backend.start(scene, dt);
+  State s(1);
+  bool bounced = false;
+  double apex = 0.0;
+  for (int n = 0; n < static_cast<int>(1.5 / dt); ++n) {
+    sim->step();
+    sim->read(s);
+    if (!bounced && s[0].velocity.y() > 0.0) bounced = true;
+    if (bounced) apex = std::max(apex, s[0].position.y());
+  }
+  return apex;
+}
+
+TEST(Mujoco, TheRestitutionIsTheContactsDampingRatioAndTheBounceFollowsTheReference) {
+  const Backend* mujoco = test::engine("mujoco");
+  if (mujoco == nullptr) GTEST_SKIP() << "mujoco was not built";
+  const double dt = 1.0 / 240.0;
+  for (double e : {0.5, 0.9}) {
+    SCOPED_TRACE(e);
+    const Scene scene = drop(e);
+    const double zeta =
+        test::number_setting(mujoco->start(scene, dt)->settings(), "contact_damping_ratio_first");
+    EXPECT_NEAR(std::exp(-zeta * std::numbers::pi / std::sqrt(1.0 - zeta * zeta)), e, 1e-12);
+    const double reference = first_apex(test::registry().reference(), scene, dt);
+    // r + e^2 h, seen at the steps (the apex falls between two: g dt^2 / 8 at most).
+    EXPECT_NEAR(reference, 0.5 + e * e * 1.0, 9.81 * dt * dt / 8.0 + 1e-9);
+    EXPECT_NEAR(first_apex(*mujoco, scene, dt), reference, 0.03 * reference);
+  }
+}
+
+}  // namespace
+}  // namespace bb
