@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "run/registry.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 
 namespace {
 

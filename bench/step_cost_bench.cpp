@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "run/registry.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 
 namespace {
 

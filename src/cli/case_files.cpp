@@ -3,7 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "scene/case_error.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 
 namespace bb::cli {
 

@@ -5,7 +5,7 @@
 
 #include "contact/contact_pairs.hpp"
 #include "reference/scene_model_state.hpp"
-#include "scene/metric_names.hpp"
+#include "observe/observable_registry.hpp"
 
 namespace bb {
 

@@ -11,7 +11,7 @@
 #include "reference/gsl_reference.hpp"
 #include "reference/scene_model_state.hpp"
 #include "reference/sliding_modes.hpp"
-#include "scene/metric_names.hpp"
+#include "observe/observable_registry.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {

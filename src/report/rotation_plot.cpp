@@ -7,7 +7,7 @@
 #include "report/gnuplot.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
-#include "scene/metric_names.hpp"
+#include "observe/observable_registry.hpp"
 
 namespace bb {
 

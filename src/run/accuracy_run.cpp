@@ -2,7 +2,7 @@
 
 #include <new>
 
-#include "metrics/step_observer.hpp"
+#include "observe/step_observer.hpp"
 #include "run/divergence.hpp"
 #include "scene/motion.hpp"
 

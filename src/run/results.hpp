@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "metrics/errors.hpp"
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "metrics/order.hpp"
 #include "metrics/trajectory.hpp"
 #include "run/claim_result.hpp"

@@ -139,7 +139,7 @@ CaseSize case_size(TomlReader& root, const Scene& scene,
 
 }  // namespace
 
-Scene parse_case(std::string_view text, const std::string& file) {
+Scene parse_case(std::string_view text, const std::string& file, const CaseVocabulary& vocabulary) {
   refuse_control_characters(text, file);
   // toml++ recurses on key parts and nesting: bound them before it sees the text.
   check_toml_depth(text, file);
@@ -175,7 +175,7 @@ Scene parse_case(std::string_view text, const std::string& file) {
   load::read_impulses(root, scene, names);
   load::read_course(root, scene);
   load::read_engines(root, scene);
-  load::read_observes(root, scene, names);
+  load::read_observes(root, scene, names, vocabulary);
   load::read_gates(root, scene);
   load::read_claims(root, scene);
   load::read_sweep(root, scene);
@@ -184,7 +184,7 @@ Scene parse_case(std::string_view text, const std::string& file) {
   return scene;
 }
 
-Scene load_case(const std::string& path) {
+Scene load_case(const std::string& path, const CaseVocabulary& vocabulary) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
@@ -205,7 +205,7 @@ Scene load_case(const std::string& path) {
   if (text.str().find_first_not_of(" \t\r\n") == std::string::npos)
     throw CaseError(
         path, 0, "is empty; a case needs at least name, dims, duration, sample, dt and a [[body]]");
-  return parse_case(text.str(), path);
+  return parse_case(text.str(), path, vocabulary);
 }
 
 }  // namespace bb

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "scene/case_limits.hpp"
+#include "scene/case_vocabulary.hpp"
 #include "scene/scene.hpp"
 
 namespace bb {
@@ -15,10 +16,11 @@ inline constexpr std::size_t kMaxNameLength = 64;
 /// Largest case file accepted, in bytes.
 inline constexpr std::size_t kMaxCaseFileBytes = 1 << 20;
 
-/// Load the case at `path`; throws CaseError.
-Scene load_case(const std::string& path);
+/// Load the case at `path`, in the words of `vocabulary`; throws CaseError. (The program
+/// loads with every word it knows: run/case_loading.hpp.)
+Scene load_case(const std::string& path, const CaseVocabulary& vocabulary);
 
 /// Parse case text; `file` names it in messages. Throws CaseError.
-Scene parse_case(std::string_view text, const std::string& file);
+Scene parse_case(std::string_view text, const std::string& file, const CaseVocabulary& vocabulary);
 
 }  // namespace bb

@@ -78,16 +78,31 @@ void read_engines(TomlReader& root, Scene& scene) {
   engines.finish();
 }
 
-void read_observes(TomlReader& root, Scene& scene, const BodyNames& names) {
+/// The kind `name` of the vocabulary, or nullptr.
+const ObservableWord* find_word(const CaseVocabulary& vocabulary, const std::string& name) {
+  for (const ObservableWord& w : vocabulary.observables)
+    if (w.name == name) return &w;
+  return nullptr;
+}
+
+std::string known_kinds(const CaseVocabulary& vocabulary) {
+  std::vector<std::string> names;
+  for (const ObservableWord& w : vocabulary.observables) names.push_back(w.name);
+  return joined(names);
+}
+
+void read_observes(TomlReader& root, Scene& scene, const BodyNames& names,
+                   const CaseVocabulary& vocabulary) {
   for (const toml::table* t : root.tables("observe")) {
     TomlReader r = sub_reader(root, *t, "[[observe]]");
     Observe o;
     o.line = r.line();
     o.kind = r.string("kind");
-    if (!contains(observable_kinds(), o.kind))
+    const ObservableWord* word = find_word(vocabulary, o.kind);
+    if (word == nullptr)
       r.fail(r.line_of("kind"),
-             "unknown observable kind '" + o.kind + "'; known: " + joined(observable_kinds()));
-    if (observable_is_scene_wide(o.kind)) {
+             "unknown observable kind '" + o.kind + "'; known: " + known_kinds(vocabulary));
+    if (word->scene_wide) {
       // A quantity of the whole scene: it is named by its kind and takes no body.
       if (r.has("body"))
         r.fail(r.line_of("body"),
@@ -98,7 +113,7 @@ void read_observes(TomlReader& root, Scene& scene, const BodyNames& names) {
       o.body = require_body(r, names, body, r.line_of("body"));
       o.name = o.kind + "/" + body;
     }
-    if (observable_is_counted(o.kind)) {
+    if (word->counted) {
       o.n = r.integer_or("n", 1);
       require_range(r, "n", o.n, 1.0, 0.0);
       o.name += "/" + std::to_string(o.n);

@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "scene/case_limits.hpp"
+#include "scene/case_vocabulary.hpp"
 #include "scene/scene.hpp"
 #include "scene/toml_reader.hpp"
 #include "scene/vector_limits.hpp"
@@ -48,7 +49,8 @@ void read_hinges(TomlReader& root, Scene& scene, const BodyNames& names);
 void read_impulses(TomlReader& root, Scene& scene, const BodyNames& names);
 void read_course(TomlReader& root, Scene& scene);
 void read_engines(TomlReader& root, Scene& scene);
-void read_observes(TomlReader& root, Scene& scene, const BodyNames& names);
+void read_observes(TomlReader& root, Scene& scene, const BodyNames& names,
+                   const CaseVocabulary& vocabulary);
 void read_gates(TomlReader& root, Scene& scene);
 void read_claims(TomlReader& root, Scene& scene);
 void read_sweep(TomlReader& root, Scene& scene);

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "course/course_backend.hpp"
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "reference/closed_form.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
 #include "support/engine_support.hpp"

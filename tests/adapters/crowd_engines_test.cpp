@@ -11,7 +11,7 @@
 #include <string>
 
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 

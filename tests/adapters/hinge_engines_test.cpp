@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 

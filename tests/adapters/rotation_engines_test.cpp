@@ -13,10 +13,10 @@
 #include <numbers>
 #include <string>
 
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 

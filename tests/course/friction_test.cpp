@@ -9,11 +9,11 @@
 
 #include "course/course_backend.hpp"
 #include "course/friction_rules.hpp"
-#include "metrics/step_observer.hpp"
-#include "metrics/stop_observables.hpp"
+#include "observe/step_observer.hpp"
+#include "observe/stop_observables.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

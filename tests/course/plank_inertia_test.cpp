@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "course/course_backend.hpp"
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

@@ -10,9 +10,9 @@
 #include <numbers>
 
 #include "course/course_backend.hpp"
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "scene/motion.hpp"
 #include "support/test_support.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "course/course_backend.hpp"
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "reference/closed_form.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"

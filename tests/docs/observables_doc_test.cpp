@@ -8,6 +8,7 @@
 
 #include "docs/doc_tables.hpp"
 #include "scene/metric_names.hpp"
+#include "observe/observable_registry.hpp"
 
 namespace bb {
 namespace {

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "scene/case_error.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

@@ -3,10 +3,10 @@
 // point of the plank on the axis never leaves it.
 #include <gtest/gtest.h>
 
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

@@ -8,7 +8,7 @@
 #include "course/course_backend.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "scene/motion.hpp"
 #include "support/test_support.hpp"
 

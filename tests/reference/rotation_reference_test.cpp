@@ -2,11 +2,11 @@
 // and angular momentum to 1e-9 over the whole run, through the flips.
 #include <gtest/gtest.h>
 
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "reference/closed_form.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "scene/motion.hpp"
 #include "support/test_support.hpp"
 

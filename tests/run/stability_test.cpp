@@ -8,7 +8,7 @@
 #include "course/spring_modes.hpp"
 #include "course/stability_theory.hpp"
 #include "scene/case_error.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/course_support.hpp"
 #include "support/test_support.hpp"
 

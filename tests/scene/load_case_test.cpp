@@ -1,4 +1,6 @@
 // The whole case format loads into the scene model, and the bundled suite is valid.
+#include "scene/load_case.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -137,6 +139,26 @@ friction_kinetic = 0.8
   EXPECT_EQ(ground_pair(scene, 1)->friction_kinetic, 0.8);
   EXPECT_TRUE(scene.features().has(Feature::Friction));
   EXPECT_FALSE(scene.features().has(Feature::BodyContact));
+}
+
+// The model's loader knows no observable kind of its own: it takes the words it is handed.
+TEST(LoadCase, TakesTheObservableKindsItIsHanded) {
+  const std::string text =
+      "name = \"v\"\ndims = 2\nduration = 1.0\nsample = 0.5\ndt = [0.5]\n"
+      "[[body]]\nname = \"b\"\nshape = \"sphere\"\nradius = 0.1\nmass = 1.0\n"
+      "[[observe]]\nkind = \"wobble\"\nn = 2\n";
+  CaseVocabulary counted_scene_wide;
+  counted_scene_wide.observables.push_back({"wobble", true, true});
+  const Scene scene = parse_case(text, "v.toml", counted_scene_wide);
+  ASSERT_EQ(scene.observes.size(), 1u);
+  EXPECT_EQ(scene.observes[0].name, "wobble/2");
+  try {
+    parse_case(text, "v.toml", CaseVocabulary{});
+    FAIL() << "a kind outside the vocabulary loaded";
+  } catch (const CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown observable kind 'wobble'"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 
 #include "physics/equations_of_motion.hpp"
 #include "physics/state_forces.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "scene/motion.hpp"
 #include "support/test_support.hpp"
 

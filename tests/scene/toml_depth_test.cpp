@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "scene/case_error.hpp"
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "scene/load_case.hpp"
+#include "run/case_loading.hpp"
 
 namespace bb::test {
 

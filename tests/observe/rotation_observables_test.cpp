@@ -1,7 +1,7 @@
 // final_angle keeps whole turns: the angle about z is unwrapped at every step from the
 // spin, not over the samples, so a ball that turns more than half a turn between two
 // samples, or even within one step, is measured with every turn it made.
-#include "metrics/rotation_observables.hpp"
+#include "observe/rotation_observables.hpp"
 
 #include <gtest/gtest.h>
 

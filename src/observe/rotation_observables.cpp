@@ -1,4 +1,4 @@
-#include "metrics/rotation_observables.hpp"
+#include "observe/rotation_observables.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>

@@ -1,6 +1,6 @@
-#include "metrics/stop_observables.hpp"
+#include "observe/stop_observables.hpp"
 
-#include "metrics/step_observer.hpp"
+#include "observe/step_observer.hpp"
 
 namespace bb {
 

@@ -1,6 +1,6 @@
 // final_speed is the speed at the end of a run; terminal_velocity compares the speed
 // relative to the air at the end with sqrt(2 m g / (rho Cd A)) computed from the scene.
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "metrics/hinge_observables.hpp"
+#include "observe/hinge_observables.hpp"
 #include "report/summary_tables.hpp"
 #include "run/case_runner.hpp"
 #include "support/test_support.hpp"

@@ -1,10 +1,10 @@
 // Event observables read the n-th event, say why when there is none, and refuse to guess.
-#include "metrics/event_observables.hpp"
+#include "observe/event_observables.hpp"
 
 #include <gtest/gtest.h>
 
-#include "metrics/observable_registry.hpp"
-#include "metrics/observables.hpp"
+#include "observe/observable_registry.hpp"
+#include "observe/observables.hpp"
 
 namespace bb {
 namespace {
@@ -43,7 +43,7 @@ TEST(EventObservables, CountedKindsReadTheNthEventOrSayHowManyThereWere) {
   const auto unknown = measure_event(of("no_such_kind", 0), t);
   EXPECT_FALSE(unknown->value);
   EXPECT_NE(unknown->note.find("not measured by this version"), std::string::npos);
-  EXPECT_EQ(observable_measure("contact_time")->measure, &measure_contact_time);
+  EXPECT_EQ(observable_kind("contact_time")->measure, &measure_contact_time);
 }
 
 // post_normal_velocity has a direction: along the first contact's normal, which points away

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "metrics/observable_measure.hpp"
+#include "observe/observable_measure.hpp"
 
 namespace bb {
 

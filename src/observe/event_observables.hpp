@@ -5,7 +5,7 @@
 // the registry maps the kinds to them.
 #pragma once
 
-#include "metrics/observable_measure.hpp"
+#include "observe/observable_measure.hpp"
 
 namespace bb {
 

@@ -1,10 +1,10 @@
 // max_speed (m/s): the largest speed of the body at the samples, the instants every backend
 // and the reference share (a peak between two samples is not looked for: on one grid for
 // all, the values compare). The first observable added the registry's way: this file and
-// one line in observable_registry.cpp and in the kind table.
+// one row in observable_registry.cpp.
 #include <algorithm>
 
-#include "metrics/observable_measure.hpp"
+#include "observe/observable_measure.hpp"
 
 namespace bb {
 

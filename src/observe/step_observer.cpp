@@ -1,10 +1,10 @@
-#include "metrics/step_observer.hpp"
+#include "observe/step_observer.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "scene/metric_names.hpp"
+#include "observe/observable_registry.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {

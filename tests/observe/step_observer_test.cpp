@@ -1,6 +1,6 @@
 // Events found from a fixed-step run's states agree with the reference's located events
 // to within what one step can resolve.
-#include "metrics/step_observer.hpp"
+#include "observe/step_observer.hpp"
 
 #include <gtest/gtest.h>
 

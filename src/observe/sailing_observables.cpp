@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "metrics/observable_measure.hpp"
+#include "observe/observable_measure.hpp"
 #include "physics/boat_frame.hpp"
 
 namespace bb {

@@ -1,4 +1,4 @@
-#include "metrics/event_observables.hpp"
+#include "observe/event_observables.hpp"
 
 namespace bb {
 

@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "metrics/observable_measure.hpp"
+#include "observe/observable_measure.hpp"
 
 namespace bb {
 

@@ -1,9 +1,9 @@
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "metrics/observable_registry.hpp"
+#include "observe/observable_registry.hpp"
 
 namespace bb {
 
@@ -126,7 +126,7 @@ ObservableValue measure_final_height(const Scene& scene, const Observe& observe,
 }
 
 std::optional<double> formula_value(const Scene& scene, const Observe& observe) {
-  const ObservableMeasure* m = observable_measure(observe.kind);
+  const ObservableKind* m = observable_kind(observe.kind);
   if (m == nullptr || m->formula == nullptr) return std::nullopt;
   return m->formula(scene, observe);
 }
@@ -134,7 +134,7 @@ std::optional<double> formula_value(const Scene& scene, const Observe& observe) 
 ObservableValue measure(const Scene& scene, const Observe& observe, const Trajectory& trajectory,
                         const EventTrace* reference) {
   if (trajectory.states.empty()) return {std::nullopt, "no samples"};
-  const ObservableMeasure* m = observable_measure(observe.kind);
+  const ObservableKind* m = observable_kind(observe.kind);
   if (m == nullptr)
     return {std::nullopt,
             "kind '" + observe.kind + "' is not measured by this version of beachball"};

@@ -1,4 +1,4 @@
-#include "metrics/hinge_observables.hpp"
+#include "observe/hinge_observables.hpp"
 
 #include <algorithm>
 #include <cmath>

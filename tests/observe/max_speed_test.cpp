@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "metrics/observables.hpp"
+#include "observe/observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"

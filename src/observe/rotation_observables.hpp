@@ -1,7 +1,7 @@
 // Observables of a turning body (seed section 5), each a MeasureFn (observable_measure.hpp).
 #pragma once
 
-#include "metrics/observable_measure.hpp"
+#include "observe/observable_measure.hpp"
 
 namespace bb {
 

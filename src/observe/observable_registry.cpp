@@ -1,0 +1,82 @@
+#include "observe/observable_registry.hpp"
+
+#include "observe/event_observables.hpp"
+#include "observe/hinge_observables.hpp"
+#include "observe/observables.hpp"
+#include "observe/rotation_observables.hpp"
+#include "observe/stop_observables.hpp"
+
+namespace bb {
+
+// Kinds measured in a file of their own.
+ObservableValue measure_max_speed(const Scene&, const Observe&, const Trajectory&,
+                                  const EventTrace*);
+ObservableValue measure_forward_speed(const Scene&, const Observe&, const Trajectory&,
+                                      const EventTrace*);
+ObservableValue measure_drift_angle(const Scene&, const Observe&, const Trajectory&,
+                                    const EventTrace*);
+ObservableValue measure_made_good_upwind(const Scene&, const Observe&, const Trajectory&,
+                                         const EventTrace*);
+
+const std::vector<ObservableKind>& observable_kind_table() {
+  // name, measure, scene-wide, counted, needs, formula
+  static const std::vector<ObservableKind> kinds = {
+      {"final_speed", measure_final_speed},
+      {"max_speed", measure_max_speed},
+      {"terminal_velocity", measure_terminal_velocity, false, false, kNeedsNothing,
+       terminal_velocity_formula},
+      {"terminal_time", measure_terminal_time},
+      {"stop_time", measure_stop_time, false, false, kWatchesStops},
+      {"stop_distance", measure_stop_distance, false, false, kWatchesStops},
+      {"rest_creep", measure_rest_creep, false, false, kWatchesStops},
+      {"final_velocity", measure_final_velocity},
+      {"bounce_apex", measure_bounce_apex, false, true},
+      {"contact_time", measure_contact_time, false, true},
+      {"post_velocity", measure_post_velocity},
+      {"post_normal_velocity", measure_post_normal_velocity},
+      {"post_angular_velocity", measure_post_angular_velocity, false, false, kDrawsRotation},
+      {"period", measure_period, false, false, kWatchesSwings},
+      {"max_penetration", measure_max_penetration, false, false, kWatchesOverlap},
+      {"final_angle", measure_final_angle, false, false, kDrawsRotation},
+      {"momentum_change", measure_momentum_change},
+      {"energy_change", measure_energy_change},
+      {"max_stretch", measure_max_stretch, true, false, kWatchesStretch},
+      {"sag", measure_sag, true},
+      {"flips", measure_flips, false, false, kDrawsRotation},
+      {"angular_momentum_change", measure_angular_momentum_change},
+      {"fall_time", measure_fall_time, false, false, kWatchesFalls},
+      {"hinge_force", measure_hinge_force},
+      {"final_height", measure_final_height},
+      {"final_shear", measure_final_shear, true},
+      {"forward_speed", measure_forward_speed},
+      {"drift_angle", measure_drift_angle},
+      {"made_good_upwind", measure_made_good_upwind},
+  };
+  return kinds;
+}
+
+const ObservableKind* observable_kind(const std::string& name) {
+  for (const ObservableKind& k : observable_kind_table())
+    if (k.name == name) return &k;
+  return nullptr;
+}
+
+std::vector<std::string> observable_kinds() {
+  std::vector<std::string> names;
+  for (const ObservableKind& k : observable_kind_table()) names.push_back(k.name);
+  return names;
+}
+
+bool observable_needs(const std::string& kind, unsigned need) {
+  const ObservableKind* k = observable_kind(kind);
+  return k != nullptr && (k->needs & need) != 0;
+}
+
+CaseVocabulary case_vocabulary() {
+  CaseVocabulary vocabulary;
+  for (const ObservableKind& k : observable_kind_table())
+    vocabulary.observables.push_back({k.name, k.scene_wide, k.counted});
+  return vocabulary;
+}
+
+}  // namespace bb

@@ -1,0 +1,18 @@
+// Loading a case with every word this build knows: the loader of the model
+// (scene/load_case.hpp) is handed the observable kinds of the registry.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "scene/load_case.hpp"
+
+namespace bb {
+
+/// Load the case at `path`; throws CaseError.
+Scene load_case(const std::string& path);
+
+/// Parse case text; `file` names it in messages. Throws CaseError.
+Scene parse_case(std::string_view text, const std::string& file);
+
+}  // namespace bb

@@ -1,0 +1,22 @@
+// The words a case file may use that the layers above the model define: the observable
+// kinds (observe/observable_registry.hpp declares them, one row each). The loader is handed
+// them, so that a new kind is added where it is measured and nowhere in the model.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bb {
+
+/// One observable kind as the case format sees it.
+struct ObservableWord {
+  std::string name;
+  bool scene_wide = false;  ///< describes the whole scene: takes no `body`
+  bool counted = false;     ///< counts events: takes an `n` (the n-th bounce)
+};
+
+struct CaseVocabulary {
+  std::vector<ObservableWord> observables;
+};
+
+}  // namespace bb
