@@ -10,6 +10,7 @@
 
 #include "../point_body.hpp"
 #include "box2d_contacts.hpp"
+#include "box2d_engine.hpp"
 #include "box2d_hinges.hpp"
 #include "box2d_vectors.hpp"
 #include "physics/step_start.hpp"
@@ -36,9 +37,9 @@ class Box2dSimulation : public Simulation {
         dt_(float(dt)),
         world_(to_b2(scene.gravity)) {
     velocity_iterations_ =
-        static_cast<int>(engine_setting(engines, "box2d", "velocity_iterations"));
+        static_cast<int>(engine_setting(engines, box2d_description(), "velocity_iterations"));
     position_iterations_ =
-        static_cast<int>(engine_setting(engines, "box2d", "position_iterations"));
+        static_cast<int>(engine_setting(engines, box2d_description(), "position_iterations"));
     world_.SetAllowSleeping(false);
     const bool contacts = has_contacts(scene);
     for (const Body& b : scene.bodies) {
@@ -48,17 +49,19 @@ class Box2dSimulation : public Simulation {
       def.angle = float(angle_about_z(b.orientation));
       def.linearVelocity = to_b2(b.velocity);
       def.angularVelocity = float(b.angular_velocity.z());
-      def.linearDamping = float(engine_setting(engines, "box2d", "linear_damping"));
-      def.angularDamping = float(engine_setting(engines, "box2d", "angular_damping"));
+      def.linearDamping = float(engine_setting(engines, box2d_description(), "linear_damping"));
+      def.angularDamping = float(engine_setting(engines, box2d_description(), "angular_damping"));
       def.allowSleep = false;
-      def.bullet = contacts && !b.fixed && engine_setting(engines, "box2d", "bullet") != 0.0;
+      def.bullet =
+          contacts && !b.fixed && engine_setting(engines, box2d_description(), "bullet") != 0.0;
       b2Body* body = world_.CreateBody(&def);
       bodies_.push_back(body);
     }
     // Fixtures only where something can touch; they carry no mass of their own.
     if (contacts)
       contacts_ = std::make_unique<Box2dContacts>(
-          scene, world_, bodies_, float(engine_setting(engines, "box2d", "restitution_threshold")));
+          scene, world_, bodies_,
+          float(engine_setting(engines, box2d_description(), "restitution_threshold")));
     // Mass and inertia set directly: Box2D's circle would be a disc. A point body gets a
     // small sphere's inertia, as in every engine (point_body.hpp).
     for (std::size_t i = 0; i < bodies_.size(); ++i)
@@ -99,7 +102,7 @@ class Box2dSimulation : public Simulation {
   }
 
   Settings settings() const override {
-    Settings s = engine_key_settings(engines_, "box2d");
+    Settings s = engine_key_settings(engines_, box2d_description());
     s.push_back({"precision", std::string("float")});
     s.push_back({"sleeping", false});
     if (contacts_)
@@ -186,7 +189,7 @@ class Box2dBackend : public Backend {
  public:
   std::string name() const override { return BB_BACKEND_NAME; }
   /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override { return catalogue_supports(name()); }
+  FeatureSet supports() const override { return description_supports(box2d_description(), name()); }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `box2d` wherever the scene has no springs: it takes part only
   /// where it has.

@@ -36,4 +36,10 @@ inline EngineDescription box2d_engine() {
           {{"hinge", "b2RevoluteJoint"}}};
 }
 
+/// The description, made once: what the adapter reads its settings' defaults from.
+inline const EngineDescription& box2d_description() {
+  static const EngineDescription description = box2d_engine();
+  return description;
+}
+
 }  // namespace bb

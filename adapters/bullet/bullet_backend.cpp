@@ -12,6 +12,7 @@
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "bullet_contacts.hpp"
+#include "bullet_engine.hpp"
 #include "bullet_gyroscopic.hpp"
 #include "bullet_hinges.hpp"
 #include "bullet_settings.hpp"
@@ -114,7 +115,7 @@ class BulletSimulation : public Simulation {
   }
 
   Settings settings() const override {
-    Settings s = engine_key_settings(engines_, "bullet");
+    Settings s = engine_key_settings(engines_, bullet_description());
     s.push_back(
         {"precision", sizeof(btScalar) == 8 ? std::string("double") : std::string("float")});
     s.push_back({"step", std::string("stepSimulation(dt, 1, dt): one fixed substep")});
@@ -152,8 +153,10 @@ class BulletSimulation : public Simulation {
     info.m_startWorldTransform.setRotation(
         btQuaternion(btScalar(b.orientation.x()), btScalar(b.orientation.y()),
                      btScalar(b.orientation.z()), btScalar(b.orientation.w())));
-    info.m_linearDamping = btScalar(engine_setting(engines_, "bullet", "linear_damping"));
-    info.m_angularDamping = btScalar(engine_setting(engines_, "bullet", "angular_damping"));
+    info.m_linearDamping =
+        btScalar(engine_setting(engines_, bullet_description(), "linear_damping"));
+    info.m_angularDamping =
+        btScalar(engine_setting(engines_, bullet_description(), "angular_damping"));
     auto body = std::make_unique<btRigidBody>(info);
     if (!b.fixed) {
       body->setLinearVelocity(to_bt(b.velocity));
@@ -176,7 +179,7 @@ class BulletSimulation : public Simulation {
         body->setRestitution(btScalar(ground->restitution));
         body->setFriction(btScalar(engine_friction(*ground)));
       }
-      if (engine_setting(engines_, "bullet", "ccd") != 0.0 && !b.fixed) {
+      if (engine_setting(engines_, bullet_description(), "ccd") != 0.0 && !b.fixed) {
         body->setCcdMotionThreshold(btScalar(inner_radius(b)));
         body->setCcdSweptSphereRadius(btScalar(inner_radius(b)));
       }
@@ -249,7 +252,9 @@ class BulletBackend : public Backend {
  public:
   std::string name() const override { return BB_BULLET_NAME; }
   /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override { return catalogue_supports(name()); }
+  FeatureSet supports() const override {
+    return description_supports(bullet_description(), name());
+  }
   FeatureSet needs() const override {
     return kSpringsByHand ? FeatureSet{Feature::Springs} : FeatureSet{};
   }

@@ -60,4 +60,10 @@ inline EngineDescription bullet_engine() {
           {"hinge_erp", "hinge_cfm"}};
 }
 
+/// The description, made once: what the adapter reads its settings' defaults from.
+inline const EngineDescription& bullet_description() {
+  static const EngineDescription description = bullet_engine();
+  return description;
+}
+
 }  // namespace bb

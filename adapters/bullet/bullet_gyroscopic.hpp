@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "bullet_engine.hpp"
 #include "scene/backend.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/scene.hpp"
@@ -21,7 +22,7 @@ inline constexpr int kBulletGyroscopicFlags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICI
 
 /// Whether the case keeps the gyroscopic term (the key gyroscopic_term, on by default).
 inline bool bullet_gyroscopic(const EngineTables& engines) {
-  return engine_setting(engines, "bullet", "gyroscopic_term") != 0.0;
+  return engine_setting(engines, bullet_description(), "gyroscopic_term") != 0.0;
 }
 
 /// Sets `body`'s gyroscopic flag from the case, leaving its other flags as they are.

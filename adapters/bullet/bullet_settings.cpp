@@ -4,6 +4,7 @@
 #include <string>
 
 #include "../engine_friction.hpp"
+#include "bullet_engine.hpp"
 #include "scene/engine_keys.hpp"
 
 namespace bb {
@@ -11,7 +12,7 @@ namespace bb {
 namespace {
 
 double key(const EngineTables& engines, const char* name) {
-  return engine_setting(engines, "bullet", name);
+  return engine_setting(engines, bullet_description(), name);
 }
 
 /// Appends `<name>_min` and `<name>_max` of `values` (0 when there are none).
@@ -114,7 +115,7 @@ void add_contact_settings(const World& scene, const EngineTables& engines,
   out.push_back({"warm_starting_factor", double(info.m_warmstartingFactor)});
   out.push_back({"linear_slop", double(info.m_linearSlop)});
   out.push_back({"global_cfm", double(info.m_globalCfm)});
-  if (engine_setting(engines, "bullet", "ccd") != 0.0)
+  if (engine_setting(engines, bullet_description(), "ccd") != 0.0)
     out.push_back(
         {"ccd_contacts", S("a CCD contact (createPredictiveContacts) gets restitution 0 and the "
                            "product of the frictions")});

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bullet_engine.hpp"
 #include "bullet_vectors.hpp"
 #include "physics/step_start.hpp"
 #include "scene/engine_catalogue.hpp"
@@ -92,7 +93,7 @@ class SoftBodySimulation : public Simulation {
 
   Settings settings() const override {
     using S = std::string;
-    Settings s = engine_key_settings(engines_, "bullet");
+    Settings s = engine_key_settings(engines_, bullet_description());
     s.push_back({"precision", sizeof(btScalar) == 8 ? S("double") : S("float")});
     s.push_back({"step", S("btSoftRigidDynamicsWorld::stepSimulation(dt, 1, dt): one fixed "
                            "substep")});
@@ -166,7 +167,9 @@ class SoftBodyBackend : public Backend {
   std::string name() const override { return "bullet-softbody"; }
   /// Points on springs under gravity, pushed by impulses: no contacts, no spin, no air.
   /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override { return catalogue_supports(name()); }
+  FeatureSet supports() const override {
+    return description_supports(bullet_description(), name());
+  }
   FeatureSet needs() const override { return {Feature::Springs}; }
   std::pair<std::string, std::string> library_version() const override {
     const int v = btGetVersion();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "bullet_engine.hpp"
 #include "bullet_vectors.hpp"
 #include "scene/engine_keys.hpp"
 
@@ -50,7 +51,8 @@ BulletSpringJoints::BulletSpringJoints(const World& scene, const EngineTables& e
                                        const std::vector<std::unique_ptr<btRigidBody>>& bodies,
                                        btDynamicsWorld& world)
     : world_(world),
-      limit_if_needed_(engine_setting(engines, "bullet", "spring_limit_if_needed") != 0.0) {
+      limit_if_needed_(engine_setting(engines, bullet_description(), "spring_limit_if_needed") !=
+                       0.0) {
   for (const Spring& s : scene.springs) {
     const Body& a = scene.bodies[static_cast<std::size_t>(s.body_a)];
     const Body& b = scene.bodies[static_cast<std::size_t>(s.body_b)];

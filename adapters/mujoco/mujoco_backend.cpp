@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../point_body.hpp"
+#include "mujoco_engine.hpp"
 #include "mujoco_model.hpp"
 #include "physics/step_start.hpp"
 #include "scene/contact_pairs.hpp"
@@ -69,7 +70,7 @@ class MujocoSimulation : public Simulation {
         start_(world, dt, {}),
         model_(load_model(mujoco_model_xml(world, dt))),
         data_(mj_makeData(model_)),
-        gyroscopic_(engine_setting(engines, "mujoco", "gyroscopic_term") != 0.0) {
+        gyroscopic_(engine_setting(engines, mujoco_description(), "gyroscopic_term") != 0.0) {
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
       const Body& b = world.bodies[i];
       const int id = static_cast<int>(i) + 1;  // 0 is the world body
@@ -131,7 +132,7 @@ class MujocoSimulation : public Simulation {
   }
 
   Settings settings() const override {
-    Settings s = engine_key_settings(engines_, "mujoco");
+    Settings s = engine_key_settings(engines_, mujoco_description());
     s.push_back({"precision", std::string(sizeof(mjtNum) == 8 ? "double" : "float")});
     s.push_back({"integrator", std::string("Euler (MuJoCo's default, set explicitly): the new "
                                            "velocities first, then the positions with them")});
@@ -252,7 +253,9 @@ class MujocoBackend : public Backend {
  public:
   std::string name() const override { return "mujoco"; }
   /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override { return catalogue_supports(name()); }
+  FeatureSet supports() const override {
+    return description_supports(mujoco_description(), name());
+  }
   std::pair<std::string, std::string> library_version() const override {
     const int v = mj_version();
     return {"mujoco", std::to_string(v / 100) + "." + std::to_string(v / 10 % 10) + "." +

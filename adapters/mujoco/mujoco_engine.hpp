@@ -32,4 +32,10 @@ inline EngineDescription mujoco_engine() {
           {}};
 }
 
+/// The description, made once: what the adapter reads its settings' defaults from.
+inline const EngineDescription& mujoco_description() {
+  static const EngineDescription description = mujoco_engine();
+  return description;
+}
+
 }  // namespace bb

@@ -14,6 +14,7 @@
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "ode_contacts.hpp"
+#include "ode_engine.hpp"
 #include "ode_hinges.hpp"
 #include "physics/step_start.hpp"
 #include "scene/engine_catalogue.hpp"
@@ -96,15 +97,16 @@ class OdeSimulation : public Simulation {
     // threads each need their own.
     dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_),
                                          threading_);
-    quick_step_ = engine_setting(engines, "ode", "quick_step") != 0.0;
-    gyroscopic_ = engine_setting(engines, "ode", "gyroscopic_term") != 0.0;
+    quick_step_ = engine_setting(engines, ode_description(), "quick_step") != 0.0;
+    gyroscopic_ = engine_setting(engines, ode_description(), "gyroscopic_term") != 0.0;
     dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), scene.gravity.z());
-    dWorldSetERP(world_, engine_setting(engines, "ode", "erp"));
-    dWorldSetCFM(world_, engine_setting(engines, "ode", "cfm"));
+    dWorldSetERP(world_, engine_setting(engines, ode_description(), "erp"));
+    dWorldSetCFM(world_, engine_setting(engines, ode_description(), "cfm"));
     dWorldSetQuickStepNumIterations(
-        world_, static_cast<int>(engine_setting(engines, "ode", "quick_step_iterations")));
-    dWorldSetLinearDamping(world_, engine_setting(engines, "ode", "linear_damping"));
-    dWorldSetAngularDamping(world_, engine_setting(engines, "ode", "angular_damping"));
+        world_,
+        static_cast<int>(engine_setting(engines, ode_description(), "quick_step_iterations")));
+    dWorldSetLinearDamping(world_, engine_setting(engines, ode_description(), "linear_damping"));
+    dWorldSetAngularDamping(world_, engine_setting(engines, ode_description(), "angular_damping"));
     dWorldSetAutoDisableFlag(world_, 0);
     for (const Body& b : scene.bodies) {
       // No contacts in the scene: no space, no geoms, only bodies.
@@ -134,9 +136,10 @@ class OdeSimulation : public Simulation {
     }
     // Contacts: ODE's own geoms and detection, only when the scene has something to touch.
     if (scene_has_contacts(scene)) {
-      dWorldSetContactSurfaceLayer(world_, engine_setting(engines, "ode", "contact_surface_layer"));
-      contacts_ = std::make_unique<OdeContacts>(scene, world_, bodies_,
-                                                engine_setting(engines, "ode", "bounce_vel"));
+      dWorldSetContactSurfaceLayer(
+          world_, engine_setting(engines, ode_description(), "contact_surface_layer"));
+      contacts_ = std::make_unique<OdeContacts>(
+          scene, world_, bodies_, engine_setting(engines, ode_description(), "bounce_vel"));
     }
     if (!kSpringsByHand) make_spring_joints();
     make_ode_hinges(scene, world_, bodies_);
@@ -183,7 +186,7 @@ class OdeSimulation : public Simulation {
   }
 
   Settings settings() const override {
-    Settings s = engine_key_settings(engines_, "ode");
+    Settings s = engine_key_settings(engines_, ode_description());
     s.push_back({"precision", std::string(sizeof(dReal) == 8 ? "double" : "float")});
     s.push_back({"auto_disable", false});
     s.push_back({"gyroscopic", std::string(gyroscopic_ ? kOdeGyroscopicOn : kOdeGyroscopicOff)});
@@ -318,7 +321,7 @@ class OdeBackend : public Backend {
  public:
   std::string name() const override { return BB_BACKEND_NAME; }
   /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override { return catalogue_supports(name()); }
+  FeatureSet supports() const override { return description_supports(ode_description(), name()); }
 #ifdef BB_SPRINGS_BY_HAND
   /// The same engine as `ode` wherever the scene has no springs: it takes part only where
   /// it has.

@@ -45,4 +45,10 @@ inline EngineDescription ode_engine() {
           {"hinge_erp", "hinge_cfm"}};
 }
 
+/// The description, made once: what the adapter reads its settings' defaults from.
+inline const EngineDescription& ode_description() {
+  static const EngineDescription description = ode_engine();
+  return description;
+}
+
 }  // namespace bb

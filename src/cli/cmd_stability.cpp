@@ -7,6 +7,7 @@
 #include "report/markdown_text.hpp"
 #include "report/summary_tables.hpp"
 #include "report/table.hpp"
+#include "run/engine_catalogue.hpp"
 #include "run/interrupt.hpp"
 #include "run/stability.hpp"
 #include "scene/backend_names.hpp"
@@ -34,7 +35,7 @@ std::string stability_page(const CaseResults& results) {
 
 /// The backends a stability search of `scene` runs: those that run it, but the reference.
 std::vector<std::string> searched(const Scene& scene) {
-  std::vector<std::string> out = runnable_backend_names(scene);
+  std::vector<std::string> out = runnable_backend_names(scene, engine_catalogue());
   std::erase(out, "reference");
   return out;
 }
@@ -47,7 +48,7 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
   for (const Scene& scene : scenes) {
-    const std::vector<std::string> known = backend_names(scene);
+    const std::vector<std::string> known = backend_names(scene, engine_catalogue());
     for (const std::string& b : backends)
       if (b == "reference" || std::find(known.begin(), known.end(), b) == known.end())
         throw CaseError(scene.file, 0,

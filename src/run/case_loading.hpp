@@ -1,5 +1,6 @@
 // Loading a case with every word this build knows: the loader of the model
-// (scene/load_case.hpp) is handed the observable kinds of the registry.
+// (scene/load_case.hpp) is handed the observable kinds of the registry and the engines of
+// the catalogue.
 #pragma once
 
 #include <string>
@@ -8,6 +9,9 @@
 #include "scene/load_case.hpp"
 
 namespace bb {
+
+/// Every observable kind of the registry and every engine of the catalogue.
+const CaseVocabulary& every_word();
 
 /// Load the case at `path`; throws CaseError.
 Scene load_case(const std::string& path);

@@ -10,6 +10,7 @@
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
 #include "run/claims.hpp"
+#include "run/engine_catalogue.hpp"
 #include "run/gates.hpp"
 #include "run/run_summary.hpp"
 #include "run/sweep_runner.hpp"
@@ -39,12 +40,12 @@ std::vector<double> selected_dts(const Scene& scene, const RunOptions& options) 
 }
 
 void check_backend_names(const Scene& scene, const RunOptions& options) {
-  const std::vector<std::string> known = backend_names(scene);
+  const std::vector<std::string> known = backend_names(scene, engine_catalogue());
   for (const std::string& name : options.backends)
     if (std::find(known.begin(), known.end(), name) == known.end())
       throw CaseError(scene.file, 0,
                       "--backends names '" + name + "', which this case does not run; it runs: " +
-                          joined(runnable_backend_names(scene)));
+                          joined(runnable_backend_names(scene, engine_catalogue())));
 }
 
 /// Per backend, its ok run at the smallest dt: the fallback reference of DESIGN.md.

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "course/course_backend.hpp"
+#include "run/engine_catalogue.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/engine_catalogue.hpp"
 #include "scene/plugin_api.hpp"

@@ -33,9 +33,9 @@ const std::vector<std::string>& known_spin_rules() {
   return v;
 }
 
-std::vector<std::string> engine_backend_names() {
+std::vector<std::string> engine_backend_names(const EngineCatalogue& catalogue) {
   std::vector<std::string> out;
-  for (const EngineDescription& e : engine_catalogue())
+  for (const EngineDescription& e : catalogue)
     for (const std::string& b : e.backends) out.push_back(b);
   return out;
 }
@@ -68,10 +68,10 @@ std::vector<CourseVariant> course_variants(const Scene& scene) {
   return out;
 }
 
-std::vector<std::string> backend_names(const Scene& scene) {
+std::vector<std::string> backend_names(const Scene& scene, const EngineCatalogue& catalogue) {
   std::vector<std::string> out = {"reference"};
   for (const CourseVariant& v : course_variants(scene)) out.push_back(v.name);
-  for (const std::string& e : engine_backend_names()) out.push_back(e);
+  for (const std::string& e : engine_backend_names(catalogue)) out.push_back(e);
   return out;
 }
 
@@ -79,14 +79,20 @@ std::vector<std::string> backend_names(const Scene& scene) {
 
 namespace bb {
 
-FeatureSet catalogue_supports(const std::string& name) {
-  for (const EngineDescription& e : engine_catalogue())
-    if (const auto at = e.supports.find(name); at != e.supports.end()) return at->second;
+FeatureSet description_supports(const EngineDescription& engine, const std::string& name) {
+  const auto at = engine.supports.find(name);
+  return at == engine.supports.end() ? FeatureSet{} : at->second;
+}
+
+FeatureSet catalogue_supports(const EngineCatalogue& catalogue, const std::string& name) {
+  for (const EngineDescription& e : catalogue)
+    if (e.supports.count(name) != 0) return description_supports(e, name);
   return {};
 }
 
-std::string why_backend_cannot_run(const Scene& scene, const std::string& name) {
-  for (const EngineDescription& e : engine_catalogue()) {
+std::string why_backend_cannot_run(const Scene& scene, const std::string& name,
+                                   const EngineCatalogue& catalogue) {
+  for (const EngineDescription& e : catalogue) {
     if (std::find(e.backends.begin(), e.backends.end(), name) == e.backends.end()) continue;
     if (!e.has_adapter) return "it has no adapter in this version of beachball";
     const FeatureSet used = scene.features();
@@ -97,7 +103,7 @@ std::string why_backend_cannot_run(const Scene& scene, const std::string& name) 
         return "it takes part only in scenes with " + joined(absent) + ", and this case has none";
     }
     std::vector<std::string> unsupported;
-    for (Feature f : used.missing_from(catalogue_supports(name)))
+    for (Feature f : used.missing_from(catalogue_supports(catalogue, name)))
       unsupported.push_back(feature_name(f));
     if (!unsupported.empty()) return "it does not support " + joined(unsupported);
     return "";
@@ -106,10 +112,11 @@ std::string why_backend_cannot_run(const Scene& scene, const std::string& name) 
   return "";
 }
 
-std::vector<std::string> runnable_backend_names(const Scene& scene) {
+std::vector<std::string> runnable_backend_names(const Scene& scene,
+                                                const EngineCatalogue& catalogue) {
   std::vector<std::string> out;
-  for (const std::string& name : backend_names(scene))
-    if (why_backend_cannot_run(scene, name).empty()) out.push_back(name);
+  for (const std::string& name : backend_names(scene, catalogue))
+    if (why_backend_cannot_run(scene, name, catalogue).empty()) out.push_back(name);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/engine_catalogue.hpp"
 #include "scene/scene.hpp"
 
 namespace bb {
@@ -25,22 +26,24 @@ const std::vector<std::string>& known_friction_rules();
 const std::vector<std::string>& known_hit_rules();
 const std::vector<std::string>& known_spin_rules();
 /// The engines' backend names, whether built or not, from the engines' descriptions.
-std::vector<std::string> engine_backend_names();
+std::vector<std::string> engine_backend_names(const EngineCatalogue& catalogue);
 
 /// Every course variant the case asks for, in a stable order.
 std::vector<CourseVariant> course_variants(const Scene& scene);
 /// Every backend name the case could be asked to run: reference, course variants, engines
 /// (those without an adapter, or that cannot run the scene, among them: asked for by name,
 /// they get a row that says why).
-std::vector<std::string> backend_names(const Scene& scene);
+std::vector<std::string> backend_names(const Scene& scene, const EngineCatalogue& catalogue);
 
 /// Why backend `name` cannot run `scene` ("it does not support 3d", "it takes part only in
 /// scenes with springs, and this case has none", "it has no adapter in this version of
 /// beachball"), from the engines' descriptions; "" when it can. The reference and the course
 /// variants run every scene.
-std::string why_backend_cannot_run(const Scene& scene, const std::string& name);
+std::string why_backend_cannot_run(const Scene& scene, const std::string& name,
+                                   const EngineCatalogue& catalogue);
 
 /// The backends of backend_names() that run `scene`, in the same order.
-std::vector<std::string> runnable_backend_names(const Scene& scene);
+std::vector<std::string> runnable_backend_names(const Scene& scene,
+                                                const EngineCatalogue& catalogue);
 
 }  // namespace bb

@@ -1,10 +1,14 @@
 // The words a case file may use that the layers above the model define: the observable
-// kinds (observe/observable_registry.hpp declares them, one row each). The loader is handed
-// them, so that a new kind is added where it is measured and nowhere in the model.
+// kinds (observe/observable_registry.hpp declares them, one row each) and the engines with
+// their settings and backends (the adapters' descriptions, run/engine_catalogue.hpp). The
+// loader is handed them, so that a new kind is added where it is measured and a new engine
+// in its adapter, nowhere in the model.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "scene/engine_catalogue.hpp"
 
 namespace bb {
 
@@ -17,6 +21,7 @@ struct ObservableWord {
 
 struct CaseVocabulary {
   std::vector<ObservableWord> observables;
+  EngineCatalogue engines;
 };
 
 }  // namespace bb

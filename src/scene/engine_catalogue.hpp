@@ -1,7 +1,8 @@
 // What each engine adapter says about itself, whether or not its plugin was built: its
 // settings table, the backend names it provides and the keys it takes, with defaults. Each
 // adapter folder holds its own description (adapters/<engine>/<engine>_engine.hpp); the
-// adapters' CMake list gathers them into engine_catalogue(), so adding an engine touches
+// adapters' CMake list gathers them into the catalogue (run/engine_catalogue.hpp), which is
+// handed to the loader: the model compiles no adapter's code, and adding an engine touches
 // its own folder and that list, nothing in src/.
 #pragma once
 
@@ -49,10 +50,13 @@ struct EngineDescription {
   std::vector<std::string> hinge_numbers = {};
 };
 
-/// What backend `name` of the catalogue supports (none for a name it does not know).
-FeatureSet catalogue_supports(const std::string& name);
-
 /// Every engine the adapters describe, in the adapters' CMake order.
-const std::vector<EngineDescription>& engine_catalogue();
+using EngineCatalogue = std::vector<EngineDescription>;
+
+/// What backend `name` of `engine` supports (none for a name it does not provide).
+FeatureSet description_supports(const EngineDescription& engine, const std::string& name);
+
+/// What backend `name` of `catalogue` supports (none for a name it does not know).
+FeatureSet catalogue_supports(const EngineCatalogue& catalogue, const std::string& name);
 
 }  // namespace bb

@@ -4,24 +4,17 @@
 
 namespace bb {
 
-std::vector<std::string> engine_names() {
-  std::vector<std::string> out;
-  for (const EngineDescription& e : engine_catalogue()) out.push_back(e.engine);
-  return out;
-}
-
-const EngineKey* find_engine_key(const std::string& engine, const std::string& key) {
-  for (const EngineDescription& e : engine_catalogue())
-    for (const EngineKey& k : e.keys)
-      if (k.engine == engine && k.key == key) return &k;
+const EngineKey* find_engine_key(const EngineDescription& engine, const std::string& key) {
+  for (const EngineKey& k : engine.keys)
+    if (k.key == key) return &k;
   return nullptr;
 }
 
-double engine_setting(const EngineTables& tables, const std::string& engine,
+double engine_setting(const EngineTables& tables, const EngineDescription& engine,
                       const std::string& key) {
   const EngineKey* known = find_engine_key(engine, key);
-  if (known == nullptr) throw std::logic_error("no engine setting " + engine + "." + key);
-  const auto e = tables.find(engine);
+  if (known == nullptr) throw std::logic_error("no engine setting " + engine.engine + "." + key);
+  const auto e = tables.find(engine.engine);
   if (e != tables.end()) {
     const auto v = e->second.find(key);
     if (v != e->second.end()) return v->second.value;
@@ -29,17 +22,14 @@ double engine_setting(const EngineTables& tables, const std::string& engine,
   return known->fallback;
 }
 
-Settings engine_key_settings(const EngineTables& tables, const std::string& engine) {
+Settings engine_key_settings(const EngineTables& tables, const EngineDescription& engine) {
   Settings out;
-  for (const EngineDescription& e : engine_catalogue()) {
-    if (e.engine != engine) continue;
-    for (const EngineKey& k : e.keys) {
-      const double v = engine_setting(tables, engine, k.key);
-      if (k.kind == KeyKind::Boolean)
-        out.push_back({k.key, v != 0.0});
-      else
-        out.push_back({k.key, v});
-    }
+  for (const EngineKey& k : engine.keys) {
+    const double v = engine_setting(tables, engine, k.key);
+    if (k.kind == KeyKind::Boolean)
+      out.push_back({k.key, v != 0.0});
+    else
+      out.push_back({k.key, v});
   }
   return out;
 }

@@ -12,14 +12,14 @@
 
 namespace bb {
 
-/// The settings tables of the known engines ("bullet" covers bullet and bullet-float).
-std::vector<std::string> engine_names();
-/// The key, or nullptr when unknown.
-const EngineKey* find_engine_key(const std::string& engine, const std::string& key);
-/// The case's value for `engine`.`key`, or the default.
-double engine_setting(const EngineTables& tables, const std::string& engine,
+/// The key of `engine`'s table, or nullptr when unknown.
+const EngineKey* find_engine_key(const EngineDescription& engine, const std::string& key);
+
+/// The case's value for `engine`.`key`, or the default its description gives.
+double engine_setting(const EngineTables& tables, const EngineDescription& engine,
                       const std::string& key);
+
 /// Every key of `engine` with the value this case gives it, for a run's engine_settings.
-Settings engine_key_settings(const EngineTables& tables, const std::string& engine);
+Settings engine_key_settings(const EngineTables& tables, const EngineDescription& engine);
 
 }  // namespace bb

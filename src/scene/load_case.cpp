@@ -174,10 +174,10 @@ Scene parse_case(std::string_view text, const std::string& file, const CaseVocab
   load::read_hinges(root, scene, names);
   load::read_impulses(root, scene, names);
   load::read_course(root, scene);
-  load::read_engines(root, scene);
+  load::read_engines(root, scene, vocabulary.engines);
   load::read_observes(root, scene, names, vocabulary);
-  load::read_gates(root, scene);
-  load::read_claims(root, scene);
+  load::read_gates(root, scene, vocabulary.engines);
+  load::read_claims(root, scene, vocabulary.engines);
   load::read_sweep(root, scene);
   load::read_report_and_stability(root, scene);
   root.finish();

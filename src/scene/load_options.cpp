@@ -47,18 +47,19 @@ void read_course(TomlReader& root, Scene& scene) {
   r.finish();
 }
 
-void read_engines(TomlReader& root, Scene& scene) {
+void read_engines(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue) {
   const toml::table* t = root.table("engines");
   if (t == nullptr) return;
   TomlReader engines = sub_reader(root, *t, "[engines]");
-  for (const std::string& engine : engine_names()) {
+  for (const EngineDescription& description : catalogue) {
+    const std::string& engine = description.engine;
     const toml::table* e = engines.table(engine);
     if (e == nullptr) continue;
     TomlReader r = sub_reader(engines, *e, "[engines." + engine + "]");
     auto& values = scene.engines[engine];
     for (auto&& [key, node] : *e) {
       const std::string name(key.str());
-      const EngineKey* known = find_engine_key(engine, name);
+      const EngineKey* known = find_engine_key(description, name);
       if (known == nullptr) continue;  // finish() names it
       EngineValue v;
       v.line = r.line_of(name);
@@ -133,26 +134,26 @@ MetricNames::MetricNames(const Scene& scene) {
 /// Fail unless `backend`, named by `key` of `r` (`what` in messages), is one `scene` runs.
 void require_runnable(const TomlReader& r, const Scene& scene, const std::string& key,
                       const std::string& what, const std::string& backend,
-                      const std::vector<std::string>& runnable) {
+                      const std::vector<std::string>& runnable, const EngineCatalogue& catalogue) {
   if (contains(runnable, backend)) return;
-  const std::vector<std::string> known = backend_names(scene);
+  const std::vector<std::string> known = backend_names(scene, catalogue);
   if (!contains(known, backend))
     r.fail(r.line_of(key), what + " names backend '" + backend +
                                "', which this case does not run; it runs: " + joined(runnable));
   r.fail(r.line_of(key), what + " names backend '" + backend + "', which cannot run this case: " +
-                             why_backend_cannot_run(scene, backend) +
+                             why_backend_cannot_run(scene, backend, catalogue) +
                              "; it runs: " + joined(runnable));
 }
 
-void read_gates(TomlReader& root, Scene& scene) {
-  const std::vector<std::string> backends = runnable_backend_names(scene);
+void read_gates(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue) {
+  const std::vector<std::string> backends = runnable_backend_names(scene, catalogue);
   const MetricNames metrics(scene);
   for (const toml::table* t : root.tables("gate")) {
     TomlReader r = sub_reader(root, *t, "[[gate]]");
     Gate g;
     g.line = r.line();
     g.backend = r.string("backend");
-    require_runnable(r, scene, "backend", "[[gate]]", g.backend, backends);
+    require_runnable(r, scene, "backend", "[[gate]]", g.backend, backends, catalogue);
     g.metric = r.string("metric");
     if (!metrics.contains(g.metric))
       r.fail(r.line_of("metric"),
@@ -170,7 +171,8 @@ namespace {
 /// One side of a [[claim]], `key` "left" or "right": a number, or
 /// "<backend or *>:<metric or observable>" naming something the case has.
 ClaimSide read_claim_side(TomlReader& r, const Scene& scene, const std::string& key,
-                          const std::vector<std::string>& backends, const MetricNames& metrics) {
+                          const std::vector<std::string>& backends, const MetricNames& metrics,
+                          const EngineCatalogue& catalogue) {
   ClaimSide side;
   if (r.holds_number(key)) {
     side.number = r.number(key);
@@ -184,7 +186,7 @@ ClaimSide read_claim_side(TomlReader& r, const Scene& scene, const std::string& 
   side.backend = text.substr(0, colon);
   side.metric = text.substr(colon + 1);
   if (side.backend != "*")
-    require_runnable(r, scene, key, "[[claim]] '" + key + "'", side.backend, backends);
+    require_runnable(r, scene, key, "[[claim]] '" + key + "'", side.backend, backends, catalogue);
   if (!metrics.contains(side.metric))
     r.fail(r.line_of(key), "[[claim]] '" + key + "' names '" + side.metric +
                                "', which is neither an error metric (" +
@@ -231,8 +233,8 @@ void read_claim_reading(TomlReader& r, Claim& c) {
 
 }  // namespace
 
-void read_claims(TomlReader& root, Scene& scene) {
-  const std::vector<std::string> backends = runnable_backend_names(scene);
+void read_claims(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue) {
+  const std::vector<std::string> backends = runnable_backend_names(scene, catalogue);
   const MetricNames metrics(scene);
   const std::vector<std::string> ops = {"<", "<=", ">", ">=", "~"};
   for (const toml::table* t : root.tables("claim")) {
@@ -242,11 +244,11 @@ void read_claims(TomlReader& root, Scene& scene) {
     c.text = r.string("text");
     if (c.text.empty()) r.fail(r.line_of("text"), "[[claim]] 'text' must not be empty");
     c.seed = r.string_or("seed", "");
-    c.left = read_claim_side(r, scene, "left", backends, metrics);
+    c.left = read_claim_side(r, scene, "left", backends, metrics, catalogue);
     c.op = r.string("op");
     if (!contains(ops, c.op))
       r.fail(r.line_of("op"), "[[claim]] 'op' is '" + c.op + "'; known: " + joined(ops));
-    c.right = read_claim_side(r, scene, "right", backends, metrics);
+    c.right = read_claim_side(r, scene, "right", backends, metrics, catalogue);
     if (c.left.is_number())
       r.fail(r.line_of("left"), "[[claim]] 'left' must name a quantity, not a number");
     if (c.right.backend == "*" && c.left.backend != "*")

@@ -48,11 +48,11 @@ void read_springs(TomlReader& root, Scene& scene, const BodyNames& names);
 void read_hinges(TomlReader& root, Scene& scene, const BodyNames& names);
 void read_impulses(TomlReader& root, Scene& scene, const BodyNames& names);
 void read_course(TomlReader& root, Scene& scene);
-void read_engines(TomlReader& root, Scene& scene);
+void read_engines(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue);
 void read_observes(TomlReader& root, Scene& scene, const BodyNames& names,
                    const CaseVocabulary& vocabulary);
-void read_gates(TomlReader& root, Scene& scene);
-void read_claims(TomlReader& root, Scene& scene);
+void read_gates(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue);
+void read_claims(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue);
 void read_sweep(TomlReader& root, Scene& scene);
 void read_report_and_stability(TomlReader& root, Scene& scene);
 

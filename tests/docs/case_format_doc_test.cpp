@@ -12,6 +12,7 @@
 #include <set>
 
 #include "docs/doc_tables.hpp"
+#include "run/engine_catalogue.hpp"
 #include "scene/case_error.hpp"
 #include "scene/engine_keys.hpp"
 #include "scene/toml_reader.hpp"
@@ -78,11 +79,9 @@ SectionKeys keys_the_loader_accepts() {
     }
     accepted[table].insert(key);
   }
-  for (const std::string& engine : engine_names()) {
-    std::set<std::string>& keys = accepted["[engines." + engine + "]"];
-    for (const EngineDescription& e : engine_catalogue())
-      for (const EngineKey& k : e.keys)
-        if (k.engine == engine) keys.insert(k.key);
+  for (const EngineDescription& e : engine_catalogue()) {
+    std::set<std::string>& keys = accepted["[engines." + e.engine + "]"];
+    for (const EngineKey& k : e.keys) keys.insert(k.key);
   }
   return accepted;
 }

@@ -11,6 +11,7 @@
 
 #include "report/backend_style.hpp"
 #include "run/drawn_bodies.hpp"
+#include "run/engine_catalogue.hpp"
 #include "scene/backend_names.hpp"
 #include "support/test_support.hpp"
 
@@ -145,7 +146,7 @@ origin = [0.0, 10.0, 0.0]
   CaseResults results;
   results.scene = &scene;
   results.reference_run = falling_run(scene, "reference", 2001, 0.0);
-  const std::vector<std::string> names = engine_backend_names();
+  const std::vector<std::string> names = engine_backend_names(engine_catalogue());
   for (int i = 0; i < 12; ++i)
     results.runs.push_back(falling_run(
         scene, i < static_cast<int>(names.size()) ? names[i] : "course/rk4", 2001, 0.01 * i));
@@ -193,7 +194,7 @@ TEST(BackendStyle, EveryBackendOfEveryBundledCaseHasAColourOfItsOwnInItsCase) {
   for (const auto& entry : std::filesystem::directory_iterator(test::source_path("cases"))) {
     const Scene scene = load_case(entry.path().string());
     std::set<std::string> names;
-    for (const std::string& name : backend_names(scene)) names.insert(name);
+    for (const std::string& name : backend_names(scene, engine_catalogue())) names.insert(name);
     names.insert("reference");
     std::set<std::string> colours;
     for (const std::string& name : names) {

@@ -9,6 +9,7 @@
 #include <map>
 
 #include "run/claims.hpp"
+#include "run/engine_catalogue.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/metric_names.hpp"
 #include "support/test_support.hpp"
@@ -159,7 +160,7 @@ std::optional<CaseResults> contradicting_results(const Scene& scene, const Claim
 TEST(SuiteClaims, EveryClaimFailsOnNumbersThatContradictIt) {
   int checked = 0;
   for (const Scene& scene : bundled_cases()) {
-    const std::vector<std::string> backends = backend_names(scene);
+    const std::vector<std::string> backends = backend_names(scene, engine_catalogue());
     for (std::size_t k = 0; k < scene.claims.size(); ++k) {
       const Claim& claim = scene.claims[k];
       // "*": the reference and a backend that is not the reference; else the one named.

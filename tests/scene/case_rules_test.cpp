@@ -3,6 +3,7 @@
 // their ranges. (Each refusal also has a file in tests/bad_cases/.)
 #include <gtest/gtest.h>
 
+#include "run/engine_catalogue.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
 #include "scene/contact_pairs.hpp"
@@ -47,8 +48,9 @@ TEST(CaseRules, TheBackendsACaseRunsExistAndCanRunIt) {
   std::string three_d = test::kMinimalCase;
   three_d.replace(three_d.find("dims = 2"), 8, "dims = 3");
   const std::vector<std::string> flat =
-      runnable_backend_names(test::scene_from(test::kMinimalCase));
-  const std::vector<std::string> deep = runnable_backend_names(test::scene_from(three_d));
+      runnable_backend_names(test::scene_from(test::kMinimalCase), engine_catalogue());
+  const std::vector<std::string> deep =
+      runnable_backend_names(test::scene_from(three_d), engine_catalogue());
   for (const auto& names : {flat, deep}) {
     EXPECT_TRUE(has(names, "mujoco"));  // free bodies: it runs the minimal case
     // Springs by hand are their engine itself on a scene without springs.
@@ -60,8 +62,9 @@ TEST(CaseRules, TheBackendsACaseRunsExistAndCanRunIt) {
   }
   EXPECT_TRUE(has(flat, "box2d"));
   EXPECT_FALSE(has(deep, "box2d"));
-  EXPECT_NE(why_backend_cannot_run(test::scene_from(three_d), "box2d").find("3d"),
-            std::string::npos);
+  EXPECT_NE(
+      why_backend_cannot_run(test::scene_from(three_d), "box2d", engine_catalogue()).find("3d"),
+      std::string::npos);
   // The load message that lists them lists only those.
   try {
     test::scene_from(std::string(test::kMinimalCase) +

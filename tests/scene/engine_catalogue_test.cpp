@@ -7,6 +7,7 @@
 
 #include <set>
 
+#include "run/engine_catalogue.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/engine_keys.hpp"
 #include "support/test_support.hpp"
@@ -31,7 +32,7 @@ TEST(EngineCatalogue, EveryEngineDescribesItsBackendsAndKeys) {
       EXPECT_TRUE(k.kind != KeyKind::Boolean || k.fallback == 1.0 || k.fallback == 0.0) << k.key;
     }
   }
-  const std::vector<std::string> names = engine_backend_names();
+  const std::vector<std::string> names = engine_backend_names(engine_catalogue());
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()), backends);
 }
 
@@ -50,10 +51,9 @@ TEST(EngineCatalogue, ACaseMaySetEveryKeyOfEveryEngine) {
   const Scene scene = test::scene_from(text);
   for (const EngineDescription& e : engine_catalogue())
     for (const EngineKey& k : e.keys)
-      EXPECT_EQ(engine_setting(scene.engines, e.engine, k.key), k.kind == KeyKind::Boolean ? 1.0
-                                                                : k.kind == KeyKind::Integer
-                                                                    ? 7.0
-                                                                    : 0.125)
+      EXPECT_EQ(engine_setting(scene.engines, e, k.key), k.kind == KeyKind::Boolean   ? 1.0
+                                                         : k.kind == KeyKind::Integer ? 7.0
+                                                                                      : 0.125)
           << e.engine << "." << k.key;
 }
 

@@ -10,6 +10,7 @@
 #include "scene/case_error.hpp"
 #include "scene/contact_pairs.hpp"
 #include "scene/engine_keys.hpp"
+#include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -45,9 +46,10 @@ TEST(LoadCase, EveryKeyOfTheFormatLoads) {
   EXPECT_DOUBLE_EQ(s.springs.back().rest_length, 1.5);
   ASSERT_EQ(s.hinges.size(), 1u);
   EXPECT_EQ(s.hinges[0].body, 2);
-  EXPECT_EQ(engine_setting(s.engines, "bullet", "solver_iterations"), 20.0);
-  EXPECT_EQ(engine_setting(s.engines, "ode", "quick_step"), 1.0);
-  EXPECT_EQ(engine_setting(s.engines, "ode", "quick_step_iterations"), 20.0);  // default
+  EXPECT_EQ(engine_setting(s.engines, *test::description_of("bullet"), "solver_iterations"), 20.0);
+  EXPECT_EQ(engine_setting(s.engines, *test::description_of("ode"), "quick_step"), 1.0);
+  EXPECT_EQ(engine_setting(s.engines, *test::description_of("ode"), "quick_step_iterations"),
+            20.0);  // default
   ASSERT_EQ(s.observes.size(), 2u);
   EXPECT_EQ(s.observes[0].name, "bounce_apex/a/2");
   ASSERT_EQ(s.gates.size(), 1u);
@@ -159,6 +161,20 @@ TEST(LoadCase, TakesTheObservableKindsItIsHanded) {
     EXPECT_NE(std::string(e.what()).find("unknown observable kind 'wobble'"), std::string::npos)
         << e.what();
   }
+}
+
+// Nor any engine: the catalogue is handed to it, and a table of an engine it was not handed
+// is refused.
+TEST(LoadCase, TakesTheEnginesItIsHanded) {
+  const std::string text =
+      "name = \"v\"\ndims = 2\nduration = 1.0\nsample = 0.5\ndt = [0.5]\n"
+      "[[body]]\nname = \"b\"\nshape = \"sphere\"\nradius = 0.1\nmass = 1.0\n"
+      "[engines.ode]\nerp = 0.1\n";
+  const Scene scene = parse_case(text, "v.toml", every_word());
+  EXPECT_EQ(engine_setting(scene.engines, *test::description_of("ode"), "erp"), 0.1);
+  CaseVocabulary no_engines = every_word();
+  no_engines.engines.clear();
+  EXPECT_THROW(parse_case(text, "v.toml", no_engines), CaseError);
 }
 
 }  // namespace

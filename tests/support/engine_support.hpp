@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "run/engine_catalogue.hpp"
 #include "run/registry.hpp"
 #include "scene/engine_catalogue.hpp"
 

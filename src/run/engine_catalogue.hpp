@@ -1,0 +1,13 @@
+// The engines this build of beachball knows, built or not: the adapters' descriptions,
+// gathered by adapters/CMakeLists.txt into a generated file of this library. The loader is
+// handed the catalogue (run/case_loading.cpp); the model compiles no adapter's code.
+#pragma once
+
+#include "scene/engine_catalogue.hpp"
+
+namespace bb {
+
+/// Every engine the adapters describe, in the adapters' CMake order.
+const EngineCatalogue& engine_catalogue();
+
+}  // namespace bb
