@@ -14,6 +14,8 @@
 namespace bb {
 namespace {
 
+using test::text_setting;
+
 using test::engine;
 using test::registry;
 
@@ -104,12 +106,6 @@ TEST(Engines, FloatAndDoubleBulletDifferOnlyByRounding) {
   EXPECT_LT(difference, 5e-3);
 }
 
-/// A setting's text, or "" when `settings` lacks `key` or it is not text.
-std::string text_setting(const Settings& settings, const std::string& key) {
-  for (const auto& [k, v] : settings)
-    if (k == key && std::holds_alternative<std::string>(v)) return std::get<std::string>(v);
-  return "";
-}
 
 // A drag-free 2D fall of a spinning point mass beside a sphere: every engine runs it.
 const char* kPointFall = R"(name = "point_fall"

@@ -18,6 +18,8 @@
 namespace bb {
 namespace {
 
+using test::text_setting;
+
 /// The backend called `name` among those that take part in `scene` (null when it does not),
 /// with the set that owns the course variants: the pointer lives as long as the set.
 struct Found {
@@ -76,12 +78,6 @@ INSTANTIATE_TEST_SUITE_P(Engines, CrowdEngines, ::testing::ValuesIn(crowd_backen
                            return name;
                          });
 
-/// A setting's text, or "" when `settings` lacks `key` or it is not text.
-std::string text_setting(const Settings& settings, const std::string& key) {
-  for (const auto& [k, v] : settings)
-    if (k == key && std::holds_alternative<std::string>(v)) return std::get<std::string>(v);
-  return "";
-}
 
 // One ball thrown in the plane, as a 2D scene and (dims replaced) as a 3D one.
 const char* kThrow = R"(name = "throw"

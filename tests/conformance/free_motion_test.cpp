@@ -1,0 +1,163 @@
+// Properties of motion written once and run over every backend there is: the reference,
+// every course integrator and every engine backend of the catalogue. A backend that cannot
+// run a scene is skipped with the reason its description gives; one whose plugin was not
+// built, with that. A new engine is tested here with no edit to this file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "run/accuracy_run.hpp"
+#include "run/engine_catalogue.hpp"
+#include "scene/backend_names.hpp"
+#include "scene/motion.hpp"
+#include "support/engine_support.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+/// Every course integrator, so that each is a variant of the scenes below.
+const char* kCourse = R"(
+[course]
+integrators = ["explicit-euler", "semi-implicit-euler", "velocity-verlet", "rk4"]
+)";
+
+/// The reference, the four course integrators and every engine backend the catalogue holds.
+std::vector<std::string> every_backend() {
+  std::vector<std::string> names = {"reference", "course/explicit-euler",
+                                    "course/semi-implicit-euler", "course/velocity-verlet",
+                                    "course/rk4"};
+  for (const std::string& name : engine_backend_names(engine_catalogue())) names.push_back(name);
+  return names;
+}
+
+class Conformance : public ::testing::TestWithParam<std::string> {
+ protected:
+  /// The run of this backend on `scene` at its finest step, or a skip that says why not.
+  /// Empty when skipped.
+  std::optional<RunRecord> run(const Scene& scene) {
+    const std::string& name = GetParam();
+    const std::string why = why_backend_cannot_run(scene, name, engine_catalogue());
+    if (!why.empty()) {
+      skipped_ = name + " cannot run this scene: " + why;
+      return std::nullopt;
+    }
+    if (name == "reference") return run_accuracy(test::registry().reference(), scene, scene.sample);
+    set_ = backends_for(scene, test::registry());
+    const auto found = std::find_if(set_.all.begin(), set_.all.end(),
+                                    [&](const Backend* b) { return b->name() == name; });
+    if (found == set_.all.end()) {
+      skipped_ = name + " was not built on this machine";
+      return std::nullopt;
+    }
+    return run_accuracy(**found, scene, scene.dt.back());
+  }
+
+  /// Rounding allowed, relative: the float engines' own, else a double's over a run.
+  double tolerance() const { return test::single_precision(GetParam()) ? 2e-5 : 1e-9; }
+
+  std::string skipped_;
+
+ private:
+  BackendSet set_;
+};
+
+/// The final velocity of body `body` of `record`.
+Vec3 final_velocity(const RunRecord& record, int body) {
+  return record.trajectory.states.back()[static_cast<std::size_t>(body)].velocity;
+}
+
+TEST_P(Conformance, AConstantForceChangesTheVelocityByForceOverMassTimesTime) {
+  // 2 kg pushed by 3 N along x under gravity for 1 s: every method integrates a constant
+  // acceleration's velocity exactly, whatever its order.
+  const Scene scene = test::scene_from(std::string(R"(name = "pushed"
+dims = 2
+duration = 1.0
+sample = 0.25
+dt = [0.01]
+[[body]]
+name = "ball"
+radius = 0.1
+mass = 2.0
+velocity = [1.0, 4.0, 0.0]
+force = [3.0, 0.0, 0.0]
+)") + kCourse);
+  const std::optional<RunRecord> record = run(scene);
+  if (!record) GTEST_SKIP() << skipped_;
+  ASSERT_EQ(record->status, RunStatus::Ok) << record->reason;
+  const Vec3 v = final_velocity(*record, 0);
+  EXPECT_NEAR(v.x(), 1.0 + 1.5, tolerance() * 2.5);
+  EXPECT_NEAR(v.y(), 4.0 - 9.81, tolerance() * 5.81);
+}
+
+TEST_P(Conformance, AnImpulseChangesTheVelocityByImpulseOverMass) {
+  // 4 N s on 2 kg at 0.5 s, no gravity: +2 m/s from then on.
+  const Scene scene = test::scene_from(std::string(R"(name = "kicked"
+dims = 2
+duration = 1.0
+sample = 0.25
+dt = [0.01]
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "ball"
+radius = 0.1
+mass = 2.0
+velocity = [1.0, 0.0, 0.0]
+[[impulse]]
+body = "ball"
+time = 0.5
+impulse = [4.0, 0.0, 0.0]
+)") + kCourse);
+  const std::optional<RunRecord> record = run(scene);
+  if (!record) GTEST_SKIP() << skipped_;
+  ASSERT_EQ(record->status, RunStatus::Ok) << record->reason;
+  EXPECT_NEAR(final_velocity(*record, 0).x(), 3.0, tolerance() * 3.0);
+  // The sample at the push's own time is the state before it.
+  EXPECT_NEAR(record->trajectory.states[2][0].velocity.x(), 1.0, tolerance());
+}
+
+TEST_P(Conformance, TwoBallsThatMeetKeepTheirMomentum) {
+  // 1 kg at 2 m/s meets 3 kg at rest, head on, no gravity; whatever the contact model, the
+  // total momentum (2 kg m/s along x) stays, and the balls are apart at the end.
+  const Scene scene = test::scene_from(std::string(R"(name = "meet"
+dims = 2
+duration = 1.0
+sample = 0.25
+dt = [0.005]
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "light"
+radius = 0.1
+mass = 1.0
+position = [-0.5, 0.0, 0.0]
+velocity = [2.0, 0.0, 0.0]
+[[body]]
+name = "heavy"
+radius = 0.1
+mass = 3.0
+position = [0.0, 0.0, 0.0]
+[[contact]]
+bodies = ["light", "heavy"]
+restitution = 0.8
+)") + kCourse);
+  const std::optional<RunRecord> record = run(scene);
+  if (!record) GTEST_SKIP() << skipped_;
+  ASSERT_EQ(record->status, RunStatus::Ok) << record->reason;
+  const Vec3 light = final_velocity(*record, 0);
+  const Vec3 heavy = final_velocity(*record, 1);
+  EXPECT_NEAR(light.x() + 3.0 * heavy.x(), 2.0, std::max(tolerance(), 1e-9) * 2.0);
+  EXPECT_NEAR(light.y() + 3.0 * heavy.y(), 0.0, 1e-9);
+  EXPECT_GT(heavy.x(), light.x()) << "the balls still approach each other at the end";
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryBackend, Conformance, ::testing::ValuesIn(every_backend()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           for (char& c : name)
+                             if (c == '-' || c == '/' || c == '+' || c == '.') c = '_';
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace bb
