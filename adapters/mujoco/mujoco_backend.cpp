@@ -11,9 +11,11 @@
 #include <mutex>
 #include <vector>
 
+#include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "mujoco_engine.hpp"
 #include "mujoco_model.hpp"
+#include "physics/hinge_motion.hpp"
 #include "physics/step_start.hpp"
 #include "scene/contact_pairs.hpp"
 #include "scene/engine_catalogue.hpp"
@@ -61,6 +63,12 @@ constexpr const char* kGyroscopicOff =
     "each step cancels the bias force's gyroscopic part, so a free body keeps its world "
     "angular velocity and never flips";
 
+constexpr const char* kHingeText =
+    "a MuJoCo hinge joint (<joint type=\"hinge\">) per [[hinge]], the body's parent the world: "
+    "one degree of freedom in reduced coordinates, so the anchor holds exactly (no constraint "
+    "rows, no ERP or CFM to soften it); limit off, motor off, no joint damping, stiffness, "
+    "friction loss or armature";
+
 class MujocoSimulation : public Simulation {
  public:
   MujocoSimulation(const World& world, const EngineTables& engines, double dt)
@@ -76,6 +84,7 @@ class MujocoSimulation : public Simulation {
       const int id = static_cast<int>(i) + 1;  // 0 is the world body
       qpos_.push_back(b.fixed ? -1 : model_->jnt_qposadr[model_->body_jntadr[id]]);
       dof_.push_back(b.fixed ? -1 : model_->body_dofadr[id]);
+      hinges_.push_back(b.fixed ? nullptr : hinge_of(world, i));
       if (!b.fixed) set_state(i, b.position, b.orientation, b.velocity, b.angular_velocity);
     }
     mj_forward(model_, data_);
@@ -115,7 +124,9 @@ class MujocoSimulation : public Simulation {
       }
       const mjtNum* q = data_->qpos + qpos_[i];
       const mjtNum* v = data_->qvel + dof_[i];
-      if (world_.dims == 3) {
+      if (hinges_[i] != nullptr) {
+        out[i] = hinged_state(b, *hinges_[i], q[0], v[0]);
+      } else if (world_.dims == 3) {
         const Quat orientation(q[3], q[4], q[5], q[6]);
         // A free joint's angular velocity is in the body's frame.
         out[i] = {{q[0], q[1], q[2]},
@@ -146,6 +157,7 @@ class MujocoSimulation : public Simulation {
     s.push_back({"fluid", std::string("option density 0 and viscosity 0: MuJoCo's own "
                                       "fluid forces off")});
     add_contact_settings(s);
+    if (!world_.hinges.empty()) s.push_back({"hinge", std::string(kHingeText)});
     s.push_back(
         {"plane_2d", std::string(world_.dims == 2 ? "two slide joints (x, y) and a hinge (z) per "
                                                     "moving body: MuJoCo's own joints hold it in "
@@ -160,11 +172,23 @@ class MujocoSimulation : public Simulation {
   }
 
  private:
-  /// Sets body `i`'s joint positions and velocities from a world state.
+  /// A hinged body's state at angle `angle` (rad) from where it starts, turning at `rate`
+  /// (rad/s): turned about the axis through the anchor.
+  static BodyState hinged_state(const Body& b, const Hinge& h, double angle, double rate) {
+    const Quat turn(Eigen::AngleAxisd(angle, h.axis));
+    const Vec3 centre = h.anchor + turn * (b.position - h.anchor);
+    const Vec3 spin = rate * h.axis;
+    return {centre, spin.cross(centre - h.anchor), turn * b.orientation.normalized(), spin};
+  }
+
+  /// Sets body `i`'s joint positions and velocities from a world state (a hinged body: its
+  /// turn rate only, as it starts).
   void set_state(std::size_t i, const Vec3& x, const Quat& q, const Vec3& v, const Vec3& w) {
     mjtNum* qpos = data_->qpos + qpos_[i];
     mjtNum* qvel = data_->qvel + dof_[i];
-    if (world_.dims == 3) {
+    if (hinges_[i] != nullptr) {
+      qvel[0] = w.dot(hinges_[i]->axis);
+    } else if (world_.dims == 3) {
       const Vec3 local = q.normalized().conjugate() * w;
       const mjtNum values[7] = {x.x(), x.y(), x.z(), q.w(), q.x(), q.y(), q.z()};
       std::copy(values, values + 7, qpos);
@@ -184,13 +208,20 @@ class MujocoSimulation : public Simulation {
     return s.angular_velocity.cross(Vec3(inertia * s.angular_velocity));
   }
 
-  /// An impulse J at a point: v += J / m and omega += I_world^-1 (r x J).
+  /// An impulse J at a point: v += J / m and omega += I_world^-1 (r x J); on a hinge, the
+  /// turn rate by J's moment about the axis over the inertia about it.
   void push(const Impulse& imp) {
     const std::size_t i = static_cast<std::size_t>(imp.body);
     const Body& body = world_.bodies[i];
     if (body.fixed) return;
     read(state_);
     BodyState s = state_[i];
+    if (hinges_[i] != nullptr) {
+      hinge_impulse(body, s.orientation, s.position, imp.impulse, imp.point.value_or(s.position),
+                    *hinges_[i], s.velocity, s.angular_velocity);
+      set_state(i, s.position, s.orientation, s.velocity, s.angular_velocity);
+      return;
+    }
     s.velocity += imp.impulse / body.mass;
     if (imp.point) {
       const Eigen::Matrix3d inertia = engine_world_inertia(body, s.orientation);
@@ -212,12 +243,31 @@ class MujocoSimulation : public Simulation {
                      "against a plane geom for the ground, only in the <pair>s the adapter "
                      "writes, one per body with the ground (contype and conaffinity 0 "
                      "elsewhere); bodies do not touch each other on MuJoCo yet")});
-    s.push_back({"contact_model",
-                 std::string("soft, as MuJoCo's contacts are: frictionless (condim 1), solref in "
-                             "the direct form (-k, -b), the reference acceleration -b v - k x of "
-                             "a spring and damper with k = 1 / tau^2 and b = 2 zeta / tau, "
-                             "solimp 0.9999 0.9999 0.001 0.5 2 (the impedance at its largest, so "
-                             "that acceleration is followed), margin 0")});
+    s.push_back(
+        {"contact_model",
+         std::string("soft, as MuJoCo's contacts are: solref in the direct form (-k, -b), "
+                     "the reference acceleration -b v - k x of a spring and damper with "
+                     "k = 1 / tau^2 and b = 2 zeta / tau, solimp 0.9999 0.9999 0.001 0.5 "
+                     "2 (the impedance at its largest, so that acceleration is "
+                     "followed), margin 1e-6 m and gap 0 (a contact counts from 1 um apart, "
+                     "so that a box placed exactly touching meets the ground with every "
+                     "corner, whatever the rounding); condim 3 (sliding friction along both "
+                     "tangents) where the pair has friction, else condim 1")});
+    s.push_back({"friction_cone",
+                 std::string("elliptic (option cone): Coulomb's circle, the same limit in every "
+                             "direction of sliding; MuJoCo's friction is soft like its normal "
+                             "force, so a body held by friction creeps at a speed that grows "
+                             "with the force it holds")});
+    add_friction_settings(world_, s);
+    if (has_friction())
+      s.push_back({"friction_model",
+                   std::string("MuJoCo's convex soft contact: a contact's normal and friction "
+                               "solved as one cost on the cone, friction rows at the velocity "
+                               "level (reference acceleration -b v_t), so the solver may trade "
+                               "the normal residual against the tangential one: a box sliding "
+                               "fast is pushed off the ground and hops (the trajectory shows "
+                               "it), and one held below the friction limit creeps at the speed "
+                               "at which the velocity-dependent friction balances its load")});
     s.push_back({"restitution_rule",
                  std::string("MuJoCo has no restitution: the pair's restitution e sets the damping "
                              "ratio zeta of that spring and damper, which rebounds at e of its "
@@ -230,6 +280,12 @@ class MujocoSimulation : public Simulation {
     if (const std::optional<ContactPair> first = first_ground_pair())
       s.push_back(
           {"contact_damping_ratio_first", mujoco_contact(first->restitution, dt_).damping_ratio});
+  }
+  /// Whether some body's pair with the ground has friction.
+  bool has_friction() const {
+    for (const ContactPair& pair : contact_pairs(world_))
+      if (pair.ground() && engine_friction(pair) > 0.0) return true;
+    return false;
   }
   /// The first body's pair with the ground, if any.
   std::optional<ContactPair> first_ground_pair() const {
@@ -246,6 +302,7 @@ class MujocoSimulation : public Simulation {
   mjData* data_;
   bool gyroscopic_;
   std::vector<int> qpos_, dof_;        ///< per body: its first qpos and dof, -1 when fixed
+  std::vector<const Hinge*> hinges_;   ///< per body: its [[hinge]], or nullptr
   State state_{world_.bodies.size()};  ///< read before each step for the forces
 };
 

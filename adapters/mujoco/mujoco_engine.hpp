@@ -1,8 +1,8 @@
 // MuJoCo as the harness knows it: `mujoco`, MuJoCo's own default integrator (Euler:
-// velocities first, then positions with the new velocities), on free bodies and their
-// frictionless contact with the ground for now: the force stage (gravity is MuJoCo's own),
-// impulses, rotation, boxes, 2D and 3D. Body contacts, friction, springs and hinges are not
-// built yet: a case with them is `unsupported`, the feature named.
+// velocities first, then positions with the new velocities), on free or hinged bodies and
+// their contact with the ground, with friction: the force stage (gravity is MuJoCo's own),
+// impulses, rotation, boxes, 2D and 3D. Body contacts and springs are not built yet: a case
+// with them is `unsupported`, the feature named.
 #pragma once
 
 #include "scene/engine_catalogue.hpp"
@@ -12,7 +12,8 @@ namespace bb {
 inline FeatureSet mujoco_supports() {
   return force_stage_features() | FeatureSet{Feature::ThreeD,        Feature::Rotation,
                                              Feature::Boxes,         Feature::Impulse,
-                                             Feature::GroundContact, Feature::Restitution};
+                                             Feature::GroundContact, Feature::Restitution,
+                                             Feature::Friction,      Feature::Hinge};
 }
 
 inline EngineDescription mujoco_engine() {
@@ -28,7 +29,7 @@ inline EngineDescription mujoco_engine() {
           {{"mujoco", mujoco_supports()}},
           false,
           {},
-          {{"gyroscopic", "qfrc_bias"}, {"plane_2d", "slide joints"}},
+          {{"gyroscopic", "qfrc_bias"}, {"plane_2d", "slide joints"}, {"hinge", "hinge joint"}},
           {}};
 }
 

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
+#include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "scene/contact_pairs.hpp"
 
@@ -22,12 +24,69 @@ MujocoContact mujoco_contact(double restitution, double dt) {
   return {omega * omega, 2.0 * zeta * omega, zeta};
 }
 
+const Hinge* hinge_of(const World& world, std::size_t body) {
+  const Hinge* found = nullptr;
+  for (const Hinge& h : world.hinges) {
+    if (h.body != static_cast<int>(body)) continue;
+    if (found != nullptr)
+      throw std::runtime_error("the MuJoCo adapter builds one hinge per body; body " +
+                               world.bodies[body].name + " has two");
+    found = &h;
+  }
+  return found;
+}
+
+namespace {
+
+/// A moving body's joints: a hinge about its [[hinge]]'s axis through the anchor (in the
+/// body's frame, the body placed as it starts), else a free joint in 3D or two slides and
+/// a hinge about z in 2D (the body placed at the origin, its joints' positions set later).
+std::string joints_and_place(const World& world, std::size_t i) {
+  const Body& b = world.bodies[i];
+  if (const Hinge* h = hinge_of(world, i)) {
+    const Quat q = b.orientation.normalized();
+    const Vec3 anchor = q.conjugate() * (h->anchor - b.position);
+    const Vec3 axis = q.conjugate() * h->axis;
+    return fmt::format(
+        "    <body name=\"b{}\" pos=\"{:.17g} {:.17g} {:.17g}\" quat=\"{:.17g} {:.17g} {:.17g} "
+        "{:.17g}\">\n"
+        "      <joint type=\"hinge\" pos=\"{:.17g} {:.17g} {:.17g}\" axis=\"{:.17g} {:.17g} "
+        "{:.17g}\" limited=\"false\" damping=\"0\" armature=\"0\" stiffness=\"0\" "
+        "frictionloss=\"0\"/>\n",
+        i, b.position.x(), b.position.y(), b.position.z(), q.w(), q.x(), q.y(), q.z(), anchor.x(),
+        anchor.y(), anchor.z(), axis.x(), axis.y(), axis.z());
+  }
+  std::string xml = fmt::format("    <body name=\"b{}\">\n", i);
+  if (world.dims == 3) return xml + "      <freejoint/>\n";
+  return xml +
+         "      <joint type=\"slide\" axis=\"1 0 0\"/>\n"
+         "      <joint type=\"slide\" axis=\"0 1 0\"/>\n"
+         "      <joint type=\"hinge\" axis=\"0 0 1\"/>\n";
+}
+
+/// The <pair> of body `pair.a` with the ground: its restitution as the damping ratio of a
+/// spring and damper in MuJoCo's direct form, solref = (-k, -b), the impedance at its
+/// largest so that the reference acceleration is followed; friction the engine coefficient
+/// along both tangents (condim 3), or none (condim 1).
+std::string ground_pair(const ContactPair& pair, double dt) {
+  const MujocoContact c = mujoco_contact(pair.restitution, dt);
+  const double mu = engine_friction(pair);
+  return fmt::format(
+      "    <pair geom1=\"g{}\" geom2=\"ground\" condim=\"{}\" friction=\"{:.17g} {:.17g} 0 0 0\" "
+      "solref=\"{:.17g} {:.17g}\" solimp=\"{} {} 0.001 0.5 2\" margin=\"{:.17g}\" gap=\"0\"/>\n",
+      pair.a, mu > 0.0 ? 3 : 1, mu, mu, -c.stiffness, -c.damping, kMujocoImpedance,
+      kMujocoImpedance, kMujocoMargin);
+}
+
+}  // namespace
+
 std::string mujoco_model_xml(const World& world, double dt) {
-  // MuJoCo's own fluid forces off: drag, Magnus and wind come from the force model.
+  // MuJoCo's own fluid forces off: drag, Magnus and wind come from the force model. The
+  // friction cone elliptic: Coulomb's circle, as the reference has it.
   std::string xml = fmt::format(
       "<mujoco model=\"beachball\">\n"
       "  <option timestep=\"{:.17g}\" gravity=\"{:.17g} {:.17g} {:.17g}\" integrator=\"Euler\" "
-      "density=\"0\" viscosity=\"0\"/>\n"
+      "density=\"0\" viscosity=\"0\" cone=\"elliptic\"/>\n"
       "  <worldbody>\n",
       dt, world.gravity.x(), world.gravity.y(), world.gravity.z());
   // The ground, touched only through the pairs below.
@@ -39,22 +98,14 @@ std::string mujoco_model_xml(const World& world, double dt) {
         world.ground->normal.x(), world.ground->normal.y(), world.ground->normal.z());
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const Body& b = world.bodies[i];
-    // A fixed body is part of the world; a moving one starts at the origin, its joints'
-    // positions set from the scene once the data is made (mujoco_backend.cpp).
+    // A fixed body is part of the world.
     if (b.fixed) {
       xml += fmt::format("    <body name=\"b{}\" pos=\"{:.17g} {:.17g} {:.17g}\"/>\n", i,
                          b.position.x(), b.position.y(), b.position.z());
       continue;
     }
     const Vec3 inertia = engine_inertia(b);
-    xml += fmt::format("    <body name=\"b{}\">\n", i);
-    if (world.dims == 3)
-      xml += "      <freejoint/>\n";
-    else
-      xml +=
-          "      <joint type=\"slide\" axis=\"1 0 0\"/>\n"
-          "      <joint type=\"slide\" axis=\"0 1 0\"/>\n"
-          "      <joint type=\"hinge\" axis=\"0 0 1\"/>\n";
+    xml += joints_and_place(world, i);
     xml += fmt::format(
         "      <inertial pos=\"0 0 0\" mass=\"{:.17g}\" diaginertia=\"{:.17g} {:.17g} "
         "{:.17g}\"/>\n",
@@ -73,18 +124,9 @@ std::string mujoco_model_xml(const World& world, double dt) {
     xml += "    </body>\n";
   }
   xml += "  </worldbody>\n";
-  // Each body's pair with the ground, frictionless (condim 1), its restitution as the
-  // damping ratio of a spring and damper in MuJoCo's direct form, solref = (-k, -b), with
-  // the impedance at its largest so that the reference acceleration is followed.
   std::string pairs;
-  for (const ContactPair& pair : contact_pairs(world)) {
-    if (!pair.ground() || world.bodies[pair.a].shape == Shape::Point) continue;
-    const MujocoContact c = mujoco_contact(pair.restitution, dt);
-    pairs += fmt::format(
-        "    <pair geom1=\"g{}\" geom2=\"ground\" condim=\"1\" solref=\"{:.17g} {:.17g}\" "
-        "solimp=\"{} {} 0.001 0.5 2\" margin=\"0\"/>\n",
-        pair.a, -c.stiffness, -c.damping, kMujocoImpedance, kMujocoImpedance);
-  }
+  for (const ContactPair& pair : contact_pairs(world))
+    if (pair.ground() && world.bodies[pair.a].shape != Shape::Point) pairs += ground_pair(pair, dt);
   if (!pairs.empty()) xml += "  <contact>\n" + pairs + "  </contact>\n";
   return xml + "</mujoco>\n";
 }

@@ -1,7 +1,8 @@
 // The MJCF model of a World for MuJoCo, written in memory: per moving body a free joint in
-// 3D, or two slide joints (x, y) and a hinge (z) in 2D, its mass and principal inertia; a
-// fixed body welded to the world. With a ground, each body's shape and its pair with the
-// ground (frictionless so far); bodies do not touch each other yet.
+// 3D, or two slide joints (x, y) and a hinge (z) in 2D, or the hinge joint of its [[hinge]];
+// its mass and principal inertia; a fixed body welded to the world. With a ground, each
+// body's shape and its pair with the ground (friction along both tangents, an elliptic
+// cone); bodies do not touch each other yet.
 #pragma once
 
 #include <string>
@@ -14,6 +15,10 @@ namespace bb {
 /// never below two steps, as MuJoCo's own `refsafe` keeps its standard form (a contact
 /// stiffer than the step resolves throws the body off).
 inline constexpr double kMujocoContactTime = 0.02;
+/// How far apart a contact counts, m: a body placed exactly touching the ground, as a case
+/// places it, meets it with every corner from the first step, whichever way the rounding of
+/// their distances falls (at 0 a resting box met it on one edge only and tipped over it).
+inline constexpr double kMujocoMargin = 1e-6;
 /// The contacts' impedance, MuJoCo's largest: the reference acceleration is followed.
 inline constexpr double kMujocoImpedance = 0.9999;
 
@@ -23,6 +28,10 @@ struct MujocoContact {
   double stiffness, damping, damping_ratio;
 };
 MujocoContact mujoco_contact(double restitution, double dt);
+
+/// The [[hinge]] of moving body `body`, or nullptr; throws for a body with two (MuJoCo
+/// would build them, but one angle is what the adapter reads).
+const Hinge* hinge_of(const World& world, std::size_t body);
 
 /// The model's XML at step `dt`.
 std::string mujoco_model_xml(const World& world, double dt);
