@@ -17,6 +17,8 @@ ObservableValue measure_drift_angle(const Scene&, const Observe&, const Trajecto
                                     const EventTrace*);
 ObservableValue measure_made_good_upwind(const Scene&, const Observe&, const Trajectory&,
                                          const EventTrace*);
+ObservableValue measure_surface_fold(const Scene&, const Observe&, const Trajectory&,
+                                     const EventTrace*);
 
 const std::vector<ObservableKind>& observable_kind_table() {
   // name, measure, scene-wide, counted, needs, formula
@@ -51,6 +53,7 @@ const std::vector<ObservableKind>& observable_kind_table() {
       {"forward_speed", measure_forward_speed},
       {"drift_angle", measure_drift_angle},
       {"made_good_upwind", measure_made_good_upwind},
+      {"surface_fold", measure_surface_fold, true},
   };
   return kinds;
 }

@@ -10,6 +10,7 @@
 #include "reference/peak_watch.hpp"
 #include "reference/scene_model.hpp"
 #include "reference/sliding_modes.hpp"
+#include "reference/wave_surface.hpp"
 #include "scene/text.hpp"
 
 namespace bb {
@@ -239,11 +240,11 @@ class ReferenceSimulation : public Simulation {
 }  // namespace
 
 FeatureSet ReferenceBackend::supports() const {
-  return force_stage_features() | FeatureSet{Feature::ThreeD,        Feature::Rotation,
-                                             Feature::GroundContact, Feature::BodyContact,
-                                             Feature::Restitution,   Feature::Impulse,
-                                             Feature::Boxes,         Feature::Springs,
-                                             Feature::Friction,      Feature::Hinge};
+  return force_stage_features() |
+         FeatureSet{Feature::ThreeD,      Feature::Rotation,    Feature::GroundContact,
+                    Feature::BodyContact, Feature::Restitution, Feature::Impulse,
+                    Feature::Boxes,       Feature::Springs,     Feature::Friction,
+                    Feature::Hinge,       Feature::Waves};
 }
 
 std::pair<std::string, std::string> ReferenceBackend::library_version() const {
@@ -253,6 +254,8 @@ std::pair<std::string, std::string> ReferenceBackend::library_version() const {
 std::unique_ptr<Simulation> ReferenceBackend::start_run(const World& scene,
                                                         const BackendSettings& settings,
                                                         double dt) const {
+  // A kinematic surface: its truth is its formula.
+  if (scene.waves) return start_wave_surface(scene, dt);
   if (const std::string why = SceneModel::beyond_exact_answer(scene); !why.empty())
     throw BeyondExactAnswer(why);
   return std::make_unique<ReferenceSimulation>(scene, settings, dt, tolerance_,

@@ -10,8 +10,10 @@ namespace bb {
 
 std::string missing_features(const Backend& backend, const Scene& scene) {
   std::string out;
-  for (Feature f : scene.features().missing_from(backend.supports()))
-    out += (out.empty() ? "" : ", ") + feature_name(f);
+  for (Feature f : scene.features().missing_from(backend.supports())) {
+    const std::string note = feature_absence_note(f);
+    out += (out.empty() ? "" : ", ") + feature_name(f) + (note.empty() ? "" : " (" + note + ")");
+  }
   return out;
 }
 

@@ -29,6 +29,12 @@ std::vector<int> drawn_bodies(const Scene& scene) {
     for (int b = 0; b < n; ++b) out.push_back(b);
     return out;
   }
+  // A wave surface: points spread along it, both ends included, so the whole profile shows.
+  if (scene.waves) {
+    for (int i : spread(scene.waves->points, static_cast<int>(kDrawnBodies)))
+      out.push_back(scene.waves->first_body + i);
+    return out;
+  }
   if (!scene.grid) {
     for (int b = 0; b < static_cast<int>(kDrawnBodies); ++b) out.push_back(b);
     return out;

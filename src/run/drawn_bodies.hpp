@@ -1,6 +1,7 @@
 // The bodies a run keeps the states of at report_dt, for the plots and the motion view:
 // every body of a small scene; of a big one (a spring grid, a crowd), a lattice of the
-// grid's particles that keeps the sheet's shape, and the first of the others. A run's state
+// grid's particles that keeps the sheet's shape, and the first of the others; of a wave
+// surface, points spread along it. A run's state
 // at report_dt then holds these bodies, in this order.
 #pragma once
 

@@ -39,6 +39,8 @@ std::string feature_name(Feature f) {
       return "applied-force";
     case Feature::Sailing:
       return "sailing";
+    case Feature::Waves:
+      return "waves";
     case Feature::Rotation:
       return "rotation";
     case Feature::Boxes:
@@ -53,6 +55,13 @@ std::vector<Feature> all_features() {
   std::vector<Feature> out;
   for (int i = 0; i < static_cast<int>(Feature::Count); ++i) out.push_back(static_cast<Feature>(i));
   return out;
+}
+
+std::string feature_absence_note(Feature f) {
+  if (f == Feature::Waves)
+    return "a kinematic surface, moved by its formula, which the reference evaluates: nothing "
+           "to integrate";
+  return "";
 }
 
 }  // namespace bb

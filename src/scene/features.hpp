@@ -24,6 +24,7 @@ enum class Feature {
   Impulse,        ///< instantaneous pushes at given times
   AppliedForce,   ///< a constant force or torque on some body
   Sailing,        ///< a boat's sail in the wind, its hull in the water
+  Waves,          ///< a kinematic wave surface: positions from a formula, nothing integrated
   Count
 };
 
@@ -51,6 +52,10 @@ class FeatureSet {
 
 /// Short lower-case name, e.g. "ground-contact".
 std::string feature_name(Feature f);
+
+/// What a backend without `f` is told beyond its name, or "": a kinematic wave surface is
+/// moved by its formula and has nothing for an integrator to do.
+std::string feature_absence_note(Feature f);
 /// What a backend simulates by taking the force model's loads before each step
 /// (physics/step_start.hpp): gravity and every force term.
 inline FeatureSet force_stage_features() {

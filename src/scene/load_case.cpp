@@ -159,6 +159,7 @@ Scene parse_case(std::string_view text, const std::string& file, const CaseVocab
   load::read_air_and_ground(root, scene);
   load::read_bodies(root, scene);
   const std::optional<load::GridPlan> grid = load::read_grid(root, scene);
+  load::read_waves(root, scene, grid.has_value());
   // Every limit that numbers decide, before the grid's particles and springs are made.
   check_case_size(file, case_size(root, scene, grid));
   if (grid) {
@@ -167,7 +168,8 @@ Scene parse_case(std::string_view text, const std::string& file, const CaseVocab
          ++i)
       load::refuse_ground_overlap(root, scene, scene.bodies[i], grid->origin_line);
   }
-  if (scene.bodies.empty()) root.fail(root.line(), "the case has no [[body]] and no [grid]");
+  if (scene.bodies.empty())
+    root.fail(root.line(), "the case has no [[body]], no [grid] and no [waves]");
   const load::BodyNames names(root, scene);
   load::read_contacts(root, scene, names);
   load::read_springs(root, scene, names);

@@ -43,6 +43,7 @@ class BodyNames {
 };
 
 void read_air_and_ground(TomlReader& root, Scene& scene);
+void read_waves(TomlReader& root, Scene& scene, bool has_grid);
 void read_contacts(TomlReader& root, Scene& scene, const BodyNames& names);
 void read_springs(TomlReader& root, Scene& scene, const BodyNames& names);
 void read_hinges(TomlReader& root, Scene& scene, const BodyNames& names);

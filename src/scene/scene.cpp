@@ -19,6 +19,20 @@ int World::body_index(const std::string& body_name) const {
   return -1;
 }
 
+Body wave_point(const Waves& w, int i) {
+  const double x0 = w.rest_x(i);
+  const double phase = w.wavenumber * x0;
+  Body b;
+  b.name = "w" + std::to_string(i);
+  b.shape = Shape::Point;
+  b.mass = 1.0;
+  b.line = w.line;
+  b.position = {x0 + w.amplitude * std::cos(phase), w.level + w.amplitude * std::sin(phase), 0.0};
+  b.velocity = {-w.amplitude * w.speed * std::sin(phase), w.amplitude * w.speed * std::cos(phase),
+                0.0};
+  return b;
+}
+
 FeatureSet World::features() const {
   FeatureSet f;
   if (dims == 3) f.add(Feature::ThreeD);
@@ -52,6 +66,7 @@ FeatureSet World::features() const {
   if (!springs.empty()) f.add(Feature::Springs);
   if (!hinges.empty()) f.add(Feature::Hinge);
   if (!impulses.empty()) f.add(Feature::Impulse);
+  if (waves) f.add(Feature::Waves);
   return f;
 }
 

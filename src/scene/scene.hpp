@@ -122,6 +122,30 @@ struct Grid {
   int line = 0;
 };
 
+/// The simplified Gerstner surface of seed section 10 ("Gerstner waves"), as a profile in the
+/// x-y plane: `points` surface points at rest positions x0 evenly from `from` to `to` at
+/// height `level`, each offset by a point on a circle of radius `amplitude`,
+///   x = x0 + amplitude cos(speed t + wavenumber x0),  y = level + amplitude sin(same phase).
+/// Pure kinematics: nothing is integrated. The points are expanded into Scene::bodies
+/// (point bodies w<i>, from `first_body` on), which only the formula moves.
+struct Waves {
+  double amplitude = 0.0;   ///< m
+  double wavenumber = 1.0;  ///< 1/m
+  double speed = 1.0;       ///< rad/s: the phase's rate
+  int points = 0;
+  double from = 0.0, to = 0.0;  ///< m, the rest positions' range along x
+  double level = 0.0;           ///< m, the rest height
+  int first_body = 0;
+  int line = 0;
+
+  /// The rest position x0 of surface point `i`.
+  double rest_x(int i) const { return from + (to - from) * i / (points - 1); }
+};
+
+/// Surface point `i` of `waves` as a body: where the formula puts it at time 0, moving as
+/// it moves there.
+Body wave_point(const Waves& waves, int i);
+
 /// A body turning about a fixed world axis.
 struct Hinge {
   int body = -1;
@@ -258,6 +282,7 @@ struct World {
   std::optional<Grid> grid;
   std::vector<Hinge> hinges;
   std::vector<Impulse> impulses;  ///< in time order
+  std::optional<Waves> waves;
 
   /// The features this world uses; a backend must support all of them.
   FeatureSet features() const;

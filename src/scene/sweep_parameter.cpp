@@ -80,6 +80,11 @@ std::conditional_t<std::is_const_v<S>, const double*, double*> target(
   }
   if (p[0] == "gravity" && p.size() == 2 && component(p[1]) >= 0)
     return &scene.gravity[component(p[1])];
+  if (p[0] == "waves" && p.size() == 2 && scene.waves) {
+    if (p[1] == "amplitude") return &scene.waves->amplitude;
+    if (p[1] == "wavenumber") return &scene.waves->wavenumber;
+    if (p[1] == "speed") return &scene.waves->speed;
+  }
   return nullptr;
 }
 
@@ -123,7 +128,7 @@ const char* kKnownPaths =
     "body.<name>.position|velocity|angular_velocity|half_extents|wind_force|force|torque.x|y|z, "
     "body.<name>.sail.angle|area|coefficient|heel_stiffness, "
     "ground.restitution|friction_static|friction_kinetic|normal (an angle in degrees), "
-    "air.density, air.wind.x|y|z, gravity.x|y|z";
+    "air.density, air.wind.x|y|z, gravity.x|y|z, waves.amplitude|wavenumber|speed";
 
 }  // namespace
 
@@ -134,7 +139,8 @@ std::string sweep_path_problem(const Scene& scene, const std::string& path) {
   if (!found) {
     if (p[0] == "body" && p.size() >= 2 && scene.body_index(p[1]) < 0)
       return "'" + path + "' names no body '" + p[1] + "'";
-    if ((p[0] == "ground" && !scene.ground) || (p[0] == "air" && !scene.air))
+    if ((p[0] == "ground" && !scene.ground) || (p[0] == "air" && !scene.air) ||
+        (p[0] == "waves" && !scene.waves))
       return "'" + path + "' names the " + p[0] + ", and the case has no [" + p[0] + "]";
     return "'" + path + "' names nothing in the case; known: " + kKnownPaths;
   }
@@ -173,6 +179,10 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
   if ((field == "area" || field == "coefficient") && value <= 0.0)
     return at + " must be greater than 0";
   if (field == "heel_stiffness" && value < 0.0) return at + " must not be negative";
+  if (p[0] == "waves" && (field == "amplitude" || field == "speed") && value < 0.0)
+    return at + " must not be negative";
+  if (p[0] == "waves" && field == "wavenumber" && value <= 0.0)
+    return at + " must be greater than 0";
   if (field == "angle" && (value < 0.0 || value > 90.0))
     return at + " is the sail's angle from the heading and must lie between 0 and 90 degrees";
   if (field == "restitution" && (value < 0.0 || value > 1.0))
@@ -210,6 +220,11 @@ void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
   const std::vector<std::string> p = sweep_path_parts(path);
   if (!(p[0] == "ground" && p.size() == 2 && p[1] == "normal")) {
     *target(scene, p) = value;
+    // A wave surface's points start where the formula puts them.
+    if (p[0] == "waves")
+      for (int i = 0; i < scene.waves->points; ++i)
+        scene.bodies[static_cast<std::size_t>(scene.waves->first_body + i)] =
+            wave_point(*scene.waves, i);
     return;
   }
   Ground& g = *scene.ground;

@@ -94,12 +94,18 @@ TEST(LoadCase, EveryBundledCaseLoads) {
     if (entry.path().extension() != ".toml") continue;
     const Scene s = load_case(entry.path().string());
     EXPECT_EQ(s.name + ".toml", entry.path().filename().string());
+    ++count;
+    // A kinematic wave surface has no step to sweep and no error to gate: its formula is
+    // its answer (its claims check it).
+    if (s.waves) {
+      EXPECT_FALSE(s.claims.empty()) << s.name;
+      continue;
+    }
     // The issue asks for at least five halvings from 1/30 s.
     ASSERT_GE(s.dt.size(), 6u) << s.name;
     EXPECT_NEAR(s.dt.front(), 1.0 / 30.0, 1e-15) << s.name;
     for (std::size_t i = 1; i < s.dt.size(); ++i) EXPECT_NEAR(s.dt[i - 1] / s.dt[i], 2.0, 1e-12);
     EXPECT_FALSE(s.gates.empty()) << s.name;
-    ++count;
   }
   EXPECT_GE(count, 3);
 }
