@@ -9,6 +9,7 @@
 #include <cstring>
 #include <memory>
 #include <mutex>
+#include <string_view>
 #include <vector>
 
 #include "../engine_friction.hpp"
@@ -63,6 +64,21 @@ constexpr const char* kGyroscopicOff =
     "each step cancels the bias force's gyroscopic part, so a free body keeps its world "
     "angular velocity and never flips";
 
+// How this build steps: BB_MUJOCO_INTEGRATOR is MuJoCo's option integrator.
+constexpr std::string_view kIntegrator = BB_MUJOCO_INTEGRATOR;
+constexpr const char* kIntegratorText =
+    kIntegrator == "RK4"
+        ? "RK4 (option integrator): MuJoCo's classic fourth-order Runge-Kutta, each stage "
+          "computing MuJoCo's own forces (gravity, contacts, joints, the bias force) again; the "
+          "force model's forces go in through xfrc_applied once per step and are held over its "
+          "four stages, as a game sets them"
+    : kIntegrator == "implicit"
+        ? "implicit (option integrator): implicit in velocity, the derivative of MuJoCo's own "
+          "velocity-dependent forces (the bias force's Coriolis and gyroscopic terms, damping) "
+          "taken into the step; the positions then with the new velocities"
+        : "Euler (MuJoCo's default, set explicitly): the new velocities first, then the "
+          "positions with them";
+
 constexpr const char* kHingeText =
     "a MuJoCo hinge joint (<joint type=\"hinge\">) per [[hinge]], the body's parent the world: "
     "one degree of freedom in reduced coordinates, so the anchor holds exactly (no constraint "
@@ -76,7 +92,7 @@ class MujocoSimulation : public Simulation {
         engines_(engines),
         dt_(dt),
         start_(world, dt, {}),
-        model_(load_model(mujoco_model_xml(world, dt))),
+        model_(load_model(mujoco_model_xml(world, dt, BB_MUJOCO_INTEGRATOR))),
         data_(mj_makeData(model_)),
         gyroscopic_(engine_setting(engines, mujoco_description(), "gyroscopic_term") != 0.0) {
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
@@ -145,9 +161,14 @@ class MujocoSimulation : public Simulation {
   Settings settings() const override {
     Settings s = engine_key_settings(engines_, mujoco_description());
     s.push_back({"precision", std::string(sizeof(mjtNum) == 8 ? "double" : "float")});
-    s.push_back({"integrator", std::string("Euler (MuJoCo's default, set explicitly): the new "
-                                           "velocities first, then the positions with them")});
-    s.push_back({"gyroscopic", std::string(gyroscopic_ ? kGyroscopicOn : kGyroscopicOff)});
+    s.push_back({"integrator", std::string(kIntegratorText)});
+    std::string gyroscopic = gyroscopic_ ? kGyroscopicOn : kGyroscopicOff;
+    if (!gyroscopic_ && kIntegrator == "RK4")
+      gyroscopic +=
+          " (under RK4 the torque is held over the four stages while the bias force "
+          "is computed again at each: it cancels the term at the step's start only, "
+          "and the world spin drifts slowly)";
+    s.push_back({"gyroscopic", gyroscopic});
     s.push_back({"forces", std::string("the force model's forces and torques through "
                                        "xfrc_applied at each body's centre, set before each "
                                        "step; gravity MuJoCo's own (option gravity)")});
@@ -308,7 +329,7 @@ class MujocoSimulation : public Simulation {
 
 class MujocoBackend : public Backend {
  public:
-  std::string name() const override { return "mujoco"; }
+  std::string name() const override { return BB_BACKEND_NAME; }
   /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
   FeatureSet supports() const override {
     return description_supports(mujoco_description(), name());

@@ -80,15 +80,15 @@ std::string ground_pair(const ContactPair& pair, double dt) {
 
 }  // namespace
 
-std::string mujoco_model_xml(const World& world, double dt) {
+std::string mujoco_model_xml(const World& world, double dt, const std::string& integrator) {
   // MuJoCo's own fluid forces off: drag, Magnus and wind come from the force model. The
   // friction cone elliptic: Coulomb's circle, as the reference has it.
   std::string xml = fmt::format(
       "<mujoco model=\"beachball\">\n"
-      "  <option timestep=\"{:.17g}\" gravity=\"{:.17g} {:.17g} {:.17g}\" integrator=\"Euler\" "
+      "  <option timestep=\"{:.17g}\" gravity=\"{:.17g} {:.17g} {:.17g}\" integrator=\"{}\" "
       "density=\"0\" viscosity=\"0\" cone=\"elliptic\"/>\n"
       "  <worldbody>\n",
-      dt, world.gravity.x(), world.gravity.y(), world.gravity.z());
+      dt, world.gravity.x(), world.gravity.y(), world.gravity.z(), integrator);
   // The ground, touched only through the pairs below.
   if (world.ground)
     xml += fmt::format(

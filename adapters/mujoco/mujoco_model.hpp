@@ -33,7 +33,8 @@ MujocoContact mujoco_contact(double restitution, double dt);
 /// would build them, but one angle is what the adapter reads).
 const Hinge* hinge_of(const World& world, std::size_t body);
 
-/// The model's XML at step `dt`.
-std::string mujoco_model_xml(const World& world, double dt);
+/// The model's XML at step `dt`, stepped by MuJoCo's `integrator` ("Euler", "RK4" or
+/// "implicit").
+std::string mujoco_model_xml(const World& world, double dt, const std::string& integrator);
 
 }  // namespace bb

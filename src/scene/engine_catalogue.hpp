@@ -46,8 +46,12 @@ struct EngineDescription {
   std::vector<std::string> single_precision = {};
   /// per engine_settings key, words its text always holds (the engine's own API, named);
   std::map<std::string, std::string> names_in_settings = {};
-  /// the number settings a scene with a hinge reports (a soft joint's ERP and CFM).
+  /// the number settings a scene with a hinge reports (a soft joint's ERP and CFM);
   std::vector<std::string> hinge_numbers = {};
+  /// per backend name whose step has stages (an engine's own RK4), why it does not step like
+  /// semi-implicit Euler: what the adapter applies before a step (the force stage, a torque
+  /// that cancels a term) is held over the stages while the engine's own forces are not.
+  std::map<std::string, std::string> staged_steps = {};
 };
 
 /// Every engine the adapters describe, in the adapters' CMake order.

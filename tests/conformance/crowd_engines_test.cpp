@@ -71,13 +71,7 @@ TEST_P(CrowdEngines, EveryBallStaysInTheBoxAndThePlane) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, CrowdEngines, ::testing::ValuesIn(crowd_backends()),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           for (char& c : name)
-                             if (c == '-' || c == '/' || c == '+' || c == '.') c = '_';
-                           return name;
-                         });
-
+                         test::param_test_name);
 
 // One ball thrown in the plane, as a 2D scene and (dims replaced) as a 3D one.
 const char* kThrow = R"(name = "throw"

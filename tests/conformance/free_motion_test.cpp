@@ -152,12 +152,7 @@ restitution = 0.8
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, Conformance, ::testing::ValuesIn(every_backend()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
-                           for (char& c : name)
-                             if (c == '-' || c == '/' || c == '+' || c == '.') c = '_';
-                           return name;
-                         });
+                         test::param_test_name);
 
 }  // namespace
 }  // namespace bb

@@ -249,11 +249,7 @@ TEST_P(FrictionEngines, ReportsItsCreepOnSlopeHold) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, FrictionEngines, ::testing::ValuesIn(test::rigid_engines()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+                         test::param_test_name);
 
 // (b) Bullet's box slides on all four corners: its centre stays within 1 mm of its resting
 // height and it does not tip by more than half a degree. Without the multipoint iterations

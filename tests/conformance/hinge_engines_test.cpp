@@ -207,15 +207,8 @@ TEST_P(HingeEngines, HangingPlankSwingsWithThePendulumPeriod) {
   EXPECT_LT(drift, kDriftTolerance);
 }
 
-/// "bullet-float" as "bullet_float": test names take no dash.
-std::string hinge_test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  std::replace(name.begin(), name.end(), '-', '_');
-  return name;
-}
-
 INSTANTIATE_TEST_SUITE_P(Engines, HingeEngines, ::testing::ValuesIn(test::rigid_engines()),
-                         hinge_test_name);
+                         test::param_test_name);
 
 }  // namespace
 }  // namespace bb

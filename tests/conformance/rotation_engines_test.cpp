@@ -167,7 +167,9 @@ TEST_P(RotationEngines, WithoutTheTermKeepsItsWorldSpinAndNeverFlips) {
   print_spin(GetParam() + " without the gyroscopic term", s);
   std::printf("  world spin drift %.2e rad/s\n", s.world_spin_drift);
   EXPECT_EQ(s.crossings, 0);
-  EXPECT_LT(s.world_spin_drift, 1e-6);
+  // Cancelled at each step's start, the term is gone to rounding; held over an engine's own
+  // RK4 stages (its description says so), it is gone to first order in the step only.
+  EXPECT_LT(s.world_spin_drift, test::staged_step(GetParam()).empty() ? 1e-6 : 1e-2);
   EXPECT_NE(text_setting(settings, "gyroscopic").find("never flips"), std::string::npos);
   EXPECT_EQ(test::setting_text(settings, "gyroscopic_term"), "false");
 }
@@ -224,13 +226,6 @@ TEST(OdeRotation, FlipsAtTheFinestStep) {
   EXPECT_LT(s.energy_change, -0.03);
 }
 
-/// "bullet-float" as "bullet_float": test names take no dash.
-std::string backend_test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  std::replace(name.begin(), name.end(), '-', '_');
-  return name;
-}
-
 // final_angle keeps whole turns on every engine: a free 2D ball spinning at -10 rad/s for
 // 2 s turns -1146 degrees, sampled every half second (5 radians between samples). Each
 // engine turns it its own way per step (ODE's first-order quaternion update loses about
@@ -254,9 +249,9 @@ TEST(FinalAngleOnEngines, EveryEngineKeepsEveryTurn) {
 
 INSTANTIATE_TEST_SUITE_P(Engines, RotationEngines,
                          ::testing::ValuesIn(test::rigid_engines_with(Feature::ThreeD)),
-                         backend_test_name);
+                         test::param_test_name);
 INSTANTIATE_TEST_SUITE_P(Engines, BulletRotation, ::testing::Values("bullet", "bullet-float"),
-                         backend_test_name);
+                         test::param_test_name);
 
 }  // namespace
 }  // namespace bb

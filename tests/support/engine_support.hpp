@@ -2,6 +2,8 @@
 // what a run's engine_settings say.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -87,6 +89,20 @@ inline std::string test_name(std::string name) {
   for (char& c : name)
     if (c == '-' || c == '/' || c == '+' || c == '.') c = '_';
   return name;
+}
+
+/// Why backend `name` steps in stages, as its description says, or "" (it steps like
+/// semi-implicit Euler).
+inline std::string staged_step(const std::string& name) {
+  const EngineDescription* d = description_of(name);
+  if (d == nullptr) return "";
+  const auto found = d->staged_steps.find(name);
+  return found == d->staged_steps.end() ? "" : found->second;
+}
+
+/// A parameterised test's name from its backend-name parameter (see test_name).
+inline std::string param_test_name(const ::testing::TestParamInfo<std::string>& info) {
+  return test_name(info.param);
 }
 
 /// Whether the backend called `name` takes part in `scene` (its needs are met there).
