@@ -91,7 +91,7 @@ class MujocoSimulation : public Simulation {
       : world_(world),
         engines_(engines),
         dt_(dt),
-        start_(world, dt, {}),
+        start_(world, dt, {false}),  // springs are MuJoCo tendons
         model_(load_model(mujoco_model_xml(world, dt, BB_MUJOCO_INTEGRATOR))),
         data_(mj_makeData(model_)),
         gyroscopic_(engine_setting(engines, mujoco_description(), "gyroscopic_term") != 0.0) {
@@ -179,6 +179,12 @@ class MujocoSimulation : public Simulation {
                                       "fluid forces off")});
     add_contact_settings(s);
     if (!world_.hinges.empty()) s.push_back({"hinge", std::string(kHingeText)});
+    if (!world_.springs.empty())
+      s.push_back({"springs", std::string("a MuJoCo spatial tendon per spring between sites at "
+                                          "the bodies' centres, with the spring's stiffness, "
+                                          "damping and rest length (springlength): MuJoCo's "
+                                          "own passive force, computed at every stage of its "
+                                          "step")});
     s.push_back(
         {"plane_2d", std::string(world_.dims == 2 ? "two slide joints (x, y) and a hinge (z) per "
                                                     "moving body: MuJoCo's own joints hold it in "

@@ -78,6 +78,19 @@ std::string ground_pair(const ContactPair& pair, double dt) {
       kMujocoImpedance, kMujocoMargin);
 }
 
+/// Each spring as a spatial tendon between the sites at its bodies' centres: MuJoCo's own
+/// spring (stiffness, rest length `springlength`) and damper along the tendon.
+std::string spring_tendons(const World& world) {
+  if (world.springs.empty()) return "";
+  std::string xml = "  <tendon>\n";
+  for (const Spring& s : world.springs)
+    xml += fmt::format(
+        "    <spatial stiffness=\"{:.17g}\" damping=\"{:.17g}\" springlength=\"{:.17g}\" "
+        "limited=\"false\"><site site=\"s{}\"/><site site=\"s{}\"/></spatial>\n",
+        s.stiffness, s.damping, s.rest_length, s.body_a, s.body_b);
+  return xml + "  </tendon>\n";
+}
+
 }  // namespace
 
 std::string mujoco_model_xml(const World& world, double dt, const std::string& integrator) {
@@ -98,10 +111,11 @@ std::string mujoco_model_xml(const World& world, double dt, const std::string& i
         world.ground->normal.x(), world.ground->normal.y(), world.ground->normal.z());
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const Body& b = world.bodies[i];
-    // A fixed body is part of the world.
+    // A fixed body is part of the world (with the site a spring ends at).
     if (b.fixed) {
-      xml += fmt::format("    <body name=\"b{}\" pos=\"{:.17g} {:.17g} {:.17g}\"/>\n", i,
-                         b.position.x(), b.position.y(), b.position.z());
+      xml += fmt::format(
+          "    <body name=\"b{}\" pos=\"{:.17g} {:.17g} {:.17g}\"><site name=\"s{}\"/></body>\n", i,
+          b.position.x(), b.position.y(), b.position.z(), i);
       continue;
     }
     const Vec3 inertia = engine_inertia(b);
@@ -121,9 +135,12 @@ std::string mujoco_model_xml(const World& world, double dt, const std::string& i
           "      <geom name=\"g{}\" type=\"box\" size=\"{:.17g} {:.17g} {:.17g}\" contype=\"0\" "
           "conaffinity=\"0\" mass=\"0\"/>\n",
           i, b.half_extents.x(), b.half_extents.y(), b.half_extents.z());
+    // The site at its centre, where its springs end.
+    if (!world.springs.empty()) xml += fmt::format("      <site name=\"s{}\"/>\n", i);
     xml += "    </body>\n";
   }
   xml += "  </worldbody>\n";
+  xml += spring_tendons(world);
   std::string pairs;
   for (const ContactPair& pair : contact_pairs(world))
     if (pair.ground() && world.bodies[pair.a].shape != Shape::Point) pairs += ground_pair(pair, dt);

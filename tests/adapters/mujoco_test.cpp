@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "course/course_backend.hpp"
 #include "metrics/errors.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
@@ -150,6 +151,34 @@ velocity = [3.0, 12.0, 0.0]
                 drag.dt[k], ratio);
     EXPECT_NEAR(ratio, 2.0, 0.2) << "first order: the error halves with the step";
   }
+}
+
+// Springs are MuJoCo tendons, MuJoCo's own passive force: its Euler steps them exactly as
+// the course's semi-implicit Euler does, and its RK4, which computes them again at each
+// stage, is fourth order on them (where it is first order on the force stage's drag).
+TEST(Mujoco, ItsSpringsAreTendonsThatItsOwnIntegratorsStep) {
+  const Backend* euler = test::engine("mujoco");
+  const Backend* rk4 = test::engine("mujoco/rk4");
+  if (euler == nullptr || rk4 == nullptr) GTEST_SKIP() << "mujoco was not built";
+  const Scene scene = load_case(test::source_path("cases/spring_pair.toml"));
+  const CourseBackend course(
+      {"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"});
+  const RunRecord mine = run_accuracy(*euler, scene, scene.report_dt);
+  ASSERT_EQ(mine.status, RunStatus::Ok) << mine.reason;
+  EXPECT_NE(test::text_setting(mine.engine_settings, "springs").find("tendon"), std::string::npos);
+  EXPECT_LT(max_position_difference(mine.trajectory,
+                                    run_accuracy(course, scene, scene.report_dt).trajectory),
+            1e-9);
+  const RunRecord reference = run_accuracy(test::registry().reference(), scene, scene.sample);
+  const double coarse =
+      compare(scene, run_accuracy(*rk4, scene, scene.dt[1]).trajectory, reference.trajectory)
+          .position_max;
+  const double fine =
+      compare(scene, run_accuracy(*rk4, scene, scene.dt[2]).trajectory, reference.trajectory)
+          .position_max;
+  std::printf("mujoco/rk4 on spring_pair: %.3g m, then %.3g m at half the step (ratio %.1f)\n",
+              coarse, fine, coarse / fine);
+  EXPECT_GT(coarse / fine, 12.0) << "fourth order halves the step for a sixteenth the error";
 }
 
 }  // namespace
