@@ -23,7 +23,7 @@ constexpr double kCanvasWidth = 760.0;  // pixels of one scene drawn at full siz
 constexpr double kMargin = 10.0;
 constexpr double kGap = 12.0;  // between small panels
 constexpr double kLegendWidth = 300.0;
-constexpr double kTitleHeight = 34.0;
+constexpr double kTitleHeight = 48.0;
 constexpr double kPanelTitle = 18.0;
 constexpr double kTimeBarHeight = 46.0;
 constexpr double kMinCanvasHeight = 240.0;
@@ -200,13 +200,16 @@ std::string reference_note(const std::vector<const RunRecord*>& runs, bool multi
   return multiples ? "the reference filled grey, under each backend" : "the reference filled grey";
 }
 
-std::string header(double width, double height, const std::string& title) {
+/// The picture's opening, its title and, on a line of its own under it (a long title ran off
+/// the picture's edge), what it draws how.
+std::string header(double width, double height, const std::string& title, const std::string& note) {
   return fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
       "width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" "
       "font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<text "
-      "x=\"{2}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{3}</text>\n",
-      num(width), num(height), num(kMargin), title);
+      "x=\"{2}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{3}</text>\n"
+      "<text x=\"{2}\" y=\"39\" fill=\"#444444\">{4}</text>\n",
+      num(width), num(height), num(kMargin), title, note);
 }
 
 }  // namespace
@@ -245,10 +248,10 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   const double height = bottom + kTimeBarHeight;
   const std::string speed =
       play == total ? "real time" : fmt::format("{:.2g} x real time", total / play);
-  std::string svg =
-      header(width, height,
-             fmt::format("{}: the motion at report_dt = {} s ({}; {})", escape_xml(scene.name),
-                         format_dt(scene.report_dt), speed, reference_note(runs, multiples)));
+  std::string svg = header(width, height,
+                           fmt::format("{}: the motion at report_dt = {} s", escape_xml(scene.name),
+                                       format_dt(scene.report_dt)),
+                           speed + "; " + reference_note(runs, multiples));
   // In small panels, the reference (when it has an answer) is drawn once, under each.
   const bool ghost = runs.front()->backend == "reference";
   const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
@@ -312,10 +315,11 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
     bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
   }
   const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
-  std::string svg = header(
-      width, bottom + kMargin,
-      fmt::format("{}: the scene at {} instants, report_dt = {} s ({})", escape_xml(scene.name),
-                  instants.size(), format_dt(scene.report_dt), reference_note(runs, multiples)));
+  std::string svg =
+      header(width, bottom + kMargin,
+             fmt::format("{}: the scene at {} instants, report_dt = {} s", escape_xml(scene.name),
+                         instants.size(), format_dt(scene.report_dt)),
+             reference_note(runs, multiples));
   svg += row_names;
   const bool ghost = multiples && runs.front()->backend == "reference";
   if (ghost) {
