@@ -1,7 +1,7 @@
 #include "reference/wave_surface.hpp"
 
-#include <cmath>
 #include <string>
+#include <tuple>
 
 namespace bb {
 
@@ -17,13 +17,8 @@ class WaveSurface : public Simulation {
     const double t = static_cast<double>(steps_) * dt_;
     const Waves& w = waves_;
     for (int i = 0; i < w.points; ++i) {
-      const double x0 = w.rest_x(i);
-      const double phase = w.speed * t + w.wavenumber * x0;
       BodyState& s = out[static_cast<std::size_t>(w.first_body + i)];
-      s.position = {x0 + w.amplitude * std::cos(phase), w.level + w.amplitude * std::sin(phase),
-                    0.0};
-      s.velocity = {-w.amplitude * w.speed * std::sin(phase),
-                    w.amplitude * w.speed * std::cos(phase), 0.0};
+      std::tie(s.position, s.velocity) = wave_motion(w, i, t);
     }
   }
 

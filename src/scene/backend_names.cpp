@@ -110,8 +110,7 @@ std::string why_backend_cannot_run(const Scene& scene, const std::string& name,
   }
   // A kinematic surface is moved by its formula, which the reference evaluates.
   if (name.rfind("course/", 0) == 0 && scene.features().has(Feature::Waves))
-    return "the course moves a wave surface by its formula, with nothing to integrate: the "
-           "reference evaluates that formula";
+    return "it does not support waves (" + feature_absence_note(Feature::Waves) + ")";
   // The reference and the course variants run every other scene.
   return "";
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 namespace bb {
 
@@ -19,17 +20,20 @@ int World::body_index(const std::string& body_name) const {
   return -1;
 }
 
-Body wave_point(const Waves& w, int i) {
+std::pair<Vec3, Vec3> wave_motion(const Waves& w, int i, double t) {
   const double x0 = w.rest_x(i);
-  const double phase = w.wavenumber * x0;
+  const double phase = w.speed * t + w.wavenumber * x0;
+  return {{x0 + w.amplitude * std::cos(phase), w.level + w.amplitude * std::sin(phase), 0.0},
+          {-w.amplitude * w.speed * std::sin(phase), w.amplitude * w.speed * std::cos(phase), 0.0}};
+}
+
+Body wave_point(const Waves& w, int i) {
   Body b;
   b.name = "w" + std::to_string(i);
   b.shape = Shape::Point;
   b.mass = 1.0;
   b.line = w.line;
-  b.position = {x0 + w.amplitude * std::cos(phase), w.level + w.amplitude * std::sin(phase), 0.0};
-  b.velocity = {-w.amplitude * w.speed * std::sin(phase), w.amplitude * w.speed * std::cos(phase),
-                0.0};
+  std::tie(b.position, b.velocity) = wave_motion(w, i, 0.0);
   return b;
 }
 

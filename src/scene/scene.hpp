@@ -6,6 +6,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/features.hpp"
@@ -145,6 +146,10 @@ struct Waves {
 /// Surface point `i` of `waves` as a body: where the formula puts it at time 0, moving as
 /// it moves there.
 Body wave_point(const Waves& waves, int i);
+
+/// Where surface point `i` of `waves` is at time `t` (s), and its velocity there: the
+/// formula of seed section 10, the one place it is written.
+std::pair<Vec3, Vec3> wave_motion(const Waves& waves, int i, double t);
 
 /// A body turning about a fixed world axis.
 struct Hinge {
