@@ -49,7 +49,9 @@ StepObserver::StepObserver(const Scene& scene)
       closing_(pairs_.size(), 0.0),
       normals_(pairs_.size(), Eigen::Vector3d::Zero()),
       rising_(scene.bodies.size(), false),
-      bounced_(scene.bodies.size(), false) {
+      bounced_(scene.bodies.size(), false),
+      episodes_(pairs_.size()),
+      post_owner_(scene.bodies.size(), -1) {
   trace_.bodies.resize(scene.bodies.size());
   for (const Observe& o : scene.observes) {
     if (observable_needs(o.kind, kWatchesSwings)) swinging_.push_back(o.body);
@@ -214,6 +216,43 @@ void StepObserver::observe_swing_ranges(const State& s) {
   }
 }
 
+void StepObserver::write_episode(std::size_t k, double t, const State& s) {
+  const ContactPair& pair = pairs_[k];
+  const Episode& ep = episodes_[k];
+  for (int body : {pair.a, pair.b}) {
+    if (body < 0 || post_owner_[body] != static_cast<int>(k)) continue;
+    trace_.bodies[body].post_velocity = s[body].velocity;
+  }
+  if (!ep.balances) return;
+  // The two bodies' balance over the episode, less what gravity did meanwhile: its impulse
+  // m g (t - t0), its work m g . dx and its angular impulse. The rest is the collision's.
+  const Body &body_a = scene_.bodies[pair.a], &body_b = scene_.bodies[pair.b];
+  const double mass = body_a.mass + body_b.mass;
+  const BodyState &a0 = ep.a0, &b0 = ep.b0;
+  const double gravity_work = scene_.gravity.dot((s[pair.a].position - a0.position) * body_a.mass +
+                                                 (s[pair.b].position - b0.position) * body_b.mass);
+  const Vec3 momentum_before = a0.velocity * body_a.mass + b0.velocity * body_b.mass;
+  const Vec3 angular_before = bb::angular_momentum(body_a, a0) + bb::angular_momentum(body_b, b0);
+  const double energy_before = bb::kinetic_energy(body_a, a0) + bb::kinetic_energy(body_b, b0);
+  trace_.first_collision = {
+      pair.a,
+      pair.b,
+      ep.event_time,
+      momentum(scene_, s, pair.a, pair.b) - momentum_before -
+          scene_.gravity * (mass * (t - ep.start_time)),
+      angular_momentum(scene_, s, pair.a, pair.b) - angular_before - ep.gravity_turn,
+      energy_before,
+      kinetic_energy(scene_, s, pair.a, pair.b) - gravity_work};
+}
+
+bool StepObserver::episode_watched(const ContactPair& pair) const {
+  // Until each body's first contact is read and, for two moving bodies, the first collision.
+  for (int body : {pair.a, pair.b})
+    if (body >= 0 && (!trace_.bodies[body].post_velocity || post_owner_[body] >= 0)) return true;
+  return !pair.ground() && !scene_.bodies[pair.b].fixed &&
+         (!trace_.first_collision || balance_open_);
+}
+
 void StepObserver::observe_contacts(double t, double dt, const State& s) {
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const ContactPair& pair = pairs_[k];
@@ -242,45 +281,68 @@ void StepObserver::observe_contacts(double t, double dt, const State& s) {
     // float engine leaves the two bodies a few ulps apart in speed.
     const double rounding =
         1e-5 * (s[pair.a].velocity.norm() + (b_moves ? s[pair.b].velocity.norm() : 0.0));
-    if (!first_ && closing_[k] > rounding && closing_before_normal <= rounding && p.gap < near) {
+    const bool hit =
+        !first_ && closing_[k] > rounding && closing_before_normal <= rounding && p.gap < near;
+    // Pushed apart over the step: a hit, or close and the speed of approach along a fixed
+    // normal fell by more than rounding (gravity and the flight only keep it or raise it).
+    const bool pushed =
+        hit || (!first_ && p.gap < near && closing_[k] - closing_before_normal > rounding);
+    Episode& ep = episodes_[k];
+    if (!first_ && episode_watched(pair)) {
+      if (ep.open && pushed && !hit) {
+        // A contact that lasts (a soft one) is read at the last step that still pushes; a
+        // new hit is a new contact.
+        if (b_moves) ep.gravity_turn += gravity_turn(s, pair.a, pair.b, dt);
+        write_episode(k, t, s);
+      } else if (ep.open) {
+        close_episode(k);
+      }
+      if (!pushed) {
+        ep.start_time = t, ep.a0 = s[pair.a], ep.b0 = s[b];
+        ep.gravity_turn = Vec3::Zero();
+      } else if (!ep.open && b_moves) {
+        ep.gravity_turn += gravity_turn(s, pair.a, pair.b, dt);
+      }
+    }
+    if (hit) {
       for (int body : {pair.a, b_moves ? pair.b : -1}) {
         if (body < 0) continue;
         BodyEvents& e = trace_.bodies[body];
         e.contact_times.push_back(t);
         // The normal points from the second shape to the first: away from b for a.
-        if (!e.post_velocity)
-          e.post_velocity = s[body].velocity,
+        if (!e.post_velocity) {
           e.post_normal = body == pair.a ? Vec3(p.normal) : Vec3(-p.normal);
+          post_owner_[body] = static_cast<int>(k);
+        }
         bounced_[body] = true;
       }
-      if (b_moves && !trace_.first_collision) {
-        // The two bodies' balance over the step, less what gravity did meanwhile: its
-        // impulse m g dt and its work m g . dx. The rest is the collision's.
-        const Body &body_a = scene_.bodies[pair.a], &body_b = scene_.bodies[pair.b];
-        const double mass = body_a.mass + body_b.mass;
-        const double gravity_work =
-            scene_.gravity.dot((s[pair.a].position - previous_[pair.a].position) * body_a.mass +
-                               (s[pair.b].position - previous_[pair.b].position) * body_b.mass);
-        // Gravity's angular impulse about the origin over the step, at the mid positions.
-        Vec3 gravity_turn = Vec3::Zero();
-        for (int i : {pair.a, pair.b})
-          gravity_turn += (0.5 * (s[i].position + previous_[i].position))
-                              .cross(scene_.gravity * (scene_.bodies[i].mass * dt));
-        trace_.first_collision = {
-            pair.a,
-            pair.b,
-            t,
-            momentum(scene_, s, pair.a, pair.b) - momentum(scene_, previous_, pair.a, pair.b) -
-                scene_.gravity * (mass * dt),
-            angular_momentum(scene_, s, pair.a, pair.b) -
-                angular_momentum(scene_, previous_, pair.a, pair.b) - gravity_turn,
-            kinetic_energy(scene_, previous_, pair.a, pair.b),
-            kinetic_energy(scene_, s, pair.a, pair.b) - gravity_work};
+      if (b_moves && !trace_.first_collision) ep.balances = balance_open_ = true;
+      if (!ep.open) {
+        ep.open = true;
+        ep.event_time = t;
       }
+      write_episode(k, t, s);
     }
     closing_[k] = closing;
     normals_[k] = p.normal;
   }
+}
+
+void StepObserver::close_episode(std::size_t k) {
+  Episode& ep = episodes_[k];
+  for (int& owner : post_owner_)
+    if (owner == static_cast<int>(k)) owner = -1;
+  if (ep.balances) balance_open_ = false;
+  ep.open = ep.balances = false;
+}
+
+Vec3 StepObserver::gravity_turn(const State& s, int a, int b, double dt) const {
+  // Gravity's angular impulse about the origin over the step, at the mid positions.
+  Vec3 turn = Vec3::Zero();
+  for (int i : {a, b})
+    turn += (0.5 * (s[i].position + previous_[i].position))
+                .cross(scene_.gravity * (scene_.bodies[i].mass * dt));
+  return turn;
 }
 
 void StepObserver::observe_apexes(double dt, const State& s) {

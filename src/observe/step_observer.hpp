@@ -92,6 +92,32 @@ class StepObserver {
   /// approaching), their penetration, and the first collision's balance of momentum and
   /// energy.
   void observe_contacts(double t, double dt, const State& s);
+  /// A contact from its hit to the last step that still pushes the pair apart: one step for
+  /// a rigid engine's impulse, several for a soft contact (MuJoCo's), which goes on pushing
+  /// after the pair stops approaching. The post-contact velocities and the first
+  /// collision's balance are those at its end, the balance taken from the last step before
+  /// the pair began to push (the last free step), so that it holds the whole contact.
+  struct Episode {
+    bool open = false;      ///< after its hit, while the pair still pushes
+    bool balances = false;  ///< it writes the first collision's balance
+    double event_time = 0.0;
+    double start_time = 0.0;  ///< s, the last free step
+    BodyState a0, b0;         ///< the pair's bodies at the last free step (a twice for the ground)
+    Vec3 gravity_turn = Vec3::Zero();  ///< gravity's angular impulse since the last free step
+  };
+  std::vector<Episode> episodes_;  ///< per pair
+  /// Per body: the pair whose open episode writes its post-contact velocity, or -1.
+  std::vector<int> post_owner_;
+  bool balance_open_ = false;  ///< the first collision's episode is still open
+  /// Whether pair's episodes still matter: a body's first contact or the first collision
+  /// between moving bodies not read yet, or still open.
+  bool episode_watched(const ContactPair& pair) const;
+  /// Writes episode k's values (post velocities, the balance) from the state at time t.
+  void write_episode(std::size_t k, double t, const State& s);
+  void close_episode(std::size_t k);
+  /// Gravity's angular impulse (N m s) about the origin on bodies a and b over the step of
+  /// dt seconds that ended in `s`, at the mid positions.
+  Vec3 gravity_turn(const State& s, int a, int b, double dt) const;
   /// Apexes: a body that bounced stops rising above the ground.
   void observe_apexes(double dt, const State& s);
   /// The largest stretch of every spring with a rest length, at and between the steps.

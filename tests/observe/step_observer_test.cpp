@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "course/course_backend.hpp"
 #include "reference/scene_model.hpp"
 #include "support/test_support.hpp"
@@ -262,6 +265,67 @@ body = "against"
   // bullet-float's block stopped "at the push" this way. It stops where the slide ends.
   ASSERT_TRUE(e.bodies[6].stop_time);
   EXPECT_NEAR(*e.bodies[6].stop_time, 0.7, 1e-15);
+}
+
+// Two equal balls meet head on and touch softly, as MuJoCo's contact does: a spring pushes
+// them apart over many steps, so they stop approaching (both at rest) half-way through the
+// contact. The contact is read where it ends, when the spring stops pushing: the post
+// velocities are the exchanged ones and the first collision's balance holds the whole
+// contact (its energy before is the approach's, after the same: an elastic spring). Read
+// at the hit, as a rigid contact is, both would be at rest and half the energy gone.
+TEST(StepObserver, ASoftContactIsReadWhenItStopsPushing) {
+  const Scene scene = test::scene_from(R"(name = "soft"
+dims = 2
+duration = 1.0
+sample = 0.001
+dt = [0.001]
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "left"
+radius = 0.5
+mass = 1.0
+position = [-0.6, 0.0, 0.0]
+velocity = [1.0, 0.0, 0.0]
+[[body]]
+name = "right"
+radius = 0.5
+mass = 1.0
+position = [0.6, 0.0, 0.0]
+velocity = [-1.0, 0.0, 0.0]
+[[contact]]
+bodies = ["left", "right"]
+restitution = 1.0
+)");
+  // A stiff elastic spring on the overlap (k / m = 1e4 / s^2), stepped by semi-implicit Euler.
+  const double k = 1e4, dt = 1e-4;
+  StepObserver observer(scene);
+  State s(2);
+  for (int i = 0; i < 2; ++i)
+    s[i].position = scene.bodies[i].position, s[i].velocity = scene.bodies[i].velocity;
+  observer.observe(0.0, s);
+  int pushing_steps = 0;
+  for (int n = 1; n <= 3000; ++n) {
+    const double overlap = 1.0 - (s[1].position.x() - s[0].position.x());
+    const double push = overlap > 0.0 ? k * overlap * dt : 0.0;
+    pushing_steps += overlap > 0.0;
+    s[0].velocity.x() -= push, s[1].velocity.x() += push;
+    for (int i = 0; i < 2; ++i) s[i].position += s[i].velocity * dt;
+    observer.observe(n * dt, s);
+  }
+  ASSERT_GT(pushing_steps, 100);  // a contact over many steps
+  const EventTrace& trace = observer.trace();
+  ASSERT_EQ(trace.bodies[0].contact_times.size(), 1u);
+  ASSERT_TRUE(trace.bodies[0].post_velocity && trace.bodies[1].post_velocity);
+  // The spring gives back what it took, up to the step's error in its release.
+  EXPECT_NEAR(trace.bodies[0].post_velocity->x(), -1.0, 0.02);
+  EXPECT_NEAR(trace.bodies[1].post_velocity->x(), 1.0, 0.02);
+  ASSERT_TRUE(trace.first_collision);
+  EXPECT_NEAR(trace.first_collision->kinetic_energy_before, 1.0, 1e-12);
+  EXPECT_NEAR(trace.first_collision->kinetic_energy_after, 1.0, 0.04);
+  EXPECT_LT(trace.first_collision->momentum_change.norm(), 1e-12);
+  // The hit itself is where they stopped approaching: half-way through the contact.
+  const double half = 0.1 + 0.5 * std::numbers::pi / std::sqrt(2.0 * k);
+  EXPECT_NEAR(trace.bodies[0].contact_times[0], half, 2e-3);
 }
 
 }  // namespace
