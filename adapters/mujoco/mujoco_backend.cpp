@@ -257,19 +257,19 @@ class MujocoSimulation : public Simulation {
     set_state(i, s.position, s.orientation, s.velocity, s.angular_velocity);
   }
 
-  /// How the ground's contacts are built, and their numbers (the first pair's).
+  /// How the contacts are built, and their numbers (the first pair's).
   void add_contact_settings(Settings& s) const {
-    if (!world_.ground) {
-      s.push_back({"collision", std::string("none: no ground, and bodies do not touch each other "
-                                            "on MuJoCo yet")});
+    const std::vector<ContactPair> pairs = contact_pairs(world_);
+    if (pairs.empty()) {
+      s.push_back({"collision", std::string("none: nothing in the case can touch")});
       return;
     }
     s.push_back(
         {"collision",
-         std::string("MuJoCo's own detection (mj_collision) of each body's sphere or box geom "
-                     "against a plane geom for the ground, only in the <pair>s the adapter "
-                     "writes, one per body with the ground (contype and conaffinity 0 "
-                     "elsewhere); bodies do not touch each other on MuJoCo yet")});
+         std::string("MuJoCo's own detection (mj_collision) of the bodies' sphere or box geoms "
+                     "(and a plane geom for the ground), only in the <pair>s the adapter "
+                     "writes, one per pair of the case (contype and conaffinity 0 "
+                     "elsewhere); a point body has no geom and touches nothing")});
     s.push_back(
         {"contact_model",
          std::string("soft, as MuJoCo's contacts are: solref in the direct form (-k, -b), "
@@ -304,21 +304,25 @@ class MujocoSimulation : public Simulation {
     s.push_back({"contact_time_rule",
                  std::string("tau = max(0.02 s, 2 dt): MuJoCo's default time constant, never "
                              "below two steps, as its refsafe keeps its standard form")});
-    if (const std::optional<ContactPair> first = first_ground_pair())
-      s.push_back(
-          {"contact_damping_ratio_first", mujoco_contact(first->restitution, dt_).damping_ratio});
+    s.push_back({"contact_damping_ratio_first",
+                 mujoco_contact(pairs.front().restitution, dt_).damping_ratio});
+    // MuJoCo 2.2.2 has one solref per pair, for its normal and its friction rows alike.
+    if (std::any_of(pairs.begin(), pairs.end(), [](const ContactPair& p) {
+          return engine_friction(p) > 0.0 && p.restitution >= 1.0;
+        }))
+      s.push_back({"friction_at_restitution_1",
+                   std::string("none: a pair with friction and restitution 1 gets no friction. "
+                               "MuJoCo 2.2.2 gives a pair one solref for its normal and its "
+                               "friction rows; at e = 1 the damping b is 0, and a friction row "
+                               "follows the reference acceleration -b v_t = 0, so it holds the "
+                               "slide's acceleration at 0 instead of slowing it (2.2.2 has no "
+                               "solreffriction)")});
   }
-  /// Whether some body's pair with the ground has friction.
+  /// Whether some pair has friction.
   bool has_friction() const {
     for (const ContactPair& pair : contact_pairs(world_))
-      if (pair.ground() && engine_friction(pair) > 0.0) return true;
+      if (engine_friction(pair) > 0.0) return true;
     return false;
-  }
-  /// The first body's pair with the ground, if any.
-  std::optional<ContactPair> first_ground_pair() const {
-    for (const ContactPair& pair : contact_pairs(world_))
-      if (pair.ground()) return pair;
-    return std::nullopt;
   }
 
   const World& world_;

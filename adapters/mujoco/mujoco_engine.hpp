@@ -1,9 +1,9 @@
 // MuJoCo as the harness knows it: `mujoco`, MuJoCo's own default integrator (Euler:
-// velocities first, then positions with the new velocities), on free or hinged bodies and
-// their contact with the ground, with friction: the force stage (gravity is MuJoCo's own),
-// impulses, rotation, boxes, 2D and 3D, and springs as tendons (not on mujoco/implicit). Body
-// contacts are not built yet: a case with them is `unsupported`, the feature named. The same
-// with MuJoCo's RK4 (`mujoco/rk4`) and its implicit integrator (`mujoco/implicit`).
+// velocities first, then positions with the new velocities), on free or hinged bodies, their
+// contacts with the ground and with each other, with friction: the force stage (gravity is
+// MuJoCo's own), impulses, rotation, boxes, 2D and 3D, and springs as tendons (not on
+// mujoco/implicit). The same with MuJoCo's RK4 (`mujoco/rk4`) and its implicit integrator
+// (`mujoco/implicit`).
 #pragma once
 
 #include "scene/engine_catalogue.hpp"
@@ -11,10 +11,10 @@
 namespace bb {
 
 inline FeatureSet mujoco_supports() {
-  return force_stage_features() | FeatureSet{Feature::ThreeD,        Feature::Rotation,
-                                             Feature::Boxes,         Feature::Impulse,
-                                             Feature::GroundContact, Feature::Restitution,
-                                             Feature::Friction,      Feature::Hinge};
+  return force_stage_features() |
+         FeatureSet{Feature::ThreeD,      Feature::Rotation,      Feature::Boxes,
+                    Feature::Impulse,     Feature::GroundContact, Feature::BodyContact,
+                    Feature::Restitution, Feature::Friction,      Feature::Hinge};
 }
 
 /// With springs, as MuJoCo tendons. Not for mujoco/implicit: MuJoCo 2.2.2's implicit step

@@ -64,18 +64,41 @@ std::string joints_and_place(const World& world, std::size_t i) {
          "      <joint type=\"hinge\" axis=\"0 0 1\"/>\n";
 }
 
-/// The <pair> of body `pair.a` with the ground: its restitution as the damping ratio of a
-/// spring and damper in MuJoCo's direct form, solref = (-k, -b), the impedance at its
-/// largest so that the reference acceleration is followed; friction the engine coefficient
-/// along both tangents (condim 3), or none (condim 1).
-std::string ground_pair(const ContactPair& pair, double dt) {
+/// The <pair> of body `pair.a` with the ground or with body `pair.b`: its restitution as the
+/// damping ratio of a spring and damper in MuJoCo's direct form, solref = (-k, -b), the
+/// impedance at its largest so that the reference acceleration is followed; friction the
+/// engine coefficient along both tangents (condim 3), or none (condim 1).
+std::string contact_pair(const ContactPair& pair, double dt) {
   const MujocoContact c = mujoco_contact(pair.restitution, dt);
   const double mu = engine_friction(pair);
+  const std::string other = pair.ground() ? "ground" : fmt::format("g{}", pair.b);
   return fmt::format(
-      "    <pair geom1=\"g{}\" geom2=\"ground\" condim=\"{}\" friction=\"{:.17g} {:.17g} 0 0 0\" "
+      "    <pair geom1=\"g{}\" geom2=\"{}\" condim=\"{}\" friction=\"{:.17g} {:.17g} 0 0 0\" "
       "solref=\"{:.17g} {:.17g}\" solimp=\"{} {} 0.001 0.5 2\" margin=\"{:.17g}\" gap=\"0\"/>\n",
-      pair.a, mu > 0.0 ? 3 : 1, mu, mu, -c.stiffness, -c.damping, kMujocoImpedance,
+      pair.a, other, mu > 0.0 ? 3 : 1, mu, mu, -c.stiffness, -c.damping, kMujocoImpedance,
       kMujocoImpedance, kMujocoMargin);
+}
+
+/// Body i's sphere or box geom, for the pairs it is in; no pair is automatic (contype 0).
+std::string geom_of(const Body& b, std::size_t i) {
+  if (b.shape == Shape::Sphere)
+    return fmt::format(
+        "      <geom name=\"g{}\" type=\"sphere\" size=\"{:.17g}\" contype=\"0\" "
+        "conaffinity=\"0\" mass=\"0\"/>\n",
+        i, b.radius);
+  if (b.shape == Shape::Box)
+    return fmt::format(
+        "      <geom name=\"g{}\" type=\"box\" size=\"{:.17g} {:.17g} {:.17g}\" contype=\"0\" "
+        "conaffinity=\"0\" mass=\"0\"/>\n",
+        i, b.half_extents.x(), b.half_extents.y(), b.half_extents.z());
+  return "";
+}
+
+/// Whether two things may touch, and so get geoms and a <pair>: a point body never does (as
+/// in the other engines, it has no shape to collide with).
+bool collides(const World& world, const ContactPair& pair) {
+  return world.bodies[pair.a].shape != Shape::Point &&
+         (pair.ground() || world.bodies[pair.b].shape != Shape::Point);
 }
 
 /// Each spring as a spatial tendon between the sites at its bodies' centres: MuJoCo's own
@@ -109,13 +132,24 @@ std::string mujoco_model_xml(const World& world, double dt, const std::string& i
         "zaxis=\"{:.17g} {:.17g} {:.17g}\" contype=\"0\" conaffinity=\"0\"/>\n",
         world.ground->point.x(), world.ground->point.y(), world.ground->point.z(),
         world.ground->normal.x(), world.ground->normal.y(), world.ground->normal.z());
+  const std::vector<ContactPair> pairs = contact_pairs(world);
+  std::vector<bool> touches(world.bodies.size(), false);
+  for (const ContactPair& pair : pairs) {
+    if (!collides(world, pair)) continue;
+    touches[pair.a] = true;
+    if (!pair.ground()) touches[pair.b] = true;
+  }
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     const Body& b = world.bodies[i];
-    // A fixed body is part of the world (with the site a spring ends at).
+    // A fixed body is part of the world (with its shape, and the site a spring ends at).
     if (b.fixed) {
+      const Quat q = b.orientation.normalized();
       xml += fmt::format(
-          "    <body name=\"b{}\" pos=\"{:.17g} {:.17g} {:.17g}\"><site name=\"s{}\"/></body>\n", i,
-          b.position.x(), b.position.y(), b.position.z(), i);
+          "    <body name=\"b{}\" pos=\"{:.17g} {:.17g} {:.17g}\" quat=\"{:.17g} {:.17g} {:.17g} "
+          "{:.17g}\"><site name=\"s{}\"/>\n",
+          i, b.position.x(), b.position.y(), b.position.z(), q.w(), q.x(), q.y(), q.z(), i);
+      if (touches[i]) xml += geom_of(b, i);
+      xml += "    </body>\n";
       continue;
     }
     const Vec3 inertia = engine_inertia(b);
@@ -124,27 +158,17 @@ std::string mujoco_model_xml(const World& world, double dt, const std::string& i
         "      <inertial pos=\"0 0 0\" mass=\"{:.17g}\" diaginertia=\"{:.17g} {:.17g} "
         "{:.17g}\"/>\n",
         b.mass, inertia.x(), inertia.y(), inertia.z());
-    // Its shape, for the ground to touch; no pair is automatic (contype 0).
-    if (world.ground && b.shape == Shape::Sphere)
-      xml += fmt::format(
-          "      <geom name=\"g{}\" type=\"sphere\" size=\"{:.17g}\" contype=\"0\" "
-          "conaffinity=\"0\" mass=\"0\"/>\n",
-          i, b.radius);
-    else if (world.ground && b.shape == Shape::Box)
-      xml += fmt::format(
-          "      <geom name=\"g{}\" type=\"box\" size=\"{:.17g} {:.17g} {:.17g}\" contype=\"0\" "
-          "conaffinity=\"0\" mass=\"0\"/>\n",
-          i, b.half_extents.x(), b.half_extents.y(), b.half_extents.z());
+    if (touches[i]) xml += geom_of(b, i);
     // The site at its centre, where its springs end.
     if (!world.springs.empty()) xml += fmt::format("      <site name=\"s{}\"/>\n", i);
     xml += "    </body>\n";
   }
   xml += "  </worldbody>\n";
   xml += spring_tendons(world);
-  std::string pairs;
-  for (const ContactPair& pair : contact_pairs(world))
-    if (pair.ground() && world.bodies[pair.a].shape != Shape::Point) pairs += ground_pair(pair, dt);
-  if (!pairs.empty()) xml += "  <contact>\n" + pairs + "  </contact>\n";
+  std::string written;
+  for (const ContactPair& pair : pairs)
+    if (collides(world, pair)) written += contact_pair(pair, dt);
+  if (!written.empty()) xml += "  <contact>\n" + written + "  </contact>\n";
   return xml + "</mujoco>\n";
 }
 

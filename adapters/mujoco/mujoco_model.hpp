@@ -1,8 +1,8 @@
 // The MJCF model of a World for MuJoCo, written in memory: per moving body a free joint in
 // 3D, or two slide joints (x, y) and a hinge (z) in 2D, or the hinge joint of its [[hinge]];
-// its mass and principal inertia; a fixed body welded to the world. With a ground, each
-// body's shape and its pair with the ground (friction along both tangents, an elliptic
-// cone); bodies do not touch each other yet.
+// its mass and principal inertia; a fixed body welded to the world. Each body that can touch
+// something gets its shape, and each pair of the case one <pair> (friction along both
+// tangents, an elliptic cone): no contact is automatic.
 #pragma once
 
 #include <string>
@@ -22,7 +22,7 @@ inline constexpr double kMujocoMargin = 1e-6;
 /// The contacts' impedance, MuJoCo's largest: the reference acceleration is followed.
 inline constexpr double kMujocoImpedance = 0.9999;
 
-/// A ground contact in MuJoCo's direct form: x'' = -damping x' - stiffness x (1/s^2, 1/s),
+/// A contact in MuJoCo's direct form: x'' = -damping x' - stiffness x (1/s^2, 1/s),
 /// whose damping ratio gives the case's restitution.
 struct MujocoContact {
   double stiffness, damping, damping_ratio;

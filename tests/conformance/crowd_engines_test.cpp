@@ -1,8 +1,9 @@
 // many_beachballs, the seed's crowd of 30 beach balls in a box: whatever each backend does
 // to their spins and however the pile settles, every ball stays inside the box (between the
 // walls' inner faces, above the floor, to within the overlap a step allows) and in the
-// scene's plane at report_dt. The engines keep a 2D scene in the x-y plane with their own
-// mechanism (Bullet's linear and angular factors, ODE's plane-2D joint), recorded under
+// scene's plane at report_dt (a soft contact, MuJoCo's, lets a ball sink deeper, by its
+// speed times the contact's time constant). The engines keep a 2D scene in the x-y plane with their
+// own mechanism (Bullet's linear and angular factors, ODE's plane-2D joint), recorded under
 // plane_2d.
 #include <gtest/gtest.h>
 
@@ -58,6 +59,7 @@ TEST_P(CrowdEngines, EveryBallStaysInTheBoxAndThePlane) {
   const double inner = wall.position.x() - wall.half_extents.x();
   double worst = 0.0;    // the furthest any ball's surface went past a wall or the floor, m
   double off_plane = 0;  // the largest |z| of any ball, m
+  double fastest = 0.0;  // m/s
   for (const State& s : run.trajectory.states)
     for (std::size_t i = 0; i < s.size(); ++i) {
       const Body& b = scene.bodies[i];
@@ -65,8 +67,13 @@ TEST_P(CrowdEngines, EveryBallStaysInTheBoxAndThePlane) {
       worst = std::max(
           {worst, std::abs(s[i].position.x()) + b.radius - inner, b.radius - s[i].position.y()});
       off_plane = std::max(off_plane, std::abs(s[i].position.z()));
+      fastest = std::max(fastest, s[i].velocity.norm());
     }
-  EXPECT_LT(worst, 0.1) << GetParam();
+  // A soft contact (one with a time constant tau, MuJoCo's) lets a body at speed v sink
+  // about v tau before it turns it back: a spring of natural frequency 1 / tau.
+  const double tau = test::number_setting(run.engine_settings, "contact_time");
+  const double allowed = std::isnan(tau) ? 0.1 : fastest * tau;
+  EXPECT_LT(worst, allowed) << GetParam();
   EXPECT_LT(off_plane, 1e-9) << GetParam();
 }
 
