@@ -15,9 +15,11 @@
 #include "report/markdown_text.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/table.hpp"
+#include "report/time_spent.hpp"
 #include "run/cost.hpp"
 #include "run/interrupt.hpp"
 #include "run/stability.hpp"
+#include "run/stopwatch.hpp"
 
 namespace bb::cli {
 
@@ -133,7 +135,8 @@ std::string index_page(const std::vector<CaseResults>& all,
   return "# beachball report\n\nThe bundled suite, one page per case: the scene, every backend's "
          "error against the GSL reference and its cost, the whole dt sweep with work-precision "
          "diagrams, trajectories and energy, the stability search, the gates and the engine "
-         "settings used. Regenerate with `scripts/report`; only cost figures change.\n\n"
+         "settings used. Regenerate with `scripts/report`; only cost figures and the time "
+         "each part took change ([where the time went](#where-the-time-went)).\n\n"
          "**[Claims ledger](claims.md)**: the course text's sentences, each with its verdict "
          "per backend and the numbers behind it.\n\n" +
          sweeps + busy +
@@ -143,7 +146,7 @@ std::string index_page(const std::vector<CaseResults>& all,
          "report_dt, the observed order of convergence p over the sweep (only where the sweep "
          "has an asymptotic range; the case page says why not), the median cost of one "
          "step, and ✓ or ✗ where a gate covers the backend.\n" +
-         sections + rotation;
+         sections + rotation + time_spent_section(all);
 }
 
 }  // namespace
@@ -167,10 +170,12 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
   std::vector<CaseResults> all;
   for (const Scene& scene : scenes) {
     all.push_back(run_case(scene, registry, with_progress));
+    Stopwatch stability;
     all.back().stability = find_stability_all(
         scene, registry, options.backends, options.jobs,
         [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
         options.isolation, options.timeout);
+    all.back().time_spent.stability = stability.lap();
   }
   // Pages are written only when every case has run, and a signal waits until all are.
   {

@@ -13,6 +13,7 @@
 #include "run/engine_catalogue.hpp"
 #include "run/gates.hpp"
 #include "run/run_summary.hpp"
+#include "run/stopwatch.hpp"
 #include "run/sweep_runner.hpp"
 #include "run/wire.hpp"
 #include "scene/backend_names.hpp"
@@ -319,6 +320,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   // method, 100 times tighter, smaller steps forced) to measure the reference's own error,
   // then every job, measured in its child (accuracy_jobs.hpp).
   const ReferenceBackend& reference = registry.reference();
+  Stopwatch clock;
   AccuracyRuns accuracy = run_accuracy_jobs(scene, reference, jobs, options, progress);
   out.reference_run = std::move(accuracy.reference);
   out.runs = std::move(accuracy.runs);
@@ -327,7 +329,9 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   record_reference(scene, reference, tight, out);
   add_missing_engines(scene, registry, options, dts, out);
   measure_runs(scene, dts, out);
+  out.time_spent.accuracy = clock.lap();
   time_costs(scene, reference, jobs, options, progress, out);
+  out.time_spent.cost = clock.lap();
   fit_orders(scene, out);
 
   // The fallback's whole trajectories are done with: keep what the page draws.
@@ -338,7 +342,9 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
 
   out.gates = evaluate_gates(scene, out);
   out.claims = judge_claims(out);
+  clock.lap();
   if (scene.sweep && options.sweep) out.sweep = run_sweep(scene, registry, options, progress);
+  out.time_spent.sweep = clock.lap();
   return out;
 }
 

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "metrics/errors.hpp"
-#include "observe/observables.hpp"
 #include "metrics/order.hpp"
 #include "metrics/trajectory.hpp"
+#include "observe/observables.hpp"
 #include "run/claim_result.hpp"
 #include "scene/backend.hpp"
 
@@ -123,6 +123,16 @@ struct SweepResults {
   std::vector<SweepPoint> points;  ///< in the order of the case's values
 };
 
+/// Wall-clock seconds one case took, by the part of the work: like cost, measured, never
+/// written to the results (the report's index page shows where a report's time went).
+struct TimeSpent {
+  double accuracy = 0.0;   ///< the reference and every backend at every dt, measured
+  double cost = 0.0;       ///< the serial cost pass
+  double stability = 0.0;  ///< the stability search
+  double sweep = 0.0;      ///< the case's [[sweep]]
+  double total() const { return accuracy + cost + stability + sweep; }
+};
+
 struct CaseResults {
   const Scene* scene = nullptr;
   std::map<std::string, std::string> versions;
@@ -144,6 +154,7 @@ struct CaseResults {
   std::vector<ClaimResult> claims;
   std::vector<StabilityResult> stability;  ///< empty unless a stability search ran
   std::optional<SweepResults> sweep;       ///< when the case has a [[sweep]] and it ran
+  TimeSpent time_spent;
 };
 
 }  // namespace bb

@@ -1,0 +1,54 @@
+// The index page's "where the time went": the whole report's row sums every case's parts,
+// the cases follow slowest first, and a report with nothing timed has no section.
+#include "report/time_spent.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace bb {
+namespace {
+
+/// The cells of the table row whose first cell is `name`, trimmed; empty when none is.
+std::vector<std::string> cells(const std::string& page, const std::string& name) {
+  std::istringstream lines(page);
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> out;
+    std::istringstream parts(line);
+    for (std::string cell; std::getline(parts, cell, '|');) {
+      const auto first = cell.find_first_not_of(' '), last = cell.find_last_not_of(' ');
+      if (first != std::string::npos) out.push_back(cell.substr(first, last - first + 1));
+    }
+    if (!out.empty() && out[0] == name) return out;
+  }
+  return {};
+}
+
+TEST(TimeSpent, SumsThePartsAndPutsTheSlowestCaseFirst) {
+  Scene quick, slow;
+  quick.name = "quick";
+  slow.name = "slow";
+  std::vector<CaseResults> all(2);
+  all[0].scene = &quick;
+  all[0].time_spent = {1.0, 0.5, 0.25, 0.0};
+  all[1].scene = &slow;
+  all[1].time_spent = {10.0, 2.0, 3.0, 4.0};
+  const std::string page = time_spent_section(all);
+  EXPECT_EQ(cells(page, "all cases"),
+            (std::vector<std::string>{"all cases", "11.0", "2.5", "3.2", "4.0", "20.8"}))
+      << page;
+  EXPECT_EQ(cells(page, "slow"),
+            (std::vector<std::string>{"slow", "10.0", "2.0", "3.0", "4.0", "19.0"}));
+  EXPECT_LT(page.find("| slow "), page.find("| quick "));
+}
+
+TEST(TimeSpent, NothingTimedIsNoSection) {
+  Scene scene;
+  scene.name = "untimed";
+  std::vector<CaseResults> all(1);
+  all[0].scene = &scene;
+  EXPECT_EQ(time_spent_section(all), "");
+}
+
+}  // namespace
+}  // namespace bb
