@@ -91,8 +91,10 @@ std::string section_tables(const std::vector<CaseResults>& all) {
   return out;
 }
 
+/// The index page; with `timed` (the cost pass ran), where the time went: like the costs, a
+/// report without them is the same bytes from one run to the next.
 std::string index_page(const std::vector<CaseResults>& all,
-                       const std::vector<std::string>& rotation_plots) {
+                       const std::vector<std::string>& rotation_plots, bool timed) {
   const std::string sections = section_tables(all);
   // The cases whose bodies turn: each page's rotation plot, gathered here (where drawn).
   std::string rotation;
@@ -146,7 +148,7 @@ std::string index_page(const std::vector<CaseResults>& all,
          "report_dt, the observed order of convergence p over the sweep (only where the sweep "
          "has an asymptotic range; the case page says why not), the median cost of one "
          "step, and ✓ or ✗ where a gate covers the backend.\n" +
-         sections + rotation + time_spent_section(all);
+         sections + rotation + (timed ? time_spent_section(all) : "");
 }
 
 }  // namespace
@@ -174,7 +176,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
     all.back().stability = find_stability_all(
         scene, registry, options.backends, options.jobs,
         [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
-        options.isolation, options.timeout);
+        options.isolation, options.timeout, known_trials(all.back().runs));
     all.back().time_spent.stability = stability.lap();
   }
   // Pages are written only when every case has run, and a signal waits until all are.
@@ -184,7 +186,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
     std::vector<std::string> rotation_plots;
     for (const CaseResults& r : all)
       rotation_plots.push_back(write_case_outputs(r, batch).rotation);
-    batch.write("README.md", index_page(all, rotation_plots));
+    batch.write("README.md", index_page(all, rotation_plots, options.cost));
     batch.write("claims.md", claims_page(all));
     report.drop_old_report(batch);
     batch.commit();

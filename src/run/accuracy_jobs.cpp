@@ -103,14 +103,17 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
   ChildPool pool(options.jobs, options.isolation);
   // What a child does with its run before sending it back (nothing: it comes back whole).
   using Finish = std::function<void(RunRecord&)>;
+  // A backend's job (not the reference) also judges the stability trial at its dt, if the
+  // stability search begins there.
   const auto submit = [&](const Backend& b, double dt, RunRecord& slot,
                           std::optional<double> shown_dt, Finish finish,
                           std::function<void()> then) {
     const std::string what = label(b.name(), shown_dt);
+    const bool judge = shown_dt.has_value();
     pool.submit(
         what,
-        [&b, &scene, dt, finish] {
-          RunRecord run = run_accuracy(b, scene, dt);
+        [&b, &scene, dt, finish, judge] {
+          RunRecord run = run_accuracy(b, scene, dt, judge);
           if (finish) finish(run);
           return wire::encode(run);
         },

@@ -4,6 +4,7 @@
 
 #include "observe/step_observer.hpp"
 #include "run/divergence.hpp"
+#include "run/stability_watch.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -17,7 +18,8 @@ std::string missing_features(const Backend& backend, const Scene& scene) {
   return out;
 }
 
-RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
+RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
+                       bool judge_stability) {
   RunRecord record;
   record.backend = backend.name();
   record.dt = dt;
@@ -38,15 +40,22 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
     // Contacts, apexes and turns are watched at every step, not only at the samples.
     StepObserver observer(scene);
     observer.observe(0.0, state);
+    // At a step the stability search begins with, its trial is judged on these steps too.
+    std::optional<StabilityWatch> watch;
+    if (judge_stability && (dt == scene.stability.dt_min || dt == scene.stability.dt_max) &&
+        StabilityWatch(scene, dt, state).steps() ==
+            static_cast<long>(per_sample) * static_cast<long>(samples))
+      watch.emplace(scene, dt, state);
     observer.write_turns(state);
     record.trajectory.times.push_back(0.0);
     record.trajectory.states.push_back(state);
     for (int j = 1; j <= samples; ++j) {
       for (int k = 1; k <= per_sample; ++k) {
         sim->step();
-        if (!observer.active()) continue;
+        if (!observer.active() && !watch) continue;
         sim->read(state);
-        observer.observe(static_cast<double>(record.steps + k) * dt, state);
+        if (watch) watch->observe(record.steps + k, state);
+        if (observer.active()) observer.observe(static_cast<double>(record.steps + k) * dt, state);
       }
       record.steps += per_sample;
       sim->read(state);
@@ -62,6 +71,7 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt) {
         break;
       }
     }
+    if (watch) record.stability_trial = watch->verdict();
     if (auto internal = sim->internal_steps()) record.steps = *internal;
     // Settings as they stood at the end: the reference names a change of method there.
     record.engine_settings = sim->settings();

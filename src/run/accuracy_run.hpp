@@ -6,8 +6,11 @@
 namespace bb {
 
 /// Runs to the end or to divergence. Never throws: an exception inside the backend becomes
-/// status Error with its message; missing features become Unsupported.
-RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt);
+/// status Error with its message; missing features become Unsupported. With
+/// `judge_stability`, at a dt the stability search begins with (its dt_min or dt_max) the
+/// run also judges that trial on its own steps (RunRecord::stability_trial).
+RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
+                       bool judge_stability = false);
 
 /// The features `scene` needs that `backend` lacks, as "a, b, c"; empty when none.
 std::string missing_features(const Backend& backend, const Scene& scene);

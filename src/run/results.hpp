@@ -35,6 +35,16 @@ struct ObservableResult {
   std::optional<double> reference;
 };
 
+/// One run at one step. Stable means bounded (energy_growth.hpp): no divergence, and an
+/// energy that neither compounds nor runs away; drift that adds is stable.
+struct StabilityTrial {
+  bool stable = false;
+  std::string reason;  ///< what the energy did (a stable drift says so too), or why it failed
+  /// "bounded", "drift", "compounds", "runaway", "diverged", or "failed" (the run did not
+  /// finish: an exception, a crash, a timeout)
+  std::string growth;
+};
+
 struct RunRecord {
   std::string backend;
   std::optional<double> dt;  ///< nullopt for the adaptive reference
@@ -47,6 +57,9 @@ struct RunRecord {
   std::vector<ObservableResult> observables;
   Settings engine_settings;
   std::string messages;  ///< what the engine printed during an ok run, if anything
+  /// The stability search's trial at this dt, judged on this run's own steps: set when the
+  /// dt is one the search begins with (its dt_min or dt_max), so it is not run twice.
+  std::optional<StabilityTrial> stability_trial;
   /// What the page plots, not written to JSON: at report_dt the first few bodies' states
   /// (run_summary.hpp), elsewhere times and events only, unless the errors are measured in
   /// the parent (the reference's own run, and DESIGN.md's fallback).

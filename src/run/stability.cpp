@@ -9,7 +9,7 @@
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
 #include "run/child_pool.hpp"
-#include "run/divergence.hpp"
+#include "run/stability_watch.hpp"
 #include "run/wire.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
@@ -36,39 +36,15 @@ StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt) {
   if (std::string why = beyond_step_cap(scene, dt); !why.empty()) return {false, why, "not run"};
   try {
     const auto sim = backend.start(scene, dt);
-    const DivergenceBounds bounds = divergence_bounds(scene);
     State state(scene.bodies.size());
     sim->read(state);
-    const long steps = static_cast<long>(std::ceil(scene.duration / dt - 1e-9));
-    // The energy's growth is judged after the last impulse, which may add energy at once.
-    const long settled = scene.impulses.empty()
-                             ? 0
-                             : std::min(steps, std::lround(scene.impulses.back().time / dt) + 1);
-    const long judged = steps - settled;
-    const long windows = std::min<long>(kGrowthWindows, judged);
-    EnergyHistory history;
-    history.scale = bounds.energy_scale;
-    history.level.reserve(windows);
-    history.steps.reserve(windows);
-    double e0 = total_energy(scene, state);
-    double largest_rise = 0.0;
-    for (long n = 1; n <= steps; ++n) {
+    StabilityWatch watch(scene, dt, state);
+    for (long n = 1; n <= watch.steps(); ++n) {
       sim->step();
       sim->read(state);
-      const double energy = total_energy(scene, state);
-      if (auto why = divergence(scene, bounds, state, e0, energy)) return {false, *why, "diverged"};
-      if (n == settled) e0 = energy;
-      if (n <= settled) continue;
-      largest_rise = std::max(largest_rise, energy - e0);
-      // The end of window k of [settled, steps] comes after k / windows of its steps.
-      const long k = static_cast<long>(history.level.size()) + 1;
-      if (n - settled == k * judged / windows) {
-        history.level.push_back(largest_rise);
-        history.steps.push_back(n - settled);
-      }
+      if (!watch.observe(n, state)) break;
     }
-    const GrowthVerdict verdict = judge_growth(history, scene.stability.growth_factor);
-    return {verdict.stable, verdict.reason, growth_name(verdict.growth)};
+    return *watch.verdict();
   } catch (const std::exception& e) {
     return {false, std::string("error: ") + e.what(), "failed"};
   }
@@ -111,10 +87,17 @@ StabilityResult find_stability(const Backend& backend, const Scene& scene) {
   return r;
 }
 
+KnownTrials known_trials(const std::vector<RunRecord>& runs) {
+  KnownTrials out;
+  for (const RunRecord& run : runs)
+    if (run.dt && run.stability_trial) out[{run.backend, *run.dt}] = *run.stability_trial;
+  return out;
+}
+
 std::vector<StabilityResult> find_stability_all(
     const Scene& scene, const Registry& registry, const std::vector<std::string>& backends,
     int jobs, const std::function<void(const std::string&)>& on_done, bool isolation,
-    double timeout) {
+    double timeout, const KnownTrials& known) {
   require_search_within_cap(scene);
   const BackendSet set = backends_for(scene, registry);
   std::vector<const Backend*> chosen;
@@ -131,6 +114,12 @@ std::vector<StabilityResult> find_stability_all(
     const Backend& b = *chosen[i];
     if (const auto dt = searches[i].next()) {
       const double step = *dt;
+      // A trial an accuracy run already judged on its own steps is not run again.
+      if (const auto found = known.find({b.name(), step}); found != known.end()) {
+        searches[i].record(step, found->second);
+        queue_next(i);
+        return;
+      }
       pool.submit(
           b.name() + " stability at dt " + std::to_string(step),
           [&b, &scene, step] { return wire::encode(try_step(b, scene, step)); },

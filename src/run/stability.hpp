@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,12 +22,17 @@ StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt);
 /// The whole search for one backend, in this process.
 StabilityResult find_stability(const Backend& backend, const Scene& scene);
 
+/// Trials already judged, by backend and step: those the accuracy runs judged on their own
+/// steps (RunRecord::stability_trial).
+using KnownTrials = std::map<std::pair<std::string, double>, StabilityTrial>;
+KnownTrials known_trials(const std::vector<RunRecord>& runs);
+
 /// Every course variant and engine of the case (`backends` filters by name when not empty),
-/// each trial in its own child process with a time limit; backends searched in parallel on
-/// `jobs` processes. `on_done` is called after each backend's search.
+/// each trial in its own child process with a time limit, unless `known` has it; backends
+/// searched in parallel on `jobs` processes. `on_done` is called after each backend's search.
 std::vector<StabilityResult> find_stability_all(
     const Scene& scene, const Registry& registry, const std::vector<std::string>& backends,
     int jobs, const std::function<void(const std::string&)>& on_done = nullptr,
-    bool isolation = true, double timeout = 0.0);
+    bool isolation = true, double timeout = 0.0, const KnownTrials& known = {});
 
 }  // namespace bb

@@ -11,16 +11,6 @@
 
 namespace bb {
 
-/// One run at one step. Stable means bounded (energy_growth.hpp): no divergence, and an
-/// energy that neither compounds nor runs away; drift that adds is stable.
-struct StabilityTrial {
-  bool stable = false;
-  std::string reason;  ///< what the energy did (a stable drift says so too), or why it failed
-  /// "bounded", "drift", "compounds", "runaway", "diverged", or "failed" (the run did not
-  /// finish: an exception, a crash, a timeout)
-  std::string growth;
-};
-
 class StabilitySearch {
  public:
   /// Fractions of the step found by bisection that are probed below it.

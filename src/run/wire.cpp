@@ -172,6 +172,8 @@ std::string encode(const RunRecord& run) {
   w.raw(run.position_scale);
   w.raw(run.travel);
   w.raw<char>(run.summarised);
+  w.raw<char>(run.stability_trial.has_value());
+  if (const auto& t = run.stability_trial) w.text(encode(*t));
   return w.take();
 }
 
@@ -226,6 +228,7 @@ RunRecord decode_run(const std::string& bytes) {
   run.position_scale = r.raw<double>();
   run.travel = r.raw<double>();
   run.summarised = r.raw<char>() != 0;
+  if (r.raw<char>()) run.stability_trial = decode_trial(r.text());
   return run;
 }
 

@@ -93,6 +93,15 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
     const auto now = test::snapshot(out);
     const bool is_old = now == old_report, is_new = now == new_report;
     EXPECT_TRUE(is_old || is_new) << "killed " << when << ": a mix of old and new";
+    // Which files are neither the old report's nor the new one's, to tell a mix from a
+    // report whose bytes changed between runs.
+    if (!is_old && !is_new)
+      for (const auto& [name, bytes] : now) {
+        const auto o = old_report.find(name), n = new_report.find(name);
+        if ((o == old_report.end() || o->second != bytes) &&
+            (n == new_report.end() || n->second != bytes))
+          ADD_FAILURE() << name << " is neither the old report's nor the new one's";
+      }
     old_seen += is_old;
     new_seen += is_new;
     left_temporaries += !test::temporaries_in(dir).empty();
