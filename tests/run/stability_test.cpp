@@ -7,8 +7,10 @@
 #include "course/course_backend.hpp"
 #include "course/spring_modes.hpp"
 #include "course/stability_theory.hpp"
-#include "scene/case_error.hpp"
+#include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
+#include "run/registry.hpp"
+#include "scene/case_error.hpp"
 #include "support/course_support.hpp"
 #include "support/test_support.hpp"
 
@@ -291,6 +293,40 @@ TEST(StabilityTheory, EulerLimitIsTerminalSpeedOverGravity) {
   EXPECT_NEAR(theoretical_limit(scene, "rk4")->dt / limit->dt, 2.785 / 2.0, 1e-12);
   EXPECT_FALSE(theoretical_limit(load_case(test::source_path("cases/magnus_throw.toml")), "rk4")
                    .has_value());
+}
+
+// sproing_2d's stability search begins at its finest dt, one of its accuracy runs: that run
+// judges the trial on its own steps, the same verdict the search's own trial gives (stable
+// and unstable), and a search handed it uses it instead of running the trial again (a
+// verdict it could not have found itself shows it was taken).
+TEST(Stability, AnAccuracyRunAtTheSearchsFirstStepJudgesItsTrial) {
+  const Scene scene = load_case(test::source_path("cases/sproing_2d.toml"));
+  const double dt = scene.stability.dt_min;
+  ASSERT_EQ(dt, scene.dt.back());
+  for (const char* integrator : {"semi-implicit-euler", "explicit-euler"}) {
+    SCOPED_TRACE(integrator);
+    const RunRecord run = run_accuracy(course(integrator), scene, dt, true);
+    ASSERT_TRUE(run.stability_trial);
+    const StabilityTrial own = try_step(course(integrator), scene, dt);
+    EXPECT_EQ(run.stability_trial->stable, own.stable);
+    EXPECT_EQ(run.stability_trial->reason, own.reason);
+    EXPECT_EQ(run.stability_trial->growth, own.growth);
+    EXPECT_FALSE(run_accuracy(course(integrator), scene, scene.dt.front(), true).stability_trial)
+        << "no trial where the search does not begin";
+    EXPECT_FALSE(run_accuracy(course(integrator), scene, dt).stability_trial)
+        << "none unless asked";
+  }
+  const Registry registry = Registry::load();
+  const std::string name = "course/semi-implicit-euler";
+  KnownTrials known;
+  known[{name, scene.stability.dt_max}] = {false, "handed in", "diverged"};
+  known[{name, dt}] = {false, "handed in", "diverged"};
+  const std::vector<StabilityResult> found =
+      find_stability_all(scene, registry, {name}, 1, nullptr, false, 0.0, known);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].status, "unstable at every dt tried");
+  EXPECT_EQ(found[0].reason, "handed in");
+  EXPECT_EQ(found[0].trials, 2);
 }
 
 }  // namespace
