@@ -2,8 +2,8 @@
 #include <filesystem>
 
 #include "cli/commands.hpp"
-#include "scene/case_error.hpp"
 #include "run/case_loading.hpp"
+#include "scene/case_error.hpp"
 
 namespace bb::cli {
 

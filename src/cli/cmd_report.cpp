@@ -176,7 +176,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
     all.back().stability = find_stability_all(
         scene, registry, options.backends, options.jobs,
         [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
-        options.isolation, options.timeout, known_trials(all.back().runs));
+        options.isolation, options.timeout, known_trials(all.back().runs), options.cache);
     all.back().time_spent.stability = stability.lap();
   }
   // Pages are written only when every case has run, and a signal waits until all are.

@@ -66,7 +66,7 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
     results.stability = find_stability_all(
         scene, registry, backends, options.jobs,
         [&](const std::string& b) { progress.advance(scene.name + ": " + b); }, options.isolation,
-        options.timeout);
+        options.timeout, {}, options.cache);
     const std::vector<std::string> names = stability_file_names(scene);
     {
       const DeferSignals writing;

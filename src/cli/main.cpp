@@ -3,11 +3,14 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdlib>
 #include <thread>
 
 #include "cli/commands.hpp"
 #include "cli/option_values.hpp"
+#include "files/result_cache.hpp"
 #include "run/interrupt.hpp"
+#include "run/run_cache.hpp"
 #include "scene/case_error.hpp"
 
 namespace {
@@ -22,6 +25,10 @@ struct Values {
   bool no_isolation = false;
   double timeout = 0.0;
   double cost_seconds = 0.005;
+  /// $BEACHBALL_CACHE when set (a folder, or "off"), else the user's cache folder.
+  std::string cache = std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE")
+                                                     : bb::default_cache_folder();
+  bool fresh = false;
 };
 
 /// The subcommands, once declared.
@@ -64,12 +71,22 @@ Commands declare_commands(CLI::App& app, Values& v) {
         "run in this process, not in child processes (for debugging: a crash ends the program)");
   };
   add_isolation_options(run);
+  // Options of every command whose results are kept between invocations.
+  const auto add_cache_options = [&](CLI::App* command) {
+    command
+        ->add_option("--cache", v.cache,
+                     "folder of kept results, or 'off' (default: $BEACHBALL_CACHE, else "
+                     "$XDG_CACHE_HOME/beachball or ~/.cache/beachball)");
+    command->add_flag("--fresh", v.fresh, "run everything again (new results are still kept)");
+  };
+  add_cache_options(run);
 
   auto* report = app.add_subcommand("report", "run the suite and write the report pages");
   report->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
   report->add_option("--out", v.out, "report folder")->default_val("reports");
   add_sweep_options(report);
   add_isolation_options(report);
+  add_cache_options(report);
 
   auto* stability =
       app.add_subcommand("stability", "largest stable step per backend, by bisection");
@@ -79,12 +96,14 @@ Commands declare_commands(CLI::App& app, Values& v) {
   stability->add_option("--jobs", v.jobs, "backends searched in parallel (1 to 256)")
       ->default_val(v.default_jobs);
   add_isolation_options(stability);
+  add_cache_options(stability);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
   check->add_option("--junit", v.junit, "also write the gate results as JUnit XML");
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
+  add_cache_options(check);
   return {list, run, report, stability, check};
 }
 
@@ -143,9 +162,19 @@ int main(int argc, char** argv) {
     return code == 0 ? bb::cli::kExitOk : bb::cli::kExitBadInput;
   }
   try {
-    const bb::RunOptions options = run_options(app, values);
+    bb::RunOptions options = run_options(app, values);
+    // Kept results: reused where nothing that decides them changed, said at the end.
+    std::optional<bb::RunCache> cache;
+    if (!values.cache.empty() && values.cache != "off" && !*commands.list)
+      options.cache = &cache.emplace(values.cache, values.fresh);
     bb::install_interrupt_handlers();
-    return dispatch(commands, values, options);
+    const int code = dispatch(commands, values, options);
+    if (cache && cache->reused() + cache->ran() > 0) {
+      fmt::print("kept results: {} reused, {} run, in {}{}\n", cache->reused(), cache->ran(),
+                 cache->folder(), cache->reused() > 0 ? " (--fresh runs them all again)" : "");
+      cache->prune();
+    }
+    return code;
   } catch (const bb::Interrupted& e) {
     return interrupted(e.what());
   } catch (const bb::CaseError& e) {

@@ -104,12 +104,22 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
   // What a child does with its run before sending it back (nothing: it comes back whole).
   using Finish = std::function<void(RunRecord&)>;
   // A backend's job (not the reference) also judges the stability trial at its dt, if the
-  // stability search begins there.
+  // stability search begins there. A run with a `role` is kept between invocations (every
+  // run but those of DESIGN.md's fallback, whose children read the finest run from a
+  // scratch file this invocation writes).
   const auto submit = [&](const Backend& b, double dt, RunRecord& slot,
-                          std::optional<double> shown_dt, Finish finish,
-                          std::function<void()> then) {
+                          std::optional<double> shown_dt, Finish finish, std::function<void()> then,
+                          const std::string& role) {
     const std::string what = label(b.name(), shown_dt);
     const bool judge = shown_dt.has_value();
+    const std::string key =
+        options.cache && !role.empty() ? options.cache->key(scene, role, b, shown_dt) : "";
+    if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
+      slot = wire::decode_run(*kept);
+      progress(what);
+      if (then) then();
+      return;
+    }
     pool.submit(
         what,
         [&b, &scene, dt, finish, judge] {
@@ -118,54 +128,64 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
           return wire::encode(run);
         },
         time_limit(scene, dt, options.timeout),
-        [&slot, &b, shown_dt, what, &progress, then](const ChildOutcome& o) {
+        [&slot, &b, shown_dt, what, &progress, then, key, &options](const ChildOutcome& o) {
           slot = record_from(o, b.name(), shown_dt);
+          if (!key.empty() && RunCache::repeatable(slot))
+            options.cache->keep(key, wire::encode(slot));
           progress(what);
           if (then) then();
         });
   };
-  const auto job = [&](std::size_t i, Finish finish, std::function<void()> then) {
+  const auto job = [&](std::size_t i, Finish finish, std::function<void()> then,
+                       const std::string& role) {
     submit(*jobs[i].backend, jobs[i].dt, out.runs[i], jobs[i].dt, std::move(finish),
-           std::move(then));
+           std::move(then), role);
   };
   // A backend's jobs are adjacent, largest dt first: its last is its finest.
   const auto finest_job = [&](std::size_t i) {
     return i + 1 == jobs.size() || jobs[i + 1].backend != jobs[i].backend;
   };
 
-  submit(reference, scene.sample, out.reference, std::nullopt, nullptr, [&] {
-    if (out.reference.status == RunStatus::Ok) {
-      // Every child measures its run against the reference it inherits at fork.
-      for (std::size_t i = 0; i < jobs.size(); ++i)
-        job(
-            i, [&](RunRecord& run) { summarise_in_child(scene, run, out.reference); }, nullptr);
-      return;
-    }
-    // DESIGN.md's fallback: each backend's finest run first; it writes itself whole once.
-    for (std::size_t i = 0; i < jobs.size(); ++i) {
-      if (!finest_job(i)) continue;
-      const std::string file = scratch.file("finest-" + std::to_string(i));
-      // The backend's other runs read the finest from the file in their children. Where it
-      // cannot be written (no room in $TMPDIR), it comes back whole instead, and so do they,
-      // for the caller to measure against it: the same numbers, measured in the parent.
-      const Finish finest = [&scene, file](RunRecord& run) {
-        if (run.status == RunStatus::Ok && !write_run(file, run)) return;
-        summarise_in_child(scene, run, run);
-      };
-      job(i, finest, [&, i, file] {
-        const bool ok = out.runs[i].status == RunStatus::Ok && out.runs[i].summarised;
-        // Without it they come back whole, for the caller to compare with whatever finer
-        // run did finish (case_runner.cpp says which dt that was).
-        const Finish against_finest = [&scene, file](RunRecord& run) {
-          const RunRecord finest = read_run(file);
-          summarise_in_child(scene, run, finest);
-        };
-        for (std::size_t j = i; j-- > 0 && jobs[j].backend == jobs[i].backend;)
-          job(j, ok ? against_finest : nullptr, nullptr);
-      });
-    }
-  });
-  submit(tighter, scene.sample, out.tight, std::nullopt, nullptr, nullptr);
+  submit(
+      reference, scene.sample, out.reference, std::nullopt, nullptr,
+      [&] {
+        if (out.reference.status == RunStatus::Ok) {
+          // Every child measures its run against the reference it inherits at fork.
+          for (std::size_t i = 0; i < jobs.size(); ++i)
+            job(
+                i, [&](RunRecord& run) { summarise_in_child(scene, run, out.reference); }, nullptr,
+                "accuracy");
+          return;
+        }
+        // DESIGN.md's fallback: each backend's finest run first; it writes itself whole once.
+        for (std::size_t i = 0; i < jobs.size(); ++i) {
+          if (!finest_job(i)) continue;
+          const std::string file = scratch.file("finest-" + std::to_string(i));
+          // The backend's other runs read the finest from the file in their children. Where it
+          // cannot be written (no room in $TMPDIR), it comes back whole instead, and so do they,
+          // for the caller to measure against it: the same numbers, measured in the parent.
+          const Finish finest = [&scene, file](RunRecord& run) {
+            if (run.status == RunStatus::Ok && !write_run(file, run)) return;
+            summarise_in_child(scene, run, run);
+          };
+          job(
+              i, finest,
+              [&, i, file] {
+                const bool ok = out.runs[i].status == RunStatus::Ok && out.runs[i].summarised;
+                // Without it they come back whole, for the caller to compare with whatever finer
+                // run did finish (case_runner.cpp says which dt that was).
+                const Finish against_finest = [&scene, file](RunRecord& run) {
+                  const RunRecord finest = read_run(file);
+                  summarise_in_child(scene, run, finest);
+                };
+                for (std::size_t j = i; j-- > 0 && jobs[j].backend == jobs[i].backend;)
+                  job(j, ok ? against_finest : nullptr, nullptr, "");
+              },
+              "");
+        }
+      },
+      "reference");
+  submit(tighter, scene.sample, out.tight, std::nullopt, nullptr, nullptr, "self-check");
   pool.run();
   out.reference.dt.reset();
   out.tight.dt.reset();

@@ -14,7 +14,9 @@ const CaseVocabulary& every_word() {
   return vocabulary;
 }
 
-Scene load_case(const std::string& path) { return load_case(path, every_word()); }
+Scene load_case(const std::string& path) {
+  return load_case(path, every_word());
+}
 
 Scene parse_case(std::string_view text, const std::string& file) {
   return parse_case(text, file, every_word());

@@ -9,6 +9,7 @@
 #include "run/cost.hpp"
 #include "run/registry.hpp"
 #include "run/results.hpp"
+#include "run/run_cache.hpp"
 
 namespace bb {
 
@@ -23,6 +24,9 @@ struct RunOptions {
   bool isolation = true;
   /// Seconds a run may take; 0 derives it from the case (see time_limit).
   double timeout = 0.0;
+  /// Results kept between invocations: reused where the key matches, and kept when new;
+  /// null keeps nothing.
+  RunCache* cache = nullptr;
   /// Called after each piece of work with what was done, e.g. "bullet 1/60"; may be called
   /// from several threads at once, never concurrently.
   std::function<void(const std::string&)> on_progress;

@@ -97,7 +97,7 @@ KnownTrials known_trials(const std::vector<RunRecord>& runs) {
 std::vector<StabilityResult> find_stability_all(
     const Scene& scene, const Registry& registry, const std::vector<std::string>& backends,
     int jobs, const std::function<void(const std::string&)>& on_done, bool isolation,
-    double timeout, const KnownTrials& known) {
+    double timeout, const KnownTrials& known, RunCache* cache) {
   require_search_within_cap(scene);
   const BackendSet set = backends_for(scene, registry);
   std::vector<const Backend*> chosen;
@@ -120,14 +120,23 @@ std::vector<StabilityResult> find_stability_all(
         queue_next(i);
         return;
       }
+      const std::string key = cache ? cache->key(scene, "stability trial", b, step) : "";
+      if (const auto kept = cache ? cache->find(key) : std::nullopt) {
+        searches[i].record(step, wire::decode_trial(*kept));
+        queue_next(i);
+        return;
+      }
       pool.submit(
           b.name() + " stability at dt " + std::to_string(step),
           [&b, &scene, step] { return wire::encode(try_step(b, scene, step)); },
           time_limit(scene, step, timeout),
-          [&, i, step](const ChildOutcome& o) {
-            searches[i].record(step, o.kind == ChildOutcome::Kind::Done
-                                         ? wire::decode_trial(o.payload)
-                                         : StabilityTrial{false, o.reason, "failed"});
+          [&, i, step, key](const ChildOutcome& o) {
+            const StabilityTrial trial = o.kind == ChildOutcome::Kind::Done
+                                             ? wire::decode_trial(o.payload)
+                                             : StabilityTrial{false, o.reason, "failed"};
+            // A trial that did not finish (a crash, a timeout) is tried again next time.
+            if (!key.empty() && trial.growth != "failed") cache->keep(key, o.payload);
+            searches[i].record(step, trial);
             queue_next(i);
           });
       return;

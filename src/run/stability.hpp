@@ -10,6 +10,7 @@
 
 #include "run/registry.hpp"
 #include "run/results.hpp"
+#include "run/run_cache.hpp"
 #include "run/stability_search.hpp"
 #include "scene/scene.hpp"
 
@@ -28,11 +29,13 @@ using KnownTrials = std::map<std::pair<std::string, double>, StabilityTrial>;
 KnownTrials known_trials(const std::vector<RunRecord>& runs);
 
 /// Every course variant and engine of the case (`backends` filters by name when not empty),
-/// each trial in its own child process with a time limit, unless `known` has it; backends
+/// each trial in its own child process with a time limit, unless `known` or `cache` has it
+/// (a trial that finished is kept in `cache`); backends
 /// searched in parallel on `jobs` processes. `on_done` is called after each backend's search.
 std::vector<StabilityResult> find_stability_all(
     const Scene& scene, const Registry& registry, const std::vector<std::string>& backends,
     int jobs, const std::function<void(const std::string&)>& on_done = nullptr,
-    bool isolation = true, double timeout = 0.0, const KnownTrials& known = {});
+    bool isolation = true, double timeout = 0.0, const KnownTrials& known = {},
+    RunCache* cache = nullptr);
 
 }  // namespace bb

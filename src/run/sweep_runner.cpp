@@ -1,5 +1,7 @@
 #include "run/sweep_runner.hpp"
 
+#include <algorithm>
+
 #include "run/child_pool.hpp"
 #include "run/wire.hpp"
 #include "scene/sweep_parameter.hpp"
@@ -37,6 +39,7 @@ Scene sweep_point_scene(const Scene& scene, double value) {
   point.sweep.reset();
   point.gates.clear();
   point.claims.clear();
+  point.variant = "sweep " + scene.sweep->parameter + " = " + exact_number(value);
   return point;
 }
 
@@ -51,6 +54,8 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
   each.cost = false;
   each.sweep = false;
   each.on_progress = nullptr;
+  // A point is kept whole (in this process), not run by run in its child.
+  each.cache = nullptr;
   // A point runs the reference, its self-check and every backend, each with its own limit.
   const std::size_t runs = backends_for(scene, registry).all.size() + 2;
   const double limit =
@@ -60,6 +65,15 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
     const double value = sweep.values[i];
     out.points[i].value = value;
     const std::string label = sweep.parameter + " = " + short_number(value);
+    // The point's rows depend on the backends asked for, too.
+    std::string what = sweep.parameter + " = " + exact_number(value) + "; backends:";
+    for (const std::string& b : options.backends) what += " " + b;
+    const std::string key = options.cache ? options.cache->key(scene, "sweep point", what) : "";
+    if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
+      out.points[i].runs = wire::decode_runs(*kept);
+      progress("sweep " + label);
+      continue;
+    }
     pool.submit(
         label,
         [&scene, &registry, &each, value] {
@@ -76,11 +90,15 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
           return wire::encode(rows);
         },
         limit,
-        [&, i, value, label](const ChildOutcome& outcome) {
+        [&, i, value, label, key](const ChildOutcome& outcome) {
           out.points[i].runs =
               outcome.kind == ChildOutcome::Kind::Done
                   ? wire::decode_runs(outcome.payload)
                   : lost_point(sweep_point_scene(scene, value), registry, options, outcome);
+          const std::vector<RunRecord>& rows = out.points[i].runs;
+          if (!key.empty() && outcome.kind == ChildOutcome::Kind::Done &&
+              std::all_of(rows.begin(), rows.end(), RunCache::repeatable))
+            options.cache->keep(key, outcome.payload);
           progress("sweep " + label);
         });
   }

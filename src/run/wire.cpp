@@ -172,6 +172,7 @@ std::string encode(const RunRecord& run) {
   w.raw(run.position_scale);
   w.raw(run.travel);
   w.raw<char>(run.summarised);
+  w.text(run.messages);
   w.raw<char>(run.stability_trial.has_value());
   if (const auto& t = run.stability_trial) w.text(encode(*t));
   return w.take();
@@ -228,6 +229,7 @@ RunRecord decode_run(const std::string& bytes) {
   run.position_scale = r.raw<double>();
   run.travel = r.raw<double>();
   run.summarised = r.raw<char>() != 0;
+  run.messages = r.text();
   if (r.raw<char>()) run.stability_trial = decode_trial(r.text());
   return run;
 }

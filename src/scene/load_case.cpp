@@ -152,6 +152,7 @@ Scene parse_case(std::string_view text, const std::string& file, const CaseVocab
   }
   Scene scene;
   scene.file = file;
+  scene.source = std::string(text);
   TomlReader root(table, file, "the case", 1);
   // The order matters: bodies come before what refers to them, names before gates.
   read_header(root, scene);

@@ -300,6 +300,11 @@ struct World {
 /// stability search.
 struct Study {
   std::string file;  ///< where it was loaded from, for messages
+  /// The case's text as loaded, and what was changed in it (a sweep's point, "" for none):
+  /// together they decide every run, and a kept result's key is made of them. A scene made
+  /// in code has no text, and its runs are never kept.
+  std::string source;
+  std::string variant;
   std::string name;
   std::string title;
   std::string seed;        ///< section of the course text, may be empty

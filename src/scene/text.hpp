@@ -51,6 +51,11 @@ inline std::string significant_digits(double x, int digits = 3) {
   return buffer;
 }
 
+/// `x` exactly: 17 significant digits, which read back as the same double.
+inline std::string exact_number(double x) {
+  return significant_digits(x, 17);
+}
+
 /// A step as people write it: "1/60" when 1/dt is a whole number, else seconds (6 digits).
 inline std::string format_dt(double dt) {
   const double rate = 1.0 / dt;

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "support/test_support.hpp"
+
 namespace bb::test {
 
 struct Outcome {

@@ -1,6 +1,8 @@
 // Helpers shared by the tests: scenes from inline TOML, paths into the source tree.
 #pragma once
 
+#include <stdlib.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,6 +12,10 @@
 #include "run/case_loading.hpp"
 
 namespace bb::test {
+
+/// The program as a test runs it keeps no results between invocations (each run is the
+/// run under test); a test of the kept results names its own folder with --cache.
+inline const bool kNoKeptResults = setenv("BEACHBALL_CACHE", "off", 1) == 0;
 
 /// The source tree, for cases/ and tests/cases/.
 inline std::string source_path(const std::string& relative) {

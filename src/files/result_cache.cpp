@@ -1,0 +1,161 @@
+#include "files/result_cache.hpp"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "files/atomic_file.hpp"
+
+namespace bb {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The first line of every entry: what wrote it and the layout's version.
+constexpr char kMagic[] = "beachball result cache 1\n";
+constexpr std::size_t kMagicSize = sizeof(kMagic) - 1;
+constexpr char kSuffix[] = ".entry";
+
+std::uint64_t fnv1a(const std::string& bytes, std::uint64_t h) {
+  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
+  return h;
+}
+
+/// A second hash of another structure (multiply-rotate), so that the two halves of a digest
+/// do not fail together.
+std::uint64_t mix(const std::string& bytes) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ bytes.size();
+  for (unsigned char c : bytes) {
+    h += c;
+    h *= 0xbf58476d1ce4e5b9ULL;
+    h ^= h >> 29;
+  }
+  return h;
+}
+
+std::string hex(std::uint64_t v) {
+  static const char* digits = "0123456789abcdef";
+  std::string out(16, '0');
+  for (int i = 15; i >= 0; --i, v >>= 4) out[i] = digits[v & 15];
+  return out;
+}
+
+std::string u64_bytes(std::uint64_t v) {
+  std::string out(8, '\0');
+  std::memcpy(out.data(), &v, 8);
+  return out;
+}
+
+std::uint64_t read_u64(const std::string& bytes, std::size_t at) {
+  std::uint64_t v = 0;
+  std::memcpy(&v, bytes.data() + at, 8);
+  return v;
+}
+
+bool is_key(const std::string& name) {
+  return name.size() == 32 && std::all_of(name.begin(), name.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
+}
+
+/// Whether the file at `path` begins with this cache's first line.
+bool ours(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(kMagicSize, '\0');
+  return in.read(head.data(), static_cast<std::streamsize>(kMagicSize)) && head == kMagic;
+}
+
+}  // namespace
+
+std::string default_cache_folder() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/')
+    return std::string(xdg) + "/beachball";
+  if (const char* home = std::getenv("HOME"); home && *home == '/')
+    return std::string(home) + "/.cache/beachball";
+  return "";
+}
+
+std::string digest(const std::string& bytes) {
+  return hex(fnv1a(bytes, 0xcbf29ce484222325ULL)) + hex(mix(bytes));
+}
+
+ResultCache::ResultCache(std::string folder, std::uintmax_t limit_bytes)
+    : folder_(std::move(folder)), limit_(limit_bytes) {}
+
+std::string ResultCache::path_of(const std::string& key) const {
+  return folder_ + "/" + key + kSuffix;
+}
+
+std::optional<std::string> ResultCache::load(const std::string& key) const {
+  const std::string path = path_of(key);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  // The first line, the key, the payload's length and checksum, then the payload.
+  const std::size_t header = kMagicSize + key.size() + 1 + 16;
+  if (bytes.size() < header || bytes.compare(0, kMagicSize, kMagic) != 0 ||
+      bytes.compare(kMagicSize, key.size() + 1, key + "\n") != 0)
+    return std::nullopt;
+  const std::uint64_t size = read_u64(bytes, header - 16);
+  const std::uint64_t sum = read_u64(bytes, header - 8);
+  if (bytes.size() - header != size) return std::nullopt;
+  std::string payload = bytes.substr(header);
+  if (fnv1a(payload, 0xcbf29ce484222325ULL) != sum) return std::nullopt;
+  // Used now: the last to be pruned.
+  utimensat(AT_FDCWD, path.c_str(), nullptr, 0);
+  return payload;
+}
+
+bool ResultCache::store(const std::string& key, const std::string& bytes) const {
+  if (folder_.empty() || !is_key(key)) return false;
+  try {
+    std::error_code ec;
+    fs::create_directories(folder_, ec);
+    write_output_file(path_of(key), std::string(kMagic) + key + "\n" + u64_bytes(bytes.size()) +
+                                        u64_bytes(fnv1a(bytes, 0xcbf29ce484222325ULL)) + bytes);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+int ResultCache::prune() const {
+  struct Entry {
+    fs::path path;
+    fs::file_time_type used;
+    std::uintmax_t size;
+  };
+  std::vector<Entry> entries;
+  std::uintmax_t total = 0;
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(folder_, ec); !ec && it != fs::directory_iterator();
+       it.increment(ec)) {
+    const fs::path p = it->path();
+    const std::string name = p.filename().string();
+    if (!it->is_regular_file() || !name.ends_with(kSuffix) ||
+        !is_key(name.substr(0, name.size() - (sizeof(kSuffix) - 1))) || !ours(p))
+      continue;
+    std::error_code e;
+    const Entry entry{p, fs::last_write_time(p, e), fs::file_size(p, e)};
+    if (e) continue;
+    entries.push_back(entry);
+    total += entry.size;
+  }
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return a.used < b.used; });
+  int removed = 0;
+  for (const Entry& e : entries) {
+    if (total <= limit_) break;
+    std::error_code gone;
+    if (fs::remove(e.path, gone)) total -= e.size, ++removed;
+  }
+  return removed;
+}
+
+}  // namespace bb

@@ -1,0 +1,72 @@
+#include "run/run_cache.hpp"
+
+#include <bit>
+#include <filesystem>
+#include <fstream>
+
+namespace bb {
+
+namespace {
+
+std::string file_digest(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  return digest(std::string((std::istreambuf_iterator<char>(in)), {}));
+}
+
+std::string step_text(std::optional<double> dt) {
+  // The step's exact bits: two steps that print alike are still two keys.
+  return dt ? std::to_string(std::bit_cast<std::uint64_t>(*dt)) : "own steps";
+}
+
+}  // namespace
+
+RunCache::RunCache(const std::string& folder, bool fresh)
+    : store_(folder, kCacheLimitBytes), fresh_(fresh), program_(file_digest("/proc/self/exe")) {}
+
+std::string RunCache::build_identity(const Backend& backend) const {
+  const std::string name = backend.name();
+  auto found = plugins_.find(name);
+  if (found == plugins_.end()) {
+    const std::string plugin =
+        (std::filesystem::path(plugin_folder()) / plugin_file_name(name)).string();
+    const auto [library, version] = backend.library_version();
+    found = plugins_.emplace(name, file_digest(plugin) + " " + library + " " + version).first;
+  }
+  return program_ + " " + found->second;
+}
+
+std::string RunCache::key(const Scene& scene, const std::string& role, const Backend& backend,
+                          std::optional<double> dt) const {
+  if (scene.source.empty() || program_.empty()) return "";
+  return digest(role + "\n" + backend.name() + "\n" + step_text(dt) + "\n" +
+                build_identity(backend) + "\n" + scene.variant + "\n" + scene.source);
+}
+
+std::string RunCache::key(const Scene& scene, const std::string& role,
+                          const std::string& what) const {
+  if (scene.source.empty() || program_.empty()) return "";
+  // Every plugin of the build can take part.
+  std::string build = program_;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(plugin_folder(), ec))
+    build += " " + entry.path().filename().string() + ":" + file_digest(entry.path().string());
+  return digest(role + "\n" + what + "\n" + build + "\n" + scene.variant + "\n" + scene.source);
+}
+
+std::optional<std::string> RunCache::find(const std::string& key) {
+  std::optional<std::string> bytes = fresh_ || key.empty() ? std::nullopt : store_.load(key);
+  ++(bytes ? reused_ : ran_);
+  return bytes;
+}
+
+void RunCache::keep(const std::string& key, const std::string& bytes) const {
+  if (!key.empty()) store_.store(key, bytes);
+}
+
+bool RunCache::repeatable(const RunRecord& run) {
+  return run.status == RunStatus::Ok || run.status == RunStatus::Diverged ||
+         run.status == RunStatus::Unsupported;
+}
+
+}  // namespace bb

@@ -1,0 +1,92 @@
+// Only what changed runs again: a second `run` of the same cases reuses every kept result
+// and writes the same bytes; a case whose text changed runs again while the others are
+// reused; --fresh runs everything; a report reuses the accuracy runs, the stability trials
+// and a sweep's points, and writes the same report.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+
+#include "support/program.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The numbers of "kept results: R reused, N run" in the program's output: {R, N}, or
+/// {-1, -1} when it says nothing of them.
+std::pair<int, int> kept(const std::string& out) {
+  std::smatch m;
+  if (!std::regex_search(out, m, std::regex("kept results: ([0-9]+) reused, ([0-9]+) run")))
+    return {-1, -1};
+  return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
+TEST(KeptResults, OnlyTheCaseThatChangedRunsAgain) {
+  const std::string dir = test::fresh_dir("kept_results");
+  const std::string cache = dir + "/cache";
+  const std::string a = test::write_case(dir, "a.toml", test::minimal_case("a"));
+  const std::string b = test::write_case(dir, "b.toml", test::minimal_case("b"));
+  const auto run = [&](const std::string& out, const std::string& more = "") {
+    return test::beachball("run " + a + " " + b + " --no-cost --out " + dir + "/" + out +
+                           " --cache " + cache + more);
+  };
+  const test::Outcome first = run("first");
+  ASSERT_EQ(first.exit_code, 0) << first.out;
+  const auto [none, all] = kept(first.out);
+  EXPECT_EQ(none, 0) << first.out;
+  ASSERT_GT(all, 0) << first.out;
+  ASSERT_EQ(all % 2, 0) << "the two cases run alike";
+
+  const test::Outcome second = run("second");
+  ASSERT_EQ(second.exit_code, 0) << second.out;
+  EXPECT_EQ(kept(second.out), std::make_pair(all, 0)) << second.out;
+  EXPECT_EQ(test::snapshot(dir + "/second"), test::snapshot(dir + "/first"));
+
+  // a's text changes (its duration): a runs again, b is reused.
+  std::string text = test::minimal_case("a");
+  text.replace(text.find("duration = 1.0"), 14, "duration = 2.0");
+  test::write_case(dir, "a.toml", text);
+  const test::Outcome edited = run("edited");
+  ASSERT_EQ(edited.exit_code, 0) << edited.out;
+  EXPECT_EQ(kept(edited.out), std::make_pair(all / 2, all / 2)) << edited.out;
+  EXPECT_EQ(test::file_bytes(dir + "/edited/b.json"), test::file_bytes(dir + "/first/b.json"));
+  EXPECT_NE(test::file_bytes(dir + "/edited/a.json"), test::file_bytes(dir + "/first/a.json"));
+
+  const test::Outcome fresh = run("fresh", " --fresh");
+  EXPECT_EQ(kept(fresh.out), std::make_pair(0, all)) << fresh.out;
+  EXPECT_EQ(test::file_bytes(dir + "/fresh/b.json"), test::file_bytes(dir + "/first/b.json"));
+
+  // Without a folder of kept results (the tests' environment says off), nothing is said.
+  const test::Outcome off = test::beachball("run " + b + " --no-cost --out " + dir + "/off");
+  EXPECT_EQ(kept(off.out), std::make_pair(-1, -1)) << off.out;
+}
+
+TEST(KeptResults, AReportReusesItsRunsTrialsAndSweepAndWritesTheSameReport) {
+  const std::string dir = test::fresh_dir("kept_report");
+  const std::string cache = dir + "/cache";
+  const std::string stack = test::write_case(dir, "stack.toml", test::kStackedBalls);
+  const std::string a = test::write_case(dir, "a.toml", test::minimal_case("a"));
+  const auto report = [&](const std::string& out) {
+    return test::beachball("report " + stack + " " + a + " --no-cost --out " + dir + "/" + out +
+                           " --cache " + cache);
+  };
+  const test::Outcome first = report("first");
+  ASSERT_EQ(first.exit_code, 0) << first.out;
+  const test::Outcome second = report("second");
+  ASSERT_EQ(second.exit_code, 0) << second.out;
+  // Everything is reused but the runs of DESIGN.md's fallback (the stacked balls have no
+  // reference), whose children read the finest run from a file this invocation writes.
+  const auto [reused, ran] = kept(second.out);
+  const int all = kept(first.out).second;
+  EXPECT_EQ(reused + ran, all) << second.out;
+  EXPECT_GT(reused, 0) << second.out;
+  EXPECT_LT(ran, all / 2) << second.out;
+  auto before = test::snapshot(dir + "/first"), after = test::snapshot(dir + "/second");
+  EXPECT_EQ(after, before);
+}
+
+}  // namespace
+}  // namespace bb
