@@ -134,6 +134,9 @@ std::string index_page(const std::vector<CaseResults>& all,
         "**Cost noise**: some runs were timed on a busy machine (their median repeat took more "
         "than {:g} times the fastest; marked ~): {}.\n\n",
         kBusyMedianOverMin, busy);
+  std::string kept = kept_costs_note(all);
+  // The note begins "Kept costs:", set in bold here.
+  if (!kept.empty()) kept = "**Kept costs**:" + kept.substr(11) + "\n\n";
   return "# beachball report\n\nThe bundled suite, one page per case: the scene, every backend's "
          "error against the GSL reference and its cost, the whole dt sweep with work-precision "
          "diagrams, trajectories and energy, the stability search, the gates and the engine "
@@ -141,7 +144,7 @@ std::string index_page(const std::vector<CaseResults>& all,
          "each part took change ([where the time went](#where-the-time-went)).\n\n"
          "**[Claims ledger](claims.md)**: the course text's sentences, each with its verdict "
          "per backend and the numbers behind it.\n\n" +
-         sweeps + busy +
+         sweeps + busy + kept +
          "\n## At report_dt, by course section\n\nOne table per section of the course text, "
          "with the backends its cases run. Each cell: position_max against the reference at the "
          "case's "

@@ -43,6 +43,36 @@ std::string cost_noise_warning(const CaseResults& results) {
       noise.busy, noise.judged, kBusyMedianOverMin, noise.worst);
 }
 
+KeptCosts kept_costs(const std::vector<CaseResults>& all) {
+  KeptCosts out;
+  const auto look = [&](const RunRecord& run) {
+    if (!run.cost) return;
+    ++out.timed;
+    const std::string& when = run.cost->measured_at;
+    if (when.empty()) return;
+    ++out.kept;
+    if (out.first.empty() || when < out.first) out.first = when;
+    if (out.last.empty() || when > out.last) out.last = when;
+  };
+  for (const CaseResults& r : all) {
+    look(r.reference_run);
+    for (const RunRecord& run : r.runs) look(run);
+  }
+  return out;
+}
+
+std::string kept_costs_note(const std::vector<CaseResults>& all) {
+  const KeptCosts k = kept_costs(all);
+  if (k.kept == 0) return "";
+  const std::string when =
+      k.first == k.last ? "at " + k.first : "from " + k.first + " to " + k.last;
+  return fmt::format(
+      "Kept costs: the costs of {} of the {} timed runs were kept from an earlier invocation, "
+      "timed {} (UTC) on whatever the machine was doing then; their runs' results are the "
+      "same bytes. `--fresh` times them anew.",
+      k.kept, k.timed, when);
+}
+
 std::string cost_ns_cell(const std::optional<Cost>& cost) {
   return busy_mark(cost) +
          format_ns(cost ? std::optional<double>(cost->ns_per_step) : std::nullopt);

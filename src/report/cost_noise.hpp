@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "run/results.hpp"
 
@@ -18,6 +19,18 @@ CostNoise cost_noise(const CaseResults& results);
 
 /// The page's warning when some run was timed on a busy machine, else "".
 std::string cost_noise_warning(const CaseResults& results);
+
+/// Costs kept from an earlier invocation (Cost::measured_at) among `all`: how many of the
+/// timed runs, and the first and last time they were timed.
+struct KeptCosts {
+  int kept = 0;
+  int timed = 0;
+  std::string first, last;
+};
+KeptCosts kept_costs(const std::vector<CaseResults>& all);
+/// The note a page (one case) or the index (every case) gives when some costs were kept,
+/// else "".
+std::string kept_costs_note(const std::vector<CaseResults>& all);
 
 /// A cost cell in ns per step: the median, "~" in front when timed on a busy machine.
 std::string cost_ns_cell(const std::optional<Cost>& cost);

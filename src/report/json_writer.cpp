@@ -29,7 +29,7 @@ Json run_json(const RunRecord& run) {
   j["reason"] = run.reason;
   j["diverged_at"] = optional_json(run.diverged_at);
   j["steps"] = run.steps;
-  if (run.cost)
+  if (run.cost) {
     j["cost"] = {{"ns_per_step", run.cost->ns_per_step},
                  {"seconds_per_simulated_second", run.cost->seconds_per_simulated_second},
                  {"repeats", run.cost->repeats},
@@ -37,8 +37,11 @@ Json run_json(const RunRecord& run) {
                  {"ns_per_step_median", run.cost->ns_per_step},
                  {"ns_per_step_max", run.cost->ns_per_step_max},
                  {"busy", timed_on_a_busy_machine(*run.cost)}};
-  else
+    // A cost kept from an earlier invocation says when it was timed.
+    if (!run.cost->measured_at.empty()) j["cost"]["measured_at"] = run.cost->measured_at;
+  } else {
     j["cost"] = nullptr;
+  }
   if (run.errors)
     j["errors"] = {{"position_max", run.errors->position_max},
                    {"position_rms", run.errors->position_rms},
@@ -61,7 +64,6 @@ Json run_json(const RunRecord& run) {
   if (!run.messages.empty()) j["messages"] = run.messages;
   return j;
 }
-
 
 /// How the reference was solved, and its self-check: the largest difference of each state
 /// component from a second solve by another method (self_check: positions, m, as always;

@@ -86,6 +86,8 @@ std::string results_section(const CaseResults& results) {
   }
   if (const std::string busy = cost_noise_warning(results); !busy.empty())
     out += "\n" + markdown_text(busy) + "\n";
+  if (const std::string kept = kept_costs_note({results}); !kept.empty())
+    out += "\n" + markdown_text(kept) + "\n";
   out += order_markdown(results);
   return out;
 }

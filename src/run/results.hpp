@@ -27,6 +27,8 @@ struct Cost {
   int repeats = 0;
   double ns_per_step_min = 0.0;
   double ns_per_step_max = 0.0;
+  /// "" when timed by this invocation; else when (UTC, ISO 8601) a kept cost was timed.
+  std::string measured_at;
 };
 
 struct ObservableResult {

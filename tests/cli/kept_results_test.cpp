@@ -88,5 +88,32 @@ TEST(KeptResults, AReportReusesItsRunsTrialsAndSweepAndWritesTheSameReport) {
   EXPECT_EQ(after, before);
 }
 
+// Costs are kept too, but never passed off as fresh: a reused cost says when it was timed
+// (in the JSON, on the case's page and on the index), and --fresh times it anew.
+TEST(KeptResults, AKeptCostSaysWhenItWasTimed) {
+  const std::string dir = test::fresh_dir("kept_costs");
+  const std::string a = test::write_case(dir, "a.toml", test::minimal_case("a"));
+  const auto report = [&](const std::string& out, const std::string& more = "") {
+    return test::beachball("report " + a + " --cost-time 0.001 --out " + dir + "/" + out +
+                           " --cache " + dir + "/cache" + more);
+  };
+  ASSERT_EQ(report("first").exit_code, 0);
+  const std::string first = test::file_bytes(dir + "/first/a.json");
+  EXPECT_EQ(first.find("measured_at"), std::string::npos);
+  const test::Outcome second = report("second");
+  ASSERT_EQ(second.exit_code, 0) << second.out;
+  EXPECT_EQ(kept(second.out).second, 0) << second.out;
+  const std::string json = test::file_bytes(dir + "/second/a.json");
+  EXPECT_TRUE(std::regex_search(json, std::regex(R"("measured_at": "20[0-9-]+T[0-9:]+Z")")))
+      << json;
+  EXPECT_NE(test::file_bytes(dir + "/second/a.md").find("Kept costs: the costs of"),
+            std::string::npos);
+  EXPECT_NE(test::file_bytes(dir + "/second/README.md").find("**Kept costs**:"), std::string::npos);
+  const test::Outcome fresh = report("fresh", " --fresh");
+  ASSERT_EQ(fresh.exit_code, 0) << fresh.out;
+  EXPECT_EQ(test::file_bytes(dir + "/fresh/a.json").find("measured_at"), std::string::npos);
+  EXPECT_EQ(test::file_bytes(dir + "/fresh/README.md").find("Kept costs"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace bb

@@ -66,7 +66,7 @@ TEST(SummaryTable, TheReferenceRowSaysWhatItsBracketIsFrom) {
 
 RunRecord timed(double dt, double median, double fastest, int repeats) {
   RunRecord run = run_at(dt, RunStatus::Ok, 5.0);
-  run.cost = Cost{median, median * 1e-6, repeats, fastest, 3.0 * median};
+  run.cost = Cost{median, median * 1e-6, repeats, fastest, 3.0 * median, ""};
   return run;
 }
 

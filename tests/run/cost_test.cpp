@@ -68,9 +68,9 @@ TEST(CostRepeats, TheFastestAndSlowestRepeatStandBesideTheMedian) {
 }
 
 TEST(CostNoise, TheBusyRuleReadsTheMedianAgainstTheFastestRepeat) {
-  EXPECT_TRUE(timed_on_a_busy_machine(Cost{130.0, 0.0, 3, 100.0, 140.0}));
-  EXPECT_FALSE(timed_on_a_busy_machine(Cost{120.0, 0.0, 3, 100.0, 900.0}));
-  EXPECT_FALSE(timed_on_a_busy_machine(Cost{300.0, 0.0, 2, 100.0, 500.0}));
+  EXPECT_TRUE(timed_on_a_busy_machine(Cost{130.0, 0.0, 3, 100.0, 140.0, ""}));
+  EXPECT_FALSE(timed_on_a_busy_machine(Cost{120.0, 0.0, 3, 100.0, 900.0, ""}));
+  EXPECT_FALSE(timed_on_a_busy_machine(Cost{300.0, 0.0, 2, 100.0, 500.0, ""}));
 }
 
 }  // namespace
