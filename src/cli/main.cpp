@@ -26,8 +26,8 @@ struct Values {
   double timeout = 0.0;
   double cost_seconds = 0.005;
   /// $BEACHBALL_CACHE when set (a folder, or "off"), else the user's cache folder.
-  std::string cache = std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE")
-                                                     : bb::default_cache_folder();
+  std::string cache =
+      std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE") : bb::default_cache_folder();
   bool fresh = false;
 };
 
@@ -73,10 +73,9 @@ Commands declare_commands(CLI::App& app, Values& v) {
   add_isolation_options(run);
   // Options of every command whose results are kept between invocations.
   const auto add_cache_options = [&](CLI::App* command) {
-    command
-        ->add_option("--cache", v.cache,
-                     "folder of kept results, or 'off' (default: $BEACHBALL_CACHE, else "
-                     "$XDG_CACHE_HOME/beachball or ~/.cache/beachball)");
+    command->add_option("--cache", v.cache,
+                        "folder of kept results, or 'off' (default: $BEACHBALL_CACHE, else "
+                        "$XDG_CACHE_HOME/beachball or ~/.cache/beachball)");
     command->add_flag("--fresh", v.fresh, "run everything again (new results are still kept)");
   };
   add_cache_options(run);
