@@ -1,8 +1,12 @@
 #include "files/result_cache.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +14,7 @@
 #include <vector>
 
 #include "files/atomic_file.hpp"
+#include "files/owned_temporary.hpp"
 
 namespace bb {
 
@@ -117,8 +122,33 @@ bool ResultCache::store(const std::string& key, const std::string& bytes) const 
   try {
     std::error_code ec;
     fs::create_directories(folder_, ec);
-    write_output_file(path_of(key), std::string(kMagic) + key + "\n" + u64_bytes(bytes.size()) +
-                                        u64_bytes(fnv1a(bytes, 0xcbf29ce484222325ULL)) + bytes);
+    const std::string entry = std::string(kMagic) + key + "\n" + u64_bytes(bytes.size()) +
+                              u64_bytes(fnv1a(bytes, 0xcbf29ce484222325ULL)) + bytes;
+    // Unnamed, then linked into place under a name of this invocation and renamed over the
+    // entry: a reader sees the old entry or the new one. Not flushed to the disk: after a
+    // power cut the checksum tells a damaged entry, which is then a miss.
+    const int fd = open(folder_.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
+    if (fd < 0) {
+      write_output_file(path_of(key), entry);
+      return true;
+    }
+    std::size_t at = 0;
+    while (at < entry.size()) {
+      const ssize_t n = ::write(fd, entry.data() + at, entry.size() - at);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      at += static_cast<std::size_t>(n);
+    }
+    const std::string self = "/proc/self/fd/" + std::to_string(fd);
+    const std::string named = path_of(key) + "." + random_token();
+    const bool linked = at == entry.size() && linkat(AT_FDCWD, self.c_str(), AT_FDCWD,
+                                                     named.c_str(), AT_SYMLINK_FOLLOW) == 0;
+    close(fd);
+    if (!linked) return false;
+    if (std::rename(named.c_str(), path_of(key).c_str()) != 0) {
+      std::remove(named.c_str());
+      return false;
+    }
     return true;
   } catch (const std::exception&) {
     return false;
