@@ -39,6 +39,14 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
                    const RunOptions& options);
 int stability_command(const std::vector<std::string>& paths, const std::string& out,
                       const RunOptions& options);
+/// `report --shard I/N`: runs the shard's share of the work (options.shard) and keeps its
+/// results in `out` (options.cache), with a manifest of what it was made from.
+int shard_command(const std::vector<std::string>& paths, const std::string& out,
+                  const RunOptions& options);
+/// Puts the shards' folders together and writes the report from their kept results into
+/// `out`; refuses (CaseError) shards of other cases, another build, or an incomplete set.
+int merge_command(const std::vector<std::string>& shards, const std::vector<std::string>& paths,
+                  const std::string& out, const RunOptions& options);
 int check_command(const std::vector<std::string>& paths, const std::string& junit,
                   const RunOptions& options);
 

@@ -26,6 +26,8 @@ struct Values {
   double timeout = 0.0;
   double cost_seconds = 0.005;
   /// $BEACHBALL_CACHE when set (a folder, or "off"), else the user's cache folder.
+  std::string shard;                ///< "I/N", report only
+  std::vector<std::string> shards;  ///< merge's shard folders
   std::string cache =
       std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE") : bb::default_cache_folder();
   bool fresh = false;
@@ -38,6 +40,7 @@ struct Commands {
   CLI::App* report;
   CLI::App* stability;
   CLI::App* check;
+  CLI::App* merge;
 };
 
 /// Declares every subcommand and its options on `app`, writing into `v`.
@@ -86,6 +89,19 @@ Commands declare_commands(CLI::App& app, Values& v) {
   add_sweep_options(report);
   add_isolation_options(report);
   add_cache_options(report);
+  report->add_option("--shard", v.shard,
+                     "I/N: run only share I of N of the work and keep its results in --out, "
+                     "for `merge` (no pages)");
+
+  auto* merge = app.add_subcommand(
+      "merge", "write the report from the kept results of every `report --shard I/N`");
+  merge->add_option("SHARDS", v.shards, "the shards' folders")->required();
+  merge->add_option("--cases", v.cases,
+                    "the case files or folders the shards ran (default: "
+                    "the bundled suite)");
+  merge->add_option("--out", v.out, "report folder")->default_val("reports");
+  merge->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
+  add_isolation_options(merge);
 
   auto* stability =
       app.add_subcommand("stability", "largest stable step per backend, by bisection");
@@ -103,7 +119,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
   add_cache_options(check);
-  return {list, run, report, stability, check};
+  return {list, run, report, stability, check, merge};
 }
 
 /// The run options the parsed command line gives, each checked against its range.
@@ -127,6 +143,7 @@ bb::RunOptions run_options(const CLI::App& app, Values& v) {
   options.cost_options.min_seconds = v.cost_seconds;
   options.isolation = !v.no_isolation;
   options.timeout = v.timeout;
+  if (given("--shard")) options.shard = bb::cli::parse_shard(v.shard);
   return options;
 }
 
@@ -134,7 +151,9 @@ bb::RunOptions run_options(const CLI::App& app, Values& v) {
 int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) {
   if (*c.list) return bb::cli::list_command(v.cases);
   if (*c.run) return bb::cli::run_command(v.cases, v.out, options);
+  if (*c.report && options.shard) return bb::cli::shard_command(v.cases, v.out, options);
   if (*c.report) return bb::cli::report_command(v.cases, v.out, options);
+  if (*c.merge) return bb::cli::merge_command(v.shards, v.cases, v.out, options);
   if (*c.stability) return bb::cli::stability_command(v.cases, v.out, options);
   if (*c.check) return bb::cli::check_command(v.cases, v.junit, options);
   return bb::cli::kExitBadInput;
@@ -164,14 +183,17 @@ int main(int argc, char** argv) {
     bb::RunOptions options = run_options(app, values);
     // Kept results: reused where nothing that decides them changed, said at the end.
     std::optional<bb::RunCache> cache;
-    if (!values.cache.empty() && values.cache != "off" && !*commands.list)
+    // A shard keeps its results in its own folder; a merge reads the shards' folders.
+    if (options.shard)
+      options.cache = &cache.emplace(values.out, values.fresh);
+    else if (!values.cache.empty() && values.cache != "off" && !*commands.list && !*commands.merge)
       options.cache = &cache.emplace(values.cache, values.fresh);
     bb::install_interrupt_handlers();
     const int code = dispatch(commands, values, options);
     if (cache && cache->reused() + cache->ran() > 0) {
       fmt::print("kept results: {} reused, {} run, in {}{}\n", cache->reused(), cache->ran(),
                  cache->folder(), cache->reused() > 0 ? " (--fresh runs them all again)" : "");
-      cache->prune();
+      if (!options.shard) cache->prune();
     }
     return code;
   } catch (const bb::Interrupted& e) {

@@ -59,4 +59,18 @@ double parse_step(const std::string& text) {
                   "'" + text + "' is not a positive, finite step in seconds (write 0.01 or 1/60)");
 }
 
+Shard parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  const auto whole = [](const std::string& part) {
+    return !part.empty() && part.size() <= 5 &&
+           part.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (slash != std::string::npos && whole(text.substr(0, slash)) && whole(text.substr(slash + 1))) {
+    const Shard shard{std::stoi(text.substr(0, slash)), std::stoi(text.substr(slash + 1))};
+    if (shard.index >= 1 && shard.count <= 10000 && shard.index <= shard.count) return shard;
+  }
+  throw CaseError("--shard", 0,
+                  "'" + text + "' is not a share I/N of the work (1 <= I <= N <= 10000, e.g. 2/4)");
+}
+
 }  // namespace bb::cli

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "run/shard.hpp"
+
 namespace bb::cli {
 
 /// The stated range of a numeric option, for checks and for --help.
@@ -31,5 +33,9 @@ std::vector<std::string> split_list(const std::string& option, const std::string
 /// "0.0166", "1/60" or "1e-3" as a finite, positive step in seconds; throws CaseError
 /// naming --dt otherwise.
 double parse_step(const std::string& text);
+
+/// "I/N", two whole numbers with 1 <= I <= N <= 10000, as a shard; throws CaseError naming
+/// --shard otherwise.
+Shard parse_shard(const std::string& text);
 
 }  // namespace bb::cli

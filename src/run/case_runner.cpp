@@ -189,6 +189,10 @@ bool backend_wanted(const RunOptions& options, const std::string& name) {
                                                name) != options.backends.end();
 }
 
+bool backend_runs(const RunOptions& options, const Scene& scene, const std::string& name) {
+  return backend_wanted(options, name) && in_shard(options.shard, scene, name);
+}
+
 double time_limit(const Scene& scene, double dt, double timeout) {
   if (timeout > 0.0) return timeout;
   const double steps = std::ceil(scene.duration / dt);
@@ -203,10 +207,13 @@ void check_run_options(const Scene& scene, const RunOptions& options) {
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options) {
   int backends = 0;
   for (const Backend* b : backends_for(scene, registry).all)
-    backends += backend_wanted(options, b->name());
+    backends += backend_runs(options, scene, b->name());
   const int dts = options.dts.empty() ? static_cast<int>(scene.dt.size())
                                       : static_cast<int>(options.dts.size());
-  const int sweep = scene.sweep && options.sweep ? static_cast<int>(scene.sweep->values.size()) : 0;
+  int sweep = 0;
+  if (scene.sweep && options.sweep)
+    for (double value : scene.sweep->values)
+      sweep += in_shard(options.shard, scene, sweep_point_unit(value));
   return backends * dts + 2 + (options.cost ? backends * dts + 1 : 0) + sweep;
 }
 
@@ -353,7 +360,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   const BackendSet set = backends_for(scene, registry);
   std::vector<AccuracyJob> jobs;
   for (const Backend* b : set.all) {
-    if (!backend_wanted(options, b->name())) continue;
+    if (!backend_runs(options, scene, b->name())) continue;
     if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
     for (double dt : dts) jobs.push_back({b, dt});
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "run/registry.hpp"
 #include "run/results.hpp"
 #include "run/run_cache.hpp"
+#include "run/shard.hpp"
 
 namespace bb {
 
@@ -27,6 +29,8 @@ struct RunOptions {
   /// Results kept between invocations: reused where the key matches, and kept when new;
   /// null keeps nothing.
   RunCache* cache = nullptr;
+  /// This invocation's share of the work (shard.hpp); none: all of it.
+  std::optional<Shard> shard;
   /// Called after each piece of work with what was done, e.g. "bullet 1/60"; may be called
   /// from several threads at once, never concurrently.
   std::function<void(const std::string&)> on_progress;
@@ -34,6 +38,8 @@ struct RunOptions {
 
 /// Whether `options` select the backend called `name` (no --backends: every one).
 bool backend_wanted(const RunOptions& options, const std::string& name);
+/// Whether `options` run the backend called `name` on `scene`: selected, and in the shard.
+bool backend_runs(const RunOptions& options, const Scene& scene, const std::string& name);
 
 /// Seconds an accuracy run of `scene` at `dt` may take: `timeout` when given, else 10 s
 /// plus 20 microseconds per step per body and spring.

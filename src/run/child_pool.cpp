@@ -258,7 +258,14 @@ void ChildPool::run_isolated() {
       const ChildOutcome outcome = finish(a, closed);
       Done done = std::move(a.job.done);
       active.erase(active.begin() + static_cast<long>(i));
-      done(outcome);
+      // A callback that throws (the work cannot go on) stops the other children first.
+      try {
+        done(outcome);
+      } catch (...) {
+        stop_all();
+        queue_.clear();
+        throw;
+      }
     }
   }
 }

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scene/case_error.hpp"
+
 namespace bb {
 
 namespace {
@@ -21,8 +23,13 @@ std::string step_text(std::optional<double> dt) {
 
 }  // namespace
 
+std::string program_digest() {
+  static const std::string digest = file_digest("/proc/self/exe");
+  return digest;
+}
+
 RunCache::RunCache(const std::string& folder, bool fresh)
-    : store_(folder, kCacheLimitBytes), fresh_(fresh), program_(file_digest("/proc/self/exe")) {}
+    : store_(folder, kCacheLimitBytes), fresh_(fresh), program_(program_digest()) {}
 
 std::string RunCache::build_identity(const Backend& backend) const {
   const std::string name = backend.name();
@@ -56,6 +63,8 @@ std::string RunCache::key(const Scene& scene, const std::string& role,
 
 std::optional<std::string> RunCache::find(const std::string& key) {
   std::optional<std::string> bytes = fresh_ || key.empty() ? std::nullopt : store_.load(key);
+  if (!bytes && !key.empty() && !require_why_.empty())
+    throw CaseError(require_where_, 0, require_why_);
   ++(bytes ? reused_ : ran_);
   return bytes;
 }

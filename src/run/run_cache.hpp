@@ -20,6 +20,9 @@ namespace bb {
 /// The most bytes a cache folder keeps before the entries used longest ago go.
 inline constexpr std::uintmax_t kCacheLimitBytes = 1ULL << 30;
 
+/// A digest of this program's bytes: which build made a result.
+std::string program_digest();
+
 class RunCache {
  public:
   /// Kept results in `folder`; with `fresh`, none is reused (new ones are still kept).
@@ -42,6 +45,14 @@ class RunCache {
   /// Whether a run with this outcome is the same every time it runs (and so may be kept).
   static bool repeatable(const RunRecord& run);
 
+  /// From now on a key that is not kept stops the work: find() throws CaseError naming
+  /// `where` and `why` (a merge of shards, which must hold every keepable result).
+  void require_kept(std::string where, std::string why) {
+    require_where_ = std::move(where), require_why_ = std::move(why);
+  }
+  /// A digest of this program's bytes: which build made the kept results.
+  const std::string& program() const { return program_; }
+
   int reused() const { return reused_; }
   int ran() const { return ran_; }
   /// Removes the entries used longest ago beyond kCacheLimitBytes.
@@ -56,6 +67,7 @@ class RunCache {
   std::string program_;                                 ///< digest of this program's bytes
   mutable std::map<std::string, std::string> plugins_;  ///< per backend name
   int reused_ = 0, ran_ = 0;
+  std::string require_where_, require_why_;  ///< set: a key not kept stops the work
 };
 
 }  // namespace bb

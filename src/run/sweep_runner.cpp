@@ -32,6 +32,10 @@ std::vector<RunRecord> lost_point(const Scene& point, const Registry& registry,
 
 }  // namespace
 
+std::string sweep_point_unit(double value) {
+  return "sweep point " + exact_number(value);
+}
+
 Scene sweep_point_scene(const Scene& scene, double value) {
   Scene point = scene;
   set_sweep_parameter(point, scene.sweep->parameter, value);
@@ -54,6 +58,8 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
   each.cost = false;
   each.sweep = false;
   each.on_progress = nullptr;
+  // A point is one unit of a shard: all of it runs where it runs.
+  each.shard.reset();
   // A point is kept whole (in this process), not run by run in its child.
   each.cache = nullptr;
   // A point runs the reference, its self-check and every backend, each with its own limit.
@@ -64,6 +70,7 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
   for (std::size_t i = 0; i < sweep.values.size(); ++i) {
     const double value = sweep.values[i];
     out.points[i].value = value;
+    if (!in_shard(options.shard, scene, sweep_point_unit(value))) continue;
     const std::string label = sweep.parameter + " = " + short_number(value);
     // The point's rows depend on the backends asked for, too.
     std::string what = sweep.parameter + " = " + exact_number(value) + "; backends:";

@@ -15,7 +15,11 @@ namespace bb {
 /// sweep, gates or claims of its own.
 Scene sweep_point_scene(const Scene& scene, double value);
 
-/// Runs every value of `scene.sweep`; `progress` is called once per point.
+/// The unit of a shard (shard.hpp) that a sweep's point at `value` is.
+std::string sweep_point_unit(double value);
+
+/// Runs every value of `scene.sweep` (those of the options' shard); `progress` is called
+/// once per point run.
 SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOptions& options,
                        const std::function<void(const std::string&)>& progress);
 

@@ -1,0 +1,213 @@
+// `report --shard I/N` runs one share of a report's work and keeps its results in a folder;
+// `merge` puts the shards' folders together and writes the report from them, refusing
+// shards of other case files, of another build, or a set with one missing.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "files/atomic_file.hpp"
+#include "files/owned_temporary.hpp"
+#include "files/result_cache.hpp"
+#include "run/stability.hpp"
+#include "scene/case_error.hpp"
+#include "scene/text.hpp"
+
+namespace bb::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The file a shard's folder holds beside its kept results.
+constexpr const char* kShardManifest = "beachball-shard.txt";
+
+/// What a shard was made from: its place, the build, how costs were timed, the cases.
+struct ShardManifest {
+  Shard shard;
+  std::string build;
+  std::string cost;  ///< "off", or the cost pass's minimum timed seconds per run
+  std::map<std::string, std::string> cases;  ///< name -> digest of its text
+};
+
+std::string cost_text(const RunOptions& options) {
+  return options.cost ? exact_number(options.cost_options.min_seconds) : "off";
+}
+
+std::string manifest_text(const ShardManifest& m) {
+  std::string out = fmt::format("beachball shard {}/{}\nbuild {}\ncost {}\n", m.shard.index,
+                                m.shard.count, m.build, m.cost);
+  for (const auto& [name, text] : m.cases) out += "case " + name + " " + text + "\n";
+  return out;
+}
+
+ShardManifest read_manifest(const std::string& dir) {
+  const std::string path = dir + "/" + kShardManifest;
+  std::ifstream in(path);
+  if (!in)
+    throw CaseError(dir, 0, "is not a shard's folder: it has no " + std::string(kShardManifest));
+  ShardManifest m;
+  std::string line;
+  const auto bad = [&] { return CaseError(path, 0, "is not a shard manifest beachball wrote"); };
+  if (!std::getline(in, line) ||
+      std::sscanf(line.c_str(), "beachball shard %d/%d", &m.shard.index, &m.shard.count) != 2)
+    throw bad();
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string what, a, b;
+    words >> what >> a >> b;
+    if (what == "build")
+      m.build = a;
+    else if (what == "cost")
+      m.cost = a;
+    else if (what == "case")
+      m.cases[a] = b;
+    else
+      throw bad();
+  }
+  return m;
+}
+
+std::map<std::string, std::string> case_digests(const std::vector<Scene>& scenes) {
+  std::map<std::string, std::string> out;
+  for (const Scene& s : scenes) out[s.name] = digest(s.source);
+  return out;
+}
+
+/// Refuses, before any work, a shard folder that holds anything but kept results and the
+/// manifest: a shard never writes among files it did not make.
+void check_shard_folder(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) throw CaseError(dir, 0, "is not a folder");
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == kShardManifest ||
+        (entry.is_regular_file() && name.size() > 32 && name.compare(32, 6, ".entry") == 0))
+      continue;
+    throw CaseError(dir, 0,
+                    "holds " + name +
+                        ", which beachball did not write there: a shard's folder holds only "
+                        "its kept results (give an empty or new folder)");
+  }
+}
+
+}  // namespace
+
+int shard_command(const std::vector<std::string>& paths, const std::string& out,
+                  const RunOptions& options) {
+  const std::vector<Scene> scenes = load_cases(paths);
+  const Registry registry = Registry::load();
+  check_before_work(scenes, options);
+  check_shard_folder(out);
+  fs::create_directories(out);
+  const Shard shard = *options.shard;
+  int units = 0;
+  for (const Scene& scene : scenes) {
+    units += progress_units(scene, registry, options);
+    for (const Backend* b : backends_for(scene, registry).all)
+      units += backend_runs(options, scene, b->name());
+  }
+  Progress progress(units);
+  RunOptions with_progress = options;
+  with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
+  for (const Scene& scene : scenes) {
+    const CaseResults results = run_case(scene, registry, with_progress);
+    // The stability search of the shard's backends (none: no search).
+    std::vector<std::string> mine;
+    for (const Backend* b : backends_for(scene, registry).all)
+      if (backend_runs(options, scene, b->name())) mine.push_back(b->name());
+    if (!mine.empty())
+      find_stability_all(
+          scene, registry, mine, options.jobs,
+          [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
+          options.isolation, options.timeout, known_trials(results.runs), options.cache);
+  }
+  const ShardManifest manifest{shard, options.cache->program(), cost_text(options),
+                               case_digests(scenes)};
+  write_output_file(out + "/" + kShardManifest, manifest_text(manifest));
+  fmt::print("written: shard {}/{} of {} cases, its kept results in {}\n", shard.index, shard.count,
+             scenes.size(), out);
+  return kExitOk;
+}
+
+int merge_command(const std::vector<std::string>& shards, const std::vector<std::string>& paths,
+                  const std::string& out, const RunOptions& options) {
+  const std::vector<Scene> scenes = load_cases(paths);
+  const std::map<std::string, std::string> cases = case_digests(scenes);
+  // Every shard of one set, made by this build from these case files: checked before any work.
+  std::vector<ShardManifest> manifests;
+  std::set<int> seen;
+  for (const std::string& dir : shards) {
+    ShardManifest m = read_manifest(dir);
+    const ShardManifest& first = manifests.empty() ? m : manifests.front();
+    if (m.shard.count != first.shard.count)
+      throw CaseError(
+          dir, 0,
+          fmt::format("is shard {}/{}, of another split than shard {}/{}", m.shard.index,
+                      m.shard.count, first.shard.index, first.shard.count));
+    if (!seen.insert(m.shard.index).second)
+      throw CaseError(
+          dir, 0,
+          fmt::format("is shard {}/{}, as another folder given is", m.shard.index, m.shard.count));
+    if (m.build != program_digest())
+      throw CaseError(dir, 0,
+                      "was made by another build of beachball: merge with the build that ran "
+                      "the shards");
+    if (m.cost != first.cost)
+      throw CaseError(dir, 0,
+                      "timed its costs otherwise than the other shards (--no-cost, "
+                      "--cost-time)");
+    for (const auto& [name, text] : cases) {
+      const auto found = m.cases.find(name);
+      if (found == m.cases.end())
+        throw CaseError(dir, 0, "has no case " + name + ": give merge the shards' case files");
+      if (found->second != text)
+        throw CaseError(
+            dir, 0,
+            "was made from another text of case " + name + ": give merge the shards' case files");
+    }
+    if (m.cases.size() != cases.size())
+      throw CaseError(dir, 0, "was made from more cases than merge was given");
+    manifests.push_back(std::move(m));
+  }
+  if (manifests.empty()) throw CaseError("merge", 0, "give the shards' folders");
+  const int count = manifests.front().shard.count;
+  for (int i = 1; i <= count; ++i)
+    if (!seen.count(i))
+      throw CaseError(shards.front(), 0,
+                      fmt::format("shard {}/{} is missing: merge needs every shard", i, count));
+  // The shards' kept results, together in a temporary folder of this invocation's.
+  const OwnedTemporary merged(fs::temp_directory_path().string(), "beachball-merge-");
+  for (const std::string& dir : shards)
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.path().filename() == kShardManifest) continue;
+      const fs::path to = fs::path(merged.path()) / entry.path().filename();
+      std::error_code ec;
+      if (fs::exists(to, ec)) continue;
+      fs::create_hard_link(entry.path(), to, ec);
+      if (ec) fs::copy_file(entry.path(), to);
+    }
+  RunCache kept(merged.path(), false);
+  kept.require_kept(shards.front(),
+                    "the shards hold no result for a run this report needs, "
+                    "though they were made from these case files by this build");
+  RunOptions o = options;
+  o.cache = &kept;
+  o.cost = manifests.front().cost != "off";
+  if (o.cost) o.cost_options.min_seconds = std::stod(manifests.front().cost);
+  const int code = report_command(paths, out, o);
+  fmt::print(
+      "merged {} shards: {} results kept by them, {} run here (never kept: DESIGN's "
+      "fallback)\n",
+      count, kept.reused(), kept.ran());
+  return code;
+}
+
+}  // namespace bb::cli
