@@ -119,6 +119,8 @@ Commands declare_commands(CLI::App& app, Values& v) {
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
   add_cache_options(check);
+  check->add_option("--shard", v.shard,
+                    "I/N: check only the gates of share I of N of the backends (a CI matrix)");
   return {list, run, report, stability, check, merge};
 }
 
@@ -183,8 +185,8 @@ int main(int argc, char** argv) {
     bb::RunOptions options = run_options(app, values);
     // Kept results: reused where nothing that decides them changed, said at the end.
     std::optional<bb::RunCache> cache;
-    // A shard keeps its results in its own folder; a merge reads the shards' folders.
-    if (options.shard)
+    // A report's shard keeps its results in its own folder; a merge reads the shards'.
+    if (options.shard && *commands.report)
       options.cache = &cache.emplace(values.out, values.fresh);
     else if (!values.cache.empty() && values.cache != "off" && !*commands.list && !*commands.merge)
       options.cache = &cache.emplace(values.cache, values.fresh);
@@ -193,7 +195,7 @@ int main(int argc, char** argv) {
     if (cache && cache->reused() + cache->ran() > 0) {
       fmt::print("kept results: {} reused, {} run, in {}{}\n", cache->reused(), cache->ran(),
                  cache->folder(), cache->reused() > 0 ? " (--fresh runs them all again)" : "");
-      if (!options.shard) cache->prune();
+      if (!(options.shard && *commands.report)) cache->prune();
     }
     return code;
   } catch (const bb::Interrupted& e) {

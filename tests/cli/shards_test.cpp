@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
+#include <sstream>
 
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -98,6 +100,31 @@ TEST(Shards, AShardNeverWritesAmongAUsersFiles) {
     EXPECT_EQ(b.exit_code, 2) << bad << b.out;
     EXPECT_NE(b.out.find("--shard"), std::string::npos) << b.out;
   }
+}
+
+// A CI matrix checks the gates in shares: `check --shard I/N` over every I checks each gate
+// of the suite exactly once, with the verdict the whole check gives.
+TEST(Shards, CheckSharesTheGatesOnceEach) {
+  const std::string cases =
+      test::source_path("cases/arrow.toml") + " " + test::source_path("cases/equal_masses.toml");
+  const auto gate_lines = [](const std::string& out) {
+    std::multiset<std::string> lines;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("ok ", 0) == 0 || line.rfind("FAIL ", 0) == 0) lines.insert(line);
+    return lines;
+  };
+  const test::Outcome whole = test::beachball("check " + cases);
+  ASSERT_EQ(whole.exit_code, 0) << whole.out;
+  std::multiset<std::string> shared;
+  for (int i = 1; i <= 3; ++i) {
+    const test::Outcome part =
+        test::beachball("check " + cases + " --shard " + std::to_string(i) + "/3");
+    ASSERT_EQ(part.exit_code, 0) << part.out;
+    for (const std::string& line : gate_lines(part.out)) shared.insert(line);
+  }
+  EXPECT_GT(gate_lines(whole.out).size(), 3u);
+  EXPECT_EQ(shared, gate_lines(whole.out));
 }
 
 }  // namespace
