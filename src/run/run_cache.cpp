@@ -1,8 +1,10 @@
 #include "run/run_cache.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "scene/case_error.hpp"
 
@@ -53,12 +55,20 @@ std::string RunCache::key(const Scene& scene, const std::string& role, const Bac
 std::string RunCache::key(const Scene& scene, const std::string& role,
                           const std::string& what) const {
   if (scene.source.empty() || program_.empty()) return "";
-  // Every plugin of the build can take part.
-  std::string build = program_;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(plugin_folder(), ec))
-    build += " " + entry.path().filename().string() + ":" + file_digest(entry.path().string());
-  return digest(role + "\n" + what + "\n" + build + "\n" + scene.variant + "\n" + scene.source);
+  // Every plugin of the build can take part (read once).
+  if (every_plugin_.empty()) {
+    // In name order: a folder lists its files in no set order.
+    std::vector<std::filesystem::path> plugins;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(plugin_folder(), ec))
+      plugins.push_back(entry.path());
+    std::sort(plugins.begin(), plugins.end());
+    every_plugin_ = program_;
+    for (const auto& p : plugins)
+      every_plugin_ += " " + p.filename().string() + ":" + file_digest(p.string());
+  }
+  return digest(role + "\n" + what + "\n" + every_plugin_ + "\n" + scene.variant + "\n" +
+                scene.source);
 }
 
 std::optional<std::string> RunCache::find(const std::string& key) {

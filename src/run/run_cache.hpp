@@ -66,6 +66,7 @@ class RunCache {
   bool fresh_;
   std::string program_;                                 ///< digest of this program's bytes
   mutable std::map<std::string, std::string> plugins_;  ///< per backend name
+  mutable std::string every_plugin_;                    ///< the program's and every plugin's digest
   int reused_ = 0, ran_ = 0;
   std::string require_where_, require_why_;  ///< set: a key not kept stops the work
 };
