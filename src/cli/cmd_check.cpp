@@ -27,12 +27,17 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
     }
   std::vector<CaseResults> all;
   bool failed = false;
+  // A shard checks the gates of its own backends (those whose runs are its work). The
+  // results point at their scenes: these live until the JUnit file is written.
+  std::vector<Scene> checked;
   for (const Scene& given : scenes) {
-    // A shard checks the gates of its own backends (those whose runs are its work).
     Scene scene = given;
     std::erase_if(scene.gates,
-                  [&](const Gate& g) { return !in_shard(options.shard, scene, g.backend); });
+                  [&](const Gate& g) { return !in_shard(options.shard, given, g.backend); });
     if (scene.gates.empty() && !given.gates.empty()) continue;
+    checked.push_back(std::move(scene));
+  }
+  for (const Scene& scene : checked) {
     all.push_back(run_gates(scene, registry, options));
     for (const GateResult& g : all.back().gates) {
       failed = failed || !g.passed;
