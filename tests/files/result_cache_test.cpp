@@ -53,14 +53,14 @@ TEST(ResultCache, AnEntryReadsBackAndADamagedOneIsAMissThatTheNextStoreReplaces)
 
 TEST(ResultCache, TwoProcessesAtOnceOnlyEverReadWholeEntries) {
   const std::string folder = test::fresh_dir("result_cache_shared");
-  const std::string big(1 << 20, 'x');
+  const std::string big(1 << 18, 'x');
   std::vector<pid_t> children;
   for (int p = 0; p < 2; ++p) {
     const pid_t pid = fork();
     if (pid == 0) {
       const ResultCache cache(folder, 1ULL << 30);
       int bad = 0;
-      for (int i = 0; i < 200; ++i) {
+      for (int i = 0; i < 100; ++i) {
         const std::string key = digest(std::to_string(i % 5));
         const std::string bytes = std::to_string(i % 5) + big;
         cache.store(key, bytes);
