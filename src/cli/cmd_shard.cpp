@@ -203,10 +203,8 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
   o.cost = manifests.front().cost != "off";
   if (o.cost) o.cost_options.min_seconds = std::stod(manifests.front().cost);
   const int code = report_command(paths, out, o);
-  fmt::print(
-      "merged {} shards: {} results kept by them, {} run here (never kept: DESIGN's "
-      "fallback)\n",
-      count, kept.reused(), kept.ran());
+  fmt::print("merged {} shards: {} results kept by them, {} run here\n", count, kept.reused(),
+             kept.ran());
   return code;
 }
 

@@ -104,17 +104,14 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
   // What a child does with its run before sending it back (nothing: it comes back whole).
   using Finish = std::function<void(RunRecord&)>;
   // A backend's job (not the reference) also judges the stability trial at its dt, if the
-  // stability search begins there. A run with a `role` is kept between invocations (every
-  // run but those of DESIGN.md's fallback, whose children read the finest run from a
-  // scratch file this invocation writes).
+  // stability search begins there. A run with a key is kept between invocations; with
+  // `look_up` it is taken from the kept ones when there.
   const auto submit = [&](const Backend& b, double dt, RunRecord& slot,
                           std::optional<double> shown_dt, Finish finish, std::function<void()> then,
-                          const std::string& role) {
+                          const std::string& key, bool look_up) {
     const std::string what = label(b.name(), shown_dt);
     const bool judge = shown_dt.has_value();
-    const std::string key =
-        options.cache && !role.empty() ? options.cache->key(scene, role, b, shown_dt) : "";
-    if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
+    if (const auto kept = look_up && options.cache ? options.cache->find(key) : std::nullopt) {
       slot = wire::decode_run(*kept);
       progress(what);
       if (then) then();
@@ -136,16 +133,20 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
           if (then) then();
         });
   };
+  const auto key_of = [&](const Backend& b, std::optional<double> dt, const std::string& role) {
+    return options.cache ? options.cache->key(scene, role, b, dt) : std::string();
+  };
   const auto job = [&](std::size_t i, Finish finish, std::function<void()> then,
-                       const std::string& role) {
+                       const std::string& key, bool look_up) {
     submit(*jobs[i].backend, jobs[i].dt, out.runs[i], jobs[i].dt, std::move(finish),
-           std::move(then), role);
+           std::move(then), key, look_up);
   };
   // A backend's jobs are adjacent, largest dt first: its last is its finest.
   const auto finest_job = [&](std::size_t i) {
     return i + 1 == jobs.size() || jobs[i + 1].backend != jobs[i].backend;
   };
 
+  const std::string reference_key = key_of(reference, std::nullopt, "reference");
   submit(
       reference, scene.sample, out.reference, std::nullopt, nullptr,
       [&] {
@@ -154,12 +155,27 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
           for (std::size_t i = 0; i < jobs.size(); ++i)
             job(
                 i, [&](RunRecord& run) { summarise_in_child(scene, run, out.reference); }, nullptr,
-                "accuracy");
+                key_of(*jobs[i].backend, jobs[i].dt, "accuracy"), true);
           return;
         }
         // DESIGN.md's fallback: each backend's finest run first; it writes itself whole once.
         for (std::size_t i = 0; i < jobs.size(); ++i) {
           if (!finest_job(i)) continue;
+          // The backend's runs, finest first, are taken from the kept ones only all together:
+          // a coarser one that is not kept needs the finest run whole, so it runs again.
+          std::vector<std::size_t> family = {i};
+          for (std::size_t j = i; j-- > 0 && jobs[j].backend == jobs[i].backend;)
+            family.push_back(j);
+          std::vector<std::string> keys;
+          for (std::size_t j : family)
+            keys.push_back(key_of(*jobs[j].backend, jobs[j].dt, "fallback"));
+          if (const auto kept = options.cache ? options.cache->find_all(keys) : std::nullopt) {
+            for (std::size_t k = 0; k < family.size(); ++k) {
+              out.runs[family[k]] = wire::decode_run((*kept)[k]);
+              progress(label(jobs[family[k]].backend->name(), jobs[family[k]].dt));
+            }
+            continue;
+          }
           const std::string file = scratch.file("finest-" + std::to_string(i));
           // The backend's other runs read the finest from the file in their children. Where it
           // cannot be written (no room in $TMPDIR), it comes back whole instead, and so do they,
@@ -170,22 +186,23 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
           };
           job(
               i, finest,
-              [&, i, file] {
+              [&, i, file, family, keys] {
                 const bool ok = out.runs[i].status == RunStatus::Ok && out.runs[i].summarised;
                 // Without it they come back whole, for the caller to compare with whatever finer
-                // run did finish (case_runner.cpp says which dt that was).
+                // run did finish (case_runner.cpp says which dt that was): not kept.
                 const Finish against_finest = [&scene, file](RunRecord& run) {
                   const RunRecord finest = read_run(file);
                   summarise_in_child(scene, run, finest);
                 };
-                for (std::size_t j = i; j-- > 0 && jobs[j].backend == jobs[i].backend;)
-                  job(j, ok ? against_finest : nullptr, nullptr, "");
+                for (std::size_t k = 1; k < family.size(); ++k)
+                  job(family[k], ok ? against_finest : nullptr, nullptr, ok ? keys[k] : "", false);
               },
-              "");
+              keys.front(), false);
         }
       },
-      "reference");
-  submit(tighter, scene.sample, out.tight, std::nullopt, nullptr, nullptr, "self-check");
+      reference_key, true);
+  submit(tighter, scene.sample, out.tight, std::nullopt, nullptr, nullptr,
+         key_of(tighter, std::nullopt, "self-check"), true);
   pool.run();
   out.reference.dt.reset();
   out.tight.dt.reset();

@@ -79,6 +79,23 @@ std::optional<std::string> RunCache::find(const std::string& key) {
   return bytes;
 }
 
+std::optional<std::vector<std::string>> RunCache::find_all(const std::vector<std::string>& keys) {
+  std::vector<std::string> all;
+  for (const std::string& key : keys) {
+    std::optional<std::string> bytes = fresh_ || key.empty() ? std::nullopt : store_.load(key);
+    if (!bytes) break;
+    all.push_back(std::move(*bytes));
+  }
+  if (all.size() == keys.size()) {
+    reused_ += static_cast<int>(keys.size());
+    return all;
+  }
+  for (const std::string& key : keys)
+    if (!key.empty() && !require_why_.empty()) throw CaseError(require_where_, 0, require_why_);
+  ran_ += static_cast<int>(keys.size());
+  return std::nullopt;
+}
+
 void RunCache::keep(const std::string& key, const std::string& bytes) const {
   if (!key.empty()) store_.store(key, bytes);
 }

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "files/result_cache.hpp"
 #include "run/registry.hpp"
@@ -40,6 +41,9 @@ class RunCache {
   /// The bytes kept under `key` (counted as reused), or nullopt (counted as run; an empty
   /// key, for a run that is never kept, too).
   std::optional<std::string> find(const std::string& key);
+  /// The bytes of every key, counted as reused, when every one is kept; else nullopt, each
+  /// counted as run (runs that belong together: one is reused only with the others).
+  std::optional<std::vector<std::string>> find_all(const std::vector<std::string>& keys);
   void keep(const std::string& key, const std::string& bytes) const;
 
   /// Whether a run with this outcome is the same every time it runs (and so may be kept).

@@ -68,5 +68,25 @@ TEST(RunCache, FreshRunsEverythingAndCountsWhatWasReused) {
   EXPECT_EQ(fresh.ran(), 1);
 }
 
+// Runs that belong together (a backend's runs measured against its own finest one, which
+// only a run anew writes whole) are reused all together or not at all.
+TEST(RunCache, RunsThatBelongTogetherAreReusedOnlyTogether) {
+  const std::string folder = test::fresh_dir("run_cache_together");
+  const std::vector<std::string> keys = {digest("finest"), digest("coarse")};
+  RunCache kept(folder, false);
+  kept.keep(keys[0], "the finest");
+  EXPECT_FALSE(kept.find_all(keys));
+  EXPECT_EQ(kept.ran(), 2);
+  EXPECT_EQ(kept.reused(), 0);
+  kept.keep(keys[1], "a coarser one");
+  const auto both = kept.find_all(keys);
+  ASSERT_TRUE(both);
+  EXPECT_EQ(*both, (std::vector<std::string>{"the finest", "a coarser one"}));
+  EXPECT_EQ(kept.reused(), 2);
+  EXPECT_FALSE(RunCache(folder, true).find_all(keys));
+  // A run that is never kept (no key) keeps its companions from being reused.
+  EXPECT_FALSE(kept.find_all({keys[0], ""}));
+}
+
 }  // namespace
 }  // namespace bb
