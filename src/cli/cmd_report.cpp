@@ -185,6 +185,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
   // Pages are written only when every case has run, and a signal waits until all are.
   {
     const DeferSignals writing;
+    const KeptDrawings drawings = keep_drawings(options);
     FileBatch batch(report.target());
     std::vector<std::string> rotation_plots;
     for (const CaseResults& r : all)

@@ -27,6 +27,7 @@ int run_command(const std::vector<std::string>& paths, const std::string& out,
     // waits for that and then stops the program.
     {
       const DeferSignals writing;
+      const KeptDrawings drawings = keep_drawings(options);
       FileBatch batch(folder.path());
       write_case_outputs(results, batch);
       for (const std::string& old : recorded_case_files(folder.path(), scene.name)) batch.drop(old);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "files/file_batch.hpp"
+#include "report/gnuplot.hpp"
 #include "report/plots.hpp"
 #include "run/case_runner.hpp"
 
@@ -24,6 +25,10 @@ std::string bundled_cases_folder();
 /// Writes <case>.json, .csv, .md and the plots into `batch` (moved into place only when
 /// the batch is committed); returns the plots drawn.
 PlotFiles write_case_outputs(const CaseResults& results, FileBatch& batch);
+
+/// The drawings kept with the results (report/gnuplot.hpp), while it lives: reused unless
+/// --fresh; none without a cache.
+KeptDrawings keep_drawings(const RunOptions& options);
 
 /// The files `run` writes for `scene`: <case>.json, .csv, .md and its plots.
 std::vector<std::string> case_output_names(const Scene& scene);

@@ -1,5 +1,6 @@
 #include "cli/commands.hpp"
 #include "report/csv_writer.hpp"
+#include "report/gnuplot.hpp"
 #include "report/json_writer.hpp"
 #include "report/markdown_writer.hpp"
 
@@ -12,6 +13,11 @@ PlotFiles write_case_outputs(const CaseResults& results, FileBatch& batch) {
   const PlotFiles plots = write_plots(results, batch);
   batch.write(name + ".md", results_markdown(results, plots));
   return plots;
+}
+
+KeptDrawings keep_drawings(const RunOptions& options) {
+  if (!options.cache) return KeptDrawings(nullptr, false);
+  return KeptDrawings(&options.cache->store(), !options.cache->fresh());
 }
 
 std::vector<std::string> case_output_names(const Scene& scene) {

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "report/backend_style.hpp"
 
@@ -41,9 +42,40 @@ std::string terminal(int height) {
 
 }  // namespace
 
+namespace {
+
+/// What `gnuplot --version` prints, or nullopt when it cannot run: part of a kept drawing's
+/// key.
+const std::optional<std::string>& gnuplot_version() {
+  static const std::optional<std::string> version = []() -> std::optional<std::string> {
+    FILE* pipe = popen("gnuplot --version 2>/dev/null", "r");
+    if (!pipe) return std::nullopt;
+    std::string out;
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    if (pclose(pipe) != 0) return std::nullopt;
+    return out;
+  }();
+  return version;
+}
+
+/// The cache draw() keeps its drawings in, while a KeptDrawings lives.
+const ResultCache* drawings_cache = nullptr;
+bool reuse_drawings = false;
+
+}  // namespace
+
+KeptDrawings::KeptDrawings(const ResultCache* cache, bool reuse)
+    : previous_cache_(drawings_cache), previous_reuse_(reuse_drawings) {
+  drawings_cache = cache, reuse_drawings = reuse;
+}
+
+KeptDrawings::~KeptDrawings() {
+  drawings_cache = previous_cache_, reuse_drawings = previous_reuse_;
+}
+
 bool gnuplot_available() {
-  static const bool available = std::system("gnuplot --version > /dev/null 2>&1") == 0;
-  return available;
+  return gnuplot_version().has_value();
 }
 
 namespace {
@@ -86,6 +118,15 @@ std::string run_gnuplot(const std::string& script, const std::string& log) {
 
 std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
                  const std::string& name, int height) {
+  // The SVG holds no path: the same script, data, size and gnuplot draw the same bytes.
+  const std::string key = drawings_cache ? digest("drawing\n" + gnuplot_version().value_or("") +
+                                                  terminal(height) + script_body + "\n" + data)
+                                         : "";
+  if (const auto kept =
+          reuse_drawings && drawings_cache ? drawings_cache->load(key) : std::nullopt) {
+    batch.write(name, *kept);
+    return "";
+  }
   // gnuplot's script and data sit in the batch's own temporary folder, gone with it.
   const fs::path temp = batch.work_folder(name + ".plot");
   const std::string output = batch.path_for(name);
@@ -103,6 +144,10 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
                      !ended.empty()
                          ? "gnuplot failed (" + ended + ")" + (said.empty() ? "" : ": " + said)
                          : "gnuplot left an incomplete SVG (is the disk full?)");
+  }
+  if (drawings_cache) {
+    std::ifstream svg(output, std::ios::binary);
+    drawings_cache->store(key, std::string(std::istreambuf_iterator<char>(svg), {}));
   }
   return "";
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "files/file_batch.hpp"
+#include "files/result_cache.hpp"
 #include "run/results.hpp"
 
 namespace bb {
@@ -19,6 +20,21 @@ inline constexpr std::size_t kMaxPlotPoints = 2000;
 std::string quote(const std::string& s);
 /// Whether gnuplot can be run.
 bool gnuplot_available();
+/// While one lives, draw() keeps each SVG in `cache` under a digest of what decides it (the
+/// script, the data, the size and gnuplot's version) and, with `reuse`, takes a kept one
+/// instead of running gnuplot again: an unchanged report redraws nothing.
+class KeptDrawings {
+ public:
+  KeptDrawings(const ResultCache* cache, bool reuse);
+  ~KeptDrawings();
+  KeptDrawings(const KeptDrawings&) = delete;
+  KeptDrawings& operator=(const KeptDrawings&) = delete;
+
+ private:
+  const ResultCache* previous_cache_;
+  bool previous_reuse_;
+};
+
 /// Runs `script_body` (which reads the file `data` names) and writes the SVG as `name`
 /// into `batch`, `height` pixels tall. Returns an error for a plot there is nothing to
 /// draw; throws WriteError when a file could not be written.

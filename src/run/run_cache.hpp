@@ -29,6 +29,10 @@ class RunCache {
   /// Kept results in `folder`; with `fresh`, none is reused (new ones are still kept).
   RunCache(const std::string& folder, bool fresh);
   const std::string& folder() const { return store_.folder(); }
+  /// The folder's entries themselves (other kept things share it: a report's drawings).
+  const ResultCache& store() const { return store_; }
+  /// Whether nothing kept is reused (--fresh).
+  bool fresh() const { return fresh_; }
 
   /// The key of what `role` keeps of `backend` (a name; the reference's is its own) on
   /// `scene` at `dt` (nullopt for the reference's own steps); "" when the scene has no text

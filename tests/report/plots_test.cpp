@@ -3,12 +3,15 @@
 #include "report/plots.hpp"
 
 #include <gtest/gtest.h>
+#include <stdlib.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "files/file_batch.hpp"
+#include "report/gnuplot.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 
@@ -256,6 +259,44 @@ TEST(Plots, AnExplodingRunIsCutAtTheEnergyAxisAndNamed) {
       EXPECT_NE(energy.find("gravitational + spring"), std::string::npos);
     }
   }
+}
+
+// A drawing is kept with the results: the same script and data are not drawn again (gnuplot
+// out of reach, the kept SVG is written all the same), other data or --fresh draws anew.
+TEST(KeptDrawings, TheSameScriptAndDataAreNotDrawnAgain) {
+  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  const std::string dir = test::fresh_dir("kept_drawings");
+  const ResultCache cache(dir + "/cache", 1 << 20);
+  const std::string script = "plot data using 1:2 with lines\n", data = "0 0\n1 1\n";
+  const auto drawn = [&](const std::string& folder, const std::string& rows) {
+    fs::create_directories(folder);
+    FileBatch batch(folder);
+    draw(script, rows, batch, "p.svg");
+    batch.commit();
+    return test::file_bytes(folder + "/p.svg");
+  };
+  std::string first;
+  {
+    const KeptDrawings keep(&cache, true);
+    first = drawn(dir + "/first", data);
+  }
+  ASSERT_NE(first.find("</svg>"), std::string::npos);
+  // Without gnuplot on the PATH only a kept drawing can be written.
+  struct NoPath {
+    const std::string path = std::getenv("PATH");
+    NoPath() { setenv("PATH", "/nonexistent", 1); }
+    ~NoPath() { setenv("PATH", path.c_str(), 1); }
+  } no_gnuplot;
+  {
+    const KeptDrawings keep(&cache, true);
+    EXPECT_EQ(drawn(dir + "/again", data), first);
+    EXPECT_THROW(drawn(dir + "/other", "0 0\n1 2\n"), WriteError);
+  }
+  {
+    const KeptDrawings fresh(&cache, false);
+    EXPECT_THROW(drawn(dir + "/fresh", data), WriteError);
+  }
+  EXPECT_THROW(drawn(dir + "/none", data), WriteError);
 }
 
 }  // namespace
