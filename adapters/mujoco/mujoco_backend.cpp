@@ -9,7 +9,10 @@
 #include <cstring>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <string_view>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "../engine_friction.hpp"
@@ -40,9 +43,10 @@ void mujoco_warning(const char* message) {
   std::fprintf(stderr, "MuJoCo warning: %s\n", message);
 }
 
-/// The model compiled from `xml`, through a virtual file (mjVFS is large: on the heap).
-mjModel* load_model(const std::string& xml) {
-  auto vfs = std::make_unique<mjVFS>();
+/// The model compiled from `xml`, through a virtual file (mjVFS is large: on the heap, and
+/// left for mj_defaultVFS to clear).
+mjModel* compile_model(const std::string& xml) {
+  const std::unique_ptr<mjVFS> vfs(new mjVFS);
   mj_defaultVFS(vfs.get());
   const char* name = "beachball.xml";
   if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0)
@@ -53,6 +57,49 @@ mjModel* load_model(const std::string& xml) {
   mj_deleteVFS(vfs.get());
   if (model == nullptr) throw std::runtime_error(std::string("MuJoCo refused the model: ") + error);
   return model;
+}
+
+/// The last model this process compiled, and the data of its last run once that run is
+/// over: the cost pass builds the same scene for every repeat, and a copy of the model and
+/// the data reset (mj_resetData) are what compiling the XML and mj_makeData give, without
+/// parsing it again and clearing MuJoCo's stack of megabytes each time.
+class KeptModel {
+ public:
+  /// A model of `xml` and data for it, the caller's to give back or delete.
+  std::pair<mjModel*, mjData*> take(const std::string& xml) {
+    if (model_ == nullptr || xml != xml_) {
+      mjModel* compiled = compile_model(xml);
+      forget();
+      model_ = compiled, xml_ = xml;
+    }
+    mjModel* model = mj_copyModel(nullptr, model_);
+    mjData* data = data_ != nullptr ? data_ : mj_makeData(model);
+    data_ = nullptr;
+    mj_resetData(model, data);
+    return {model, data};
+  }
+  /// Keeps `data`, of a run of `xml` that is over, for the next run of it.
+  void give_back(const std::string& xml, mjData* data) {
+    if (data_ == nullptr && model_ != nullptr && xml == xml_)
+      data_ = data;
+    else
+      mj_deleteData(data);
+  }
+
+ private:
+  void forget() {
+    if (data_ != nullptr) mj_deleteData(data_);
+    if (model_ != nullptr) mj_deleteModel(model_);
+    data_ = nullptr, model_ = nullptr;
+  }
+  std::string xml_;
+  mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
+};
+
+KeptModel& kept_model() {
+  static KeptModel kept;
+  return kept;
 }
 
 constexpr const char* kGyroscopicOn =
@@ -92,9 +139,9 @@ class MujocoSimulation : public Simulation {
         engines_(engines),
         dt_(dt),
         start_(world, dt, {false}),  // springs are MuJoCo tendons
-        model_(load_model(mujoco_model_xml(world, dt, BB_MUJOCO_INTEGRATOR))),
-        data_(mj_makeData(model_)),
+        xml_(mujoco_model_xml(world, dt, BB_MUJOCO_INTEGRATOR)),
         gyroscopic_(engine_setting(engines, mujoco_description(), "gyroscopic_term") != 0.0) {
+    std::tie(model_, data_) = kept_model().take(xml_);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
       const Body& b = world.bodies[i];
       const int id = static_cast<int>(i) + 1;  // 0 is the world body
@@ -106,7 +153,7 @@ class MujocoSimulation : public Simulation {
     mj_forward(model_, data_);
   }
   ~MujocoSimulation() override {
-    mj_deleteData(data_);
+    kept_model().give_back(xml_, data_);
     mj_deleteModel(model_);
   }
   MujocoSimulation(const MujocoSimulation&) = delete;
@@ -329,8 +376,9 @@ class MujocoSimulation : public Simulation {
   const EngineTables& engines_;  ///< the case's [engines.mujoco] table among the others
   double dt_;
   StepStart start_;  ///< impulses due and the force model's loads
-  mjModel* model_;
-  mjData* data_;
+  std::string xml_;
+  mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
   bool gyroscopic_;
   std::vector<int> qpos_, dof_;        ///< per body: its first qpos and dof, -1 when fixed
   std::vector<const Hinge*> hinges_;   ///< per body: its [[hinge]], or nullptr

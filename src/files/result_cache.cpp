@@ -1,5 +1,6 @@
 #include "files/result_cache.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -71,9 +72,13 @@ bool is_key(const std::string& name) {
 
 /// Whether the file at `path` begins with this cache's first line.
 bool ours(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
+  // Only the first bytes: a stream would fill a whole buffer.
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
   std::string head(kMagicSize, '\0');
-  return in.read(head.data(), static_cast<std::streamsize>(kMagicSize)) && head == kMagic;
+  const ssize_t n = pread(fd, head.data(), kMagicSize, 0);
+  close(fd);
+  return n == static_cast<ssize_t>(kMagicSize) && head == kMagic;
 }
 
 }  // namespace
@@ -157,33 +162,42 @@ bool ResultCache::store(const std::string& key, const std::string& bytes) const 
 
 int ResultCache::prune() const {
   struct Entry {
-    fs::path path;
-    fs::file_time_type used;
+    std::string name;
+    struct timespec used;
     std::uintmax_t size;
   };
+  // Names and one stat each (a folder of tens of thousands of entries); the entries' first
+  // bytes are read only when the folder is over its limit.
   std::vector<Entry> entries;
   std::uintmax_t total = 0;
-  std::error_code ec;
-  for (auto it = fs::directory_iterator(folder_, ec); !ec && it != fs::directory_iterator();
-       it.increment(ec)) {
-    const fs::path p = it->path();
-    const std::string name = p.filename().string();
-    if (!it->is_regular_file() || !name.ends_with(kSuffix) ||
-        !is_key(name.substr(0, name.size() - (sizeof(kSuffix) - 1))) || !ours(p))
+  DIR* dir = opendir(folder_.c_str());
+  if (!dir) return 0;
+  while (const dirent* d = readdir(dir)) {
+    const std::string name = d->d_name;
+    struct stat st {};
+    if (!name.ends_with(kSuffix) || !is_key(name.substr(0, name.size() - (sizeof(kSuffix) - 1))) ||
+        fstatat(dirfd(dir), d->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode))
       continue;
-    std::error_code e;
-    const Entry entry{p, fs::last_write_time(p, e), fs::file_size(p, e)};
-    if (e) continue;
-    entries.push_back(entry);
-    total += entry.size;
+    entries.push_back({name, st.st_mtim, static_cast<std::uintmax_t>(st.st_size)});
+    total += entries.back().size;
   }
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& a, const Entry& b) { return a.used < b.used; });
+  closedir(dir);
+  if (total <= limit_) return 0;
+  // Over the limit: only beachball's entries count, and only they may go.
+  std::erase_if(entries, [&](const Entry& e) {
+    if (ours(fs::path(folder_) / e.name)) return false;
+    total -= e.size;
+    return true;
+  });
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.used.tv_sec != b.used.tv_sec ? a.used.tv_sec < b.used.tv_sec
+                                          : a.used.tv_nsec < b.used.tv_nsec;
+  });
   int removed = 0;
   for (const Entry& e : entries) {
     if (total <= limit_) break;
     std::error_code gone;
-    if (fs::remove(e.path, gone)) total -= e.size, ++removed;
+    if (fs::remove(fs::path(folder_) / e.name, gone)) total -= e.size, ++removed;
   }
   return removed;
 }

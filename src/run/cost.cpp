@@ -14,10 +14,14 @@ Timing time_steps(const Backend& backend, const Scene& scene, double dt, long st
   std::vector<double> per_call;
   double total = 0.0;
   long most_calls = 0;
+  const auto started = Clock::now();
   const auto more = [&] {
     const int n = static_cast<int>(per_call.size());
     if (n == 0) return true;
     if (n >= options.max_repeats) return false;
+    if (n >= options.min_repeats &&
+        std::chrono::duration<double>(Clock::now() - started).count() >= options.max_wall_seconds)
+      return false;
     return total < options.min_seconds ||
            (n < options.min_repeats && total < options.enough_seconds);
   };

@@ -14,8 +14,12 @@ struct CostOptions {
   /// A repeat stops timing after this many seconds of calls and the rest of the run is
   /// extrapolated from them: a grid's engine at its finest dt would take seconds, each
   /// step much like the others.
-  double max_seconds_per_repeat = 0.01;
+  double max_seconds_per_repeat = 0.005;
   int max_repeats = 30;  ///< the median of thirty is steady; each repeat builds the scene anew
+  /// Once min_repeats are done, repeats stop when they took this many seconds of wall time,
+  /// building the scene included: a scene slow to build (an engine compiling its model) and
+  /// quick to run is not built thirty times for a few milliseconds of steps.
+  double max_wall_seconds = 0.02;
 };
 
 /// Seconds that `steps` calls of step() take in a fresh run: median, fastest and slowest

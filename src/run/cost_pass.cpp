@@ -46,7 +46,7 @@ std::string cost_role(const std::vector<Measure>& measures, const CostOptions& c
     role += " " + exact_number(m.dt) + "x" + std::to_string(m.calls);
   return role + " " + exact_number(cost.min_seconds) + " " + std::to_string(cost.min_repeats) +
          " " + exact_number(cost.enough_seconds) + " " + exact_number(cost.max_seconds_per_repeat) +
-         " " + std::to_string(cost.max_repeats);
+         " " + std::to_string(cost.max_repeats) + " " + exact_number(cost.max_wall_seconds);
 }
 
 /// The time now, UTC, to the second (ISO 8601).

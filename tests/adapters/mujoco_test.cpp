@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numbers>
+#include <vector>
 
 #include "course/course_backend.hpp"
 #include "metrics/errors.hpp"
@@ -242,6 +244,42 @@ velocity = [4.0, 0.0, 0.0]
   EXPECT_GT(damped.trajectory.states.back()[0].angular_velocity.norm(), 1.0);
   EXPECT_LT(damped.trajectory.states.back()[0].velocity.x(), 3.5);
   EXPECT_EQ(test::text_setting(damped.engine_settings, "friction_at_restitution_1"), "");
+}
+
+/// The centre's height at every step of `backend` on `scene` at `dt`, for `steps` steps.
+std::vector<double> heights(const Backend& backend, const Scene& scene, double dt, int steps) {
+  std::unique_ptr<Simulation> sim = backend.start(scene, dt);
+  State s(1);
+  std::vector<double> out;
+  for (int n = 0; n < steps; ++n) {
+    sim->step();
+    sim->read(s);
+    out.push_back(s[0].position.y());
+  }
+  return out;
+}
+
+// A process keeps the model it compiled last and the data of its last run (the cost pass
+// builds one scene for every repeat): a run again, after another scene, and two at once,
+// step exactly as the first.
+TEST(Mujoco, ARunAgainInTheSameProcessStepsExactlyAsTheFirst) {
+  const Backend* mujoco = test::engine("mujoco");
+  if (mujoco == nullptr) GTEST_SKIP() << "mujoco was not built";
+  const double dt = 1.0 / 240.0;
+  const Scene scene = drop(0.5), other = drop(0.9);
+  const std::vector<double> first = heights(*mujoco, scene, dt, 400);
+  EXPECT_EQ(heights(*mujoco, scene, dt, 400), first);
+  EXPECT_NE(heights(*mujoco, other, dt, 400), first);
+  EXPECT_EQ(heights(*mujoco, scene, dt, 400), first);
+  // Two at once: the second makes its own data.
+  std::unique_ptr<Simulation> a = mujoco->start(scene, dt), b = mujoco->start(scene, dt);
+  State sa(1), sb(1);
+  for (int n = 0; n < 400; ++n) {
+    a->step(), b->step();
+    a->read(sa), b->read(sb);
+    ASSERT_EQ(sa[0].position.y(), first[n]) << n;
+    ASSERT_EQ(sb[0].position.y(), first[n]) << n;
+  }
 }
 
 }  // namespace

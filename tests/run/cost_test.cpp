@@ -21,6 +21,7 @@ Timing timing(const CostOptions& options, long steps = 10) {
 CostOptions repeat_rule(int min_repeats, double enough_seconds) {
   CostOptions options;
   options.min_seconds = 0.0;
+  options.max_wall_seconds = 1e9;
   options.min_repeats = min_repeats;
   options.enough_seconds = enough_seconds;
   return options;
@@ -37,8 +38,21 @@ TEST(CostRepeats, OnceWhenOneRepeatIsAlreadyEnough) {
 TEST(CostRepeats, TheMaximumCapsARunThatNeverReachesTheTotal) {
   CostOptions options;
   options.min_seconds = 1e9;
+  options.max_wall_seconds = 1e9;
   options.max_repeats = 7;
   EXPECT_EQ(timing(options).repeats, 7);
+}
+
+// Wall time, building included, stops the repeats once the minimum is done: a run quick to
+// step and slow to build is not built thirty times.
+TEST(CostRepeats, TheWallTimeBudgetStopsTheRepeatsAfterTheMinimum) {
+  CostOptions options;
+  options.min_seconds = 1e9;
+  options.min_repeats = 4;
+  options.max_wall_seconds = 0.0;
+  EXPECT_EQ(timing(options).repeats, 4);
+  options.max_wall_seconds = 1e9;
+  EXPECT_EQ(timing(options).repeats, options.max_repeats);
 }
 
 // A repeat that reaches max_seconds_per_repeat stops timing at the end of its block of
