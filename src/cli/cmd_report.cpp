@@ -94,7 +94,7 @@ std::string section_tables(const std::vector<CaseResults>& all) {
 /// The index page; with `timed` (the cost pass ran), where the time went: like the costs, a
 /// report without them is the same bytes from one run to the next.
 std::string index_page(const std::vector<CaseResults>& all,
-                       const std::vector<std::string>& rotation_plots, bool timed) {
+                       const std::vector<std::string>& rotation_plots, bool timed, int jobs) {
   const std::string sections = section_tables(all);
   // The cases whose bodies turn: each page's rotation plot, gathered here (where drawn).
   std::string rotation;
@@ -151,7 +151,7 @@ std::string index_page(const std::vector<CaseResults>& all,
          "report_dt, the observed order of convergence p over the sweep (only where the sweep "
          "has an asymptotic range; the case page says why not), the median cost of one "
          "step, and ✓ or ✗ where a gate covers the backend.\n" +
-         sections + rotation + (timed ? time_spent_section(all) : "");
+         sections + rotation + (timed ? time_spent_section(all, jobs) : "");
 }
 
 }  // namespace
@@ -190,7 +190,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
     std::vector<std::string> rotation_plots;
     for (const CaseResults& r : all)
       rotation_plots.push_back(write_case_outputs(r, batch).rotation);
-    batch.write("README.md", index_page(all, rotation_plots, options.cost));
+    batch.write("README.md", index_page(all, rotation_plots, options.cost, options.jobs));
     batch.write("claims.md", claims_page(all));
     report.drop_old_report(batch);
     batch.commit();

@@ -22,8 +22,25 @@ std::vector<std::string> row(const std::string& name, const TimeSpent& t) {
 
 }  // namespace
 
-std::string time_spent_section(const std::vector<CaseResults>& all) {
+namespace {
+
+/// Seconds of step() calls in `run`, from its cost (0 without one).
+double step_seconds(const RunRecord& run) {
+  return run.cost ? run.cost->ns_per_step * 1e-9 * static_cast<double>(run.steps) : 0.0;
+}
+
+}  // namespace
+
+std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
   TimeSpent sum;
+  // The accuracy runs, and what their steps alone take of one core (their costs).
+  long runs = 0;
+  double steps = 0.0;
+  for (const CaseResults& r : all) {
+    runs += 1 + static_cast<long>(r.runs.size());
+    steps += step_seconds(r.reference_run);
+    for (const RunRecord& run : r.runs) steps += step_seconds(run);
+  }
   std::vector<const CaseResults*> cases;
   for (const CaseResults& r : all) {
     sum.accuracy += r.time_spent.accuracy;
@@ -46,6 +63,14 @@ std::string time_spent_section(const std::vector<CaseResults>& all) {
          "parallel, measured), the serial cost pass, the stability search and the sweeps; "
          "writing the pages is not counted. Measured like cost, so they change from one run "
          "to the next.\n\n" +
+         fmt::format(
+             "The accuracy runs: {} (the references and every backend at every dt), {:.1f} s "
+             "on {} {}, so {:.3f} s of a core per run on average. Their steps alone, from their "
+             "costs, take {:.1f} s of one core: however little else the harness did, the "
+             "accuracy runs would take no less than {:.1f} s with --jobs {}.\n\n",
+             runs, sum.accuracy, jobs, jobs == 1 ? "job" : "jobs",
+             runs > 0 ? sum.accuracy * jobs / static_cast<double>(runs) : 0.0, steps, steps / jobs,
+             jobs) +
          render_markdown(t);
 }
 

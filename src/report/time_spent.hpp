@@ -10,7 +10,8 @@
 namespace bb {
 
 /// The index page's section: one row for the whole report, then one per case, the slowest
-/// first. Empty when nothing was timed.
-std::string time_spent_section(const std::vector<CaseResults>& all);
+/// first, beside what the accuracy runs cost per run and what their steps alone take on
+/// `jobs` cores (a floor no overhead removed can go below). Empty when nothing was timed.
+std::string time_spent_section(const std::vector<CaseResults>& all, int jobs);
 
 }  // namespace bb

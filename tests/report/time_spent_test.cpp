@@ -33,7 +33,7 @@ TEST(TimeSpent, SumsThePartsAndPutsTheSlowestCaseFirst) {
   all[0].time_spent = {1.0, 0.5, 0.25, 0.0};
   all[1].scene = &slow;
   all[1].time_spent = {10.0, 2.0, 3.0, 4.0};
-  const std::string page = time_spent_section(all);
+  const std::string page = time_spent_section(all, 2);
   EXPECT_EQ(cells(page, "all cases"),
             (std::vector<std::string>{"all cases", "11.0", "2.5", "3.2", "4.0", "20.8"}))
       << page;
@@ -42,12 +42,34 @@ TEST(TimeSpent, SumsThePartsAndPutsTheSlowestCaseFirst) {
   EXPECT_LT(page.find("| slow "), page.find("| quick "));
 }
 
+// The floor: the accuracy runs' steps alone, from their costs, on the jobs that ran them.
+TEST(TimeSpent, SaysWhatTheStepsAloneTakeAndTheCostOfARun) {
+  Scene scene;
+  scene.name = "timed";
+  std::vector<CaseResults> all(1);
+  all[0].scene = &scene;
+  all[0].time_spent = {6.0, 1.0, 0.0, 0.0};
+  all[0].reference_run.steps = 1000;
+  all[0].reference_run.cost = Cost{1e6, 0.0, 3, 1e6, 1e6, ""};  // 1 ms a step: 1 s
+  all[0].runs.resize(2);
+  all[0].runs[0].steps = 2000;
+  all[0].runs[0].cost = Cost{1.5e6, 0.0, 3, 1e6, 2e6, ""};  // 3 s
+  all[0].runs[1].steps = 10;                                // no cost: not counted
+  const std::string page = time_spent_section(all, 2);
+  EXPECT_NE(page.find("The accuracy runs: 3 (the references and every backend at every dt), "
+                      "6.0 s on 2 jobs, so 4.000 s of a core per run"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("take 4.0 s of one core"), std::string::npos) << page;
+  EXPECT_NE(page.find("no less than 2.0 s with --jobs 2"), std::string::npos) << page;
+}
+
 TEST(TimeSpent, NothingTimedIsNoSection) {
   Scene scene;
   scene.name = "untimed";
   std::vector<CaseResults> all(1);
   all[0].scene = &scene;
-  EXPECT_EQ(time_spent_section(all), "");
+  EXPECT_EQ(time_spent_section(all, 2), "");
 }
 
 }  // namespace

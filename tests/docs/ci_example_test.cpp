@@ -1,0 +1,64 @@
+// The CI matrix example (docs/examples/github-actions-shards.yml) is a copy-paste workflow:
+// every beachball command it runs names a subcommand and options the program takes, each
+// matrix runs --shard I/N with N its own length, and the merge takes every shard, once.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <sstream>
+
+#include "support/program.hpp"
+#include "support/test_support.hpp"
+
+namespace bb {
+namespace {
+
+/// The words of `line` after "build/bin/beachball", split on spaces, the matrix's shard
+/// number written I.
+std::vector<std::string> beachball_words(std::string line) {
+  const std::string program = "build/bin/beachball ", shard = "${{ matrix.shard }}";
+  for (std::size_t at; (at = line.find(shard)) != std::string::npos;)
+    line.replace(at, shard.size(), "I");
+  const std::size_t at = line.find(program);
+  std::vector<std::string> words;
+  if (at == std::string::npos) return words;
+  std::istringstream rest(line.substr(at + program.size()));
+  for (std::string w; rest >> w;) words.push_back(w);
+  return words;
+}
+
+TEST(CiExample, EveryCommandIsOneTheProgramTakesAndTheShardsAreOneSet) {
+  const std::string workflow =
+      test::bytes(test::source_path("docs/examples/github-actions-shards.yml"));
+  ASSERT_FALSE(workflow.empty());
+  std::istringstream lines(workflow);
+  int commands = 0, matrices = 0;
+  std::set<std::string> merged;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("shard: [1, 2, 3, 4]") != std::string::npos) ++matrices;
+    const std::vector<std::string> words = beachball_words(line);
+    if (words.empty()) continue;
+    ++commands;
+    SCOPED_TRACE(line);
+    const test::Outcome help = test::beachball(words[0] + " --help");
+    ASSERT_EQ(help.exit_code, 0) << help.out;
+    for (std::size_t k = 1; k < words.size(); ++k) {
+      if (words[k].starts_with("--")) {
+        EXPECT_NE(help.out.find(words[k] + " "), std::string::npos) << words[k] << "\n" << help.out;
+      }
+      if (words[k] == "--shard") {
+        ASSERT_LT(k + 1, words.size());
+        EXPECT_EQ(words[k + 1], "I/4");
+      }
+    }
+    if (words[0] == "merge") {
+      for (std::size_t k = 1; k < words.size() && !words[k].starts_with("--"); ++k)
+        EXPECT_TRUE(merged.insert(words[k]).second) << words[k];
+    }
+  }
+  EXPECT_EQ(commands, 3);
+  EXPECT_EQ(matrices, 2);
+  EXPECT_EQ(merged, (std::set<std::string>{"shard-1", "shard-2", "shard-3", "shard-4"}));
+}
+
+}  // namespace
+}  // namespace bb
