@@ -17,6 +17,7 @@
 
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
+#include "kept_model.hpp"
 #include "mujoco_engine.hpp"
 #include "mujoco_model.hpp"
 #include "physics/hinge_motion.hpp"
@@ -41,65 +42,6 @@ namespace {
 /// MuJoCo's warnings: said on stderr, and the run goes on.
 void mujoco_warning(const char* message) {
   std::fprintf(stderr, "MuJoCo warning: %s\n", message);
-}
-
-/// The model compiled from `xml`, through a virtual file (mjVFS is large: on the heap, and
-/// left for mj_defaultVFS to clear).
-mjModel* compile_model(const std::string& xml) {
-  const std::unique_ptr<mjVFS> vfs(new mjVFS);
-  mj_defaultVFS(vfs.get());
-  const char* name = "beachball.xml";
-  if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0)
-    throw std::runtime_error("MuJoCo: no room for the model in its virtual file system");
-  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), name)], xml.data(), xml.size());
-  char error[1000] = "";
-  mjModel* model = mj_loadXML(name, vfs.get(), error, sizeof error);
-  mj_deleteVFS(vfs.get());
-  if (model == nullptr) throw std::runtime_error(std::string("MuJoCo refused the model: ") + error);
-  return model;
-}
-
-/// The last model this process compiled, and the data of its last run once that run is
-/// over: the cost pass builds the same scene for every repeat, and a copy of the model and
-/// the data reset (mj_resetData) are what compiling the XML and mj_makeData give, without
-/// parsing it again and clearing MuJoCo's stack of megabytes each time.
-class KeptModel {
- public:
-  /// A model of `xml` and data for it, the caller's to give back or delete.
-  std::pair<mjModel*, mjData*> take(const std::string& xml) {
-    if (model_ == nullptr || xml != xml_) {
-      mjModel* compiled = compile_model(xml);
-      forget();
-      model_ = compiled, xml_ = xml;
-    }
-    mjModel* model = mj_copyModel(nullptr, model_);
-    mjData* data = data_ != nullptr ? data_ : mj_makeData(model);
-    data_ = nullptr;
-    mj_resetData(model, data);
-    return {model, data};
-  }
-  /// Keeps `data`, of a run of `xml` that is over, for the next run of it.
-  void give_back(const std::string& xml, mjData* data) {
-    if (data_ == nullptr && model_ != nullptr && xml == xml_)
-      data_ = data;
-    else
-      mj_deleteData(data);
-  }
-
- private:
-  void forget() {
-    if (data_ != nullptr) mj_deleteData(data_);
-    if (model_ != nullptr) mj_deleteModel(model_);
-    data_ = nullptr, model_ = nullptr;
-  }
-  std::string xml_;
-  mjModel* model_ = nullptr;
-  mjData* data_ = nullptr;
-};
-
-KeptModel& kept_model() {
-  static KeptModel kept;
-  return kept;
 }
 
 constexpr const char* kGyroscopicOn =

@@ -52,18 +52,6 @@ std::string find_program(const std::string& name) {
   return "";
 }
 
-/// Runs `command` through the shell: its exit code and its output (stdout and stderr).
-test::Outcome shell(const std::string& command) {
-  test::Outcome o;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-    o.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
-
 /// `count` distinct TCP ports on localhost free now: each bound to port 0 (the kernel picks),
 /// all held until every one is read, then released for the daemons. Another program could
 /// take one in between; the window is the few milliseconds before the daemons start.
@@ -96,7 +84,7 @@ class Cluster {
   Cluster& operator=(const Cluster&) = delete;
 
   ~Cluster() {
-    if (scancel_ready_) shell("timeout 20 scancel --quiet --user=" + user());
+    if (scancel_ready_) test::shell("timeout 20 scancel --quiet --user=" + user());
     for (auto it = daemons_.rbegin(); it != daemons_.rend(); ++it) stop(it->pid);
     if (!::testing::Test::HasFailure()) {
       std::error_code ignored;
@@ -286,7 +274,7 @@ TEST(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
   // Up when sinfo says the node is idle; a daemon that ends, or 60 s, is a failure.
   std::string state, ended;
   while ((ended = cluster.ended()).empty() && std::chrono::steady_clock::now() < deadline) {
-    state = shell(programs["sinfo"] + " --noheader --Node --format=%T").out;
+    state = test::shell(programs["sinfo"] + " --noheader --Node --format=%T").out;
     if (state == "idle\n") break;
     std::this_thread::sleep_for(250ms);
   }
@@ -300,11 +288,11 @@ TEST(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
   const std::string cases = test::write_case(work, "a.toml", test::minimal_case("a")) + " " +
                             test::write_case(work, "stack.toml", test::kStackedBalls);
   const test::Outcome submitted =
-      shell("cd " + work + " && timeout 300 " + test::source_path("scripts/slurm/submit") +
-            " -n 3 --out merged --program " + BEACHBALL_PROGRAM +
-            " --report-args --no-cost --wait " + cases);
+      test::shell("cd " + work + " && timeout 300 " + test::source_path("scripts/slurm/submit") +
+                  " -n 3 --out merged --program " + BEACHBALL_PROGRAM +
+                  " --report-args --no-cost --wait " + cases);
   const auto job_logs = [&] {
-    std::string out = "\n--- queue:\n" + shell("squeue").out;
+    std::string out = "\n--- queue:\n" + test::shell("squeue").out;
     if (fs::exists(work + "/merged.shards/logs"))
       for (const auto& [name, bytes] : test::snapshot(work + "/merged.shards/logs"))
         out += "\n--- " + name + ":\n" + bytes;

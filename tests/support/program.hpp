@@ -24,19 +24,23 @@ struct Outcome {
   std::string out;  ///< stdout and stderr together
 };
 
-/// Runs `beachball ARGS` through the shell and waits for it; `shell_prefix` runs first in
-/// the same shell (a `ulimit`, say), and the program is exec'ed after it.
-inline Outcome beachball(const std::string& args, const std::string& shell_prefix = "") {
-  const std::string command =
-      shell_prefix + " exec " + std::string(BEACHBALL_PROGRAM) + " " + args + " 2>&1";
+/// Runs `command` through the shell and waits for it: its exit code and its output (stdout
+/// and stderr).
+inline Outcome shell(const std::string& command) {
   Outcome o;
-  FILE* pipe = popen(command.c_str(), "r");
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   std::array<char, 4096> buffer{};
   while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
     o.out.append(buffer.data(), n);
   const int status = pclose(pipe);
   o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return o;
+}
+
+/// Runs `beachball ARGS` through the shell and waits for it; `shell_prefix` runs first in
+/// the same shell (a `ulimit`, say), and the program is exec'ed after it.
+inline Outcome beachball(const std::string& args, const std::string& shell_prefix = "") {
+  return shell(shell_prefix + " exec " + std::string(BEACHBALL_PROGRAM) + " " + args);
 }
 
 /// A path under the test's temporary folder that does not exist yet.
