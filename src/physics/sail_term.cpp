@@ -1,6 +1,7 @@
 // A boat's sail in the wind (seed section 9, "Boat 1"). The apparent wind is the wind less
 // the boat's velocity, v_a = v_w - v_s. The sail is planar and friction-free, so the wind
-// pushes it only along its normal n, by the drag formula on its area:
+// pushes it only along its normal n, by the drag formula on its area (the flat plate's
+// quadratic law, physics/flat_plate.hpp, which the wind panel shares):
 //   F = 1/2 rho_air C_s A (v_a . n) |v_a . n| n.
 // The sail's line makes `angle` with the heading, its boom out to leeward (the side the
 // apparent wind blows towards), and n is the normal the wind blows along, so the sail is
@@ -12,6 +13,7 @@
 #include <numbers>
 
 #include "physics/boat_frame.hpp"
+#include "physics/flat_plate.hpp"
 #include "physics/force_term.hpp"
 
 namespace bb {
@@ -47,8 +49,8 @@ class SailTerm : public ForceTerm {
       if (sails_[j].heel_stiffness == 0.0) {
         // d/dv of K (v_a . n)^2 n with v_a = w - v and n fixed on a side: -2 K (v_a . n) n n^T.
         const Vec3 apparent = wind_ - s.velocity[i];
-        const Vec3 n = normal(j, frame, apparent);
-        d = -2.0 * half_rho_c_a_[j] * apparent.dot(n) * n * n.transpose();
+        d = flat_plate_push_by_velocity(PlateLaw::Quadratic, half_rho_c_a_[j], apparent,
+                                        normal(j, frame, apparent));
       } else {
         // With heel the area depends on the force too: central differences in the velocity.
         const double h = 1e-6 * std::max(1.0, s.velocity[i].norm());
@@ -78,9 +80,8 @@ class SailTerm : public ForceTerm {
   /// The sail's force on a boat heading along `frame` at `velocity`.
   Vec3 push(std::size_t j, const BoatFrame& frame, const Vec3& velocity) const {
     const Vec3 apparent = wind_ - velocity;
-    const Vec3 n = normal(j, frame, apparent);
-    const double along = apparent.dot(n);
-    Vec3 f = half_rho_c_a_[j] * along * along * n;
+    Vec3 f = flat_plate_push(PlateLaw::Quadratic, half_rho_c_a_[j], apparent,
+                             normal(j, frame, apparent));
     if (sails_[j].heel_stiffness > 0.0) {
       const double heel =
           std::min(std::abs(f.dot(frame.across)) / sails_[j].heel_stiffness, std::numbers::pi / 2);

@@ -26,6 +26,23 @@ struct Sail {
   double heel_stiffness = 0.0;  ///< N per radian of heel; 0: the boat stays upright
 };
 
+/// How the wind pushes a flat plate along its normal n (seed section 8, "Wind").
+enum class PlateLaw {
+  /// The text's model: F = k a ((w - v) . n) n, linear in the relative wind, k constant.
+  Course,
+  /// The quadratic plate law of the sail: F = 1/2 rho C a ((w - v) . n) |(w - v) . n| n.
+  Quadratic,
+};
+
+/// A flat panel in the wind: the box's broad face (normal along its smallest half extent)
+/// pushed along its normal by the wind relative to it, at its centre.
+struct Plate {
+  PlateLaw law = PlateLaw::Course;
+  double k = 0.0;            ///< the text's shape constant, N s / m^3 (law = course)
+  double coefficient = 1.0;  ///< C, dimensionless (law = quadratic)
+  double area = 0.0;         ///< square metres: the broad face's unless given
+};
+
 /// A boat's hull in still water: quadratic drag split along the heading and across it (the
 /// keel), each direction with its own drag area C A.
 struct Hull {
@@ -52,12 +69,13 @@ struct Body {
   /// box feels its part along the face's normal, (F.n) n, at its centre (seed section 8,
   /// the falling wall: F_w cos(phi) as the wall tips).
   Vec3 wind_force;
-  Vec3 force;                ///< newtons, world frame: a constant push at the centre
-  Vec3 torque;               ///< newton metres, world frame: a constant turn about the centre
-  bool fixed = false;        ///< infinite mass, never moves
-  std::optional<Sail> sail;  ///< a boat's sail, seen from above (2D, no gravity)
-  std::optional<Hull> hull;  ///< a boat's hull in the [water]
-  int line = 0;              ///< line of the [[body]] header in the case file
+  Vec3 force;                  ///< newtons, world frame: a constant push at the centre
+  Vec3 torque;                 ///< newton metres, world frame: a constant turn about the centre
+  bool fixed = false;          ///< infinite mass, never moves
+  std::optional<Sail> sail;    ///< a boat's sail, seen from above (2D, no gravity)
+  std::optional<Hull> hull;    ///< a boat's hull in the [water]
+  std::optional<Plate> plate;  ///< a panel the wind pushes along its normal
+  int line = 0;                ///< line of the [[body]] header in the case file
 };
 
 /// Still air with an optional uniform wind.
