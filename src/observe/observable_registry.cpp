@@ -17,6 +17,12 @@ ObservableValue measure_drift_angle(const Scene&, const Observe&, const Trajecto
                                     const EventTrace*);
 ObservableValue measure_made_good_upwind(const Scene&, const Observe&, const Trajectory&,
                                          const EventTrace*);
+ObservableValue measure_downwind_distance(const Scene&, const Observe&, const Trajectory&,
+                                          const EventTrace*);
+ObservableValue measure_wobble_period(const Scene&, const Observe&, const Trajectory&,
+                                      const EventTrace*);
+ObservableValue measure_wobble_amplitude(const Scene&, const Observe&, const Trajectory&,
+                                         const EventTrace*);
 ObservableValue measure_surface_fold(const Scene&, const Observe&, const Trajectory&,
                                      const EventTrace*);
 
@@ -53,6 +59,9 @@ const std::vector<ObservableKind>& observable_kind_table() {
       {"forward_speed", measure_forward_speed},
       {"drift_angle", measure_drift_angle},
       {"made_good_upwind", measure_made_good_upwind},
+      {"downwind_distance", measure_downwind_distance},
+      {"wobble_period", measure_wobble_period},
+      {"wobble_amplitude", measure_wobble_amplitude},
       {"surface_fold", measure_surface_fold, true},
   };
   return kinds;

@@ -9,6 +9,7 @@ std::unique_ptr<ForceTerm> make_magnus_term(const World&, const ForceOptions&);
 std::unique_ptr<ForceTerm> make_panel_wind_term(const World&, const ForceOptions&);
 std::unique_ptr<ForceTerm> make_applied_load_term(const World&, const ForceOptions&);
 std::unique_ptr<ForceTerm> make_sail_term(const World&, const ForceOptions&);
+std::unique_ptr<ForceTerm> make_plate_term(const World&, const ForceOptions&);
 std::unique_ptr<ForceTerm> make_hull_term(const World&, const ForceOptions&);
 
 const std::vector<ForceTermEntry>& force_terms() {
@@ -19,6 +20,8 @@ const std::vector<ForceTermEntry>& force_terms() {
       {"wind on a panel (seed section 8, the falling wall)", make_panel_wind_term},
       {"constant applied force and torque", make_applied_load_term},
       {"a boat's sail in the apparent wind (seed section 9)", make_sail_term},
+      {"a panel pushed along its normal by the wind relative to it (seed section 8, Wind)",
+       make_plate_term},
       // Last: with no drift the keel cancels every sideways force of the terms above.
       {"a boat's hull in still water, the keel (seed section 9)", make_hull_term},
   };

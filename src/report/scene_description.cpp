@@ -60,11 +60,26 @@ std::string boat_line(const Body& b) {
       out += fmt::format(", heeling by F_across / {:g} N/rad", s->heel_stiffness);
   }
   if (const std::optional<Hull>& h = b.hull)
-    out += fmt::format("; hull drag areas C A ahead {:g}, astern {:g}, across {} m^2", h->forward,
-                       h->backward,
-                       h->no_drift ? std::string("infinite (no drift)")
-                                   : fmt::format("{:g}", h->sideways));
+    out += fmt::format(
+        "; hull drag areas C A ahead {:g}, astern {:g}, across {} m^2", h->forward, h->backward,
+        h->no_drift ? std::string("infinite (no drift)") : fmt::format("{:g}", h->sideways));
   return out + "\n";
+}
+
+/// A wind panel's line (seed section 8, "Wind"): the law of its push and its numbers.
+std::string plate_line(const Body& b) {
+  const Plate& p = *b.plate;
+  return p.law == PlateLaw::Course
+             ? fmt::format(
+                   "- panel {}: pushed along its normal n by the course text's law F = k a "
+                   "((w - v) . n) n, k {:g} N s/m^3, a {:g} m^2, at its centre (no "
+                   "torque: its spin is kept)\n",
+                   b.name, p.k, p.area)
+             : fmt::format(
+                   "- panel {}: pushed along its normal n by the flat-plate law F = 1/2 "
+                   "rho C a ((w - v) . n) |(w - v) . n| n, C {:g}, a {:g} m^2, at its "
+                   "centre (no torque: its spin is kept)\n",
+                   b.name, p.coefficient, p.area);
 }
 
 }  // namespace
@@ -91,6 +106,8 @@ std::string describe_scene(const Scene& scene) {
         scene.water->density);
   for (const Body& b : scene.bodies)
     if (b.sail || b.hull) out += boat_line(b);
+  for (const Body& b : scene.bodies)
+    if (b.plate) out += plate_line(b);
   out += scene.ground ? ground_line(scene) : "- no ground: nothing to touch\n";
   for (const Contact& c : scene.contacts) {
     const std::string who =

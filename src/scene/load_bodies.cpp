@@ -1,4 +1,5 @@
 // [[body]] tables of a case file.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -156,6 +157,43 @@ void read_sail(TomlReader& r, const Scene& scene, Body& b) {
   b.sail = sail;
 }
 
+/// [body.plate] (seed section 8, "Wind"): a box's broad face pushed along its normal by the
+/// wind relative to it, by the text's linear law (k) or the sail's quadratic one.
+void read_plate(TomlReader& r, const Scene& scene, Body& b) {
+  const toml::table* t = r.table("plate");
+  if (t == nullptr) return;
+  if (b.shape != Shape::Box)
+    r.fail(r.line_of("plate"), "a plate is a box's broad face: '" + b.name + "' is not a box");
+  if (!scene.air)
+    r.fail(r.line_of("plate"), "a plate is pushed by the wind: the case has no [air] section");
+  if (b.fixed) r.fail(r.line_of("plate"), r.where() + " is fixed: the wind moves nothing");
+  if (b.sail) r.fail(r.line_of("plate"), "a boat feels the wind through its sail only");
+  TomlReader s = sub_reader(r, *t, "[body.plate]");
+  Plate plate;
+  const std::string law = s.string("law");
+  if (law == "course") {
+    plate.law = PlateLaw::Course;
+    plate.k = s.number("k");
+    require_range(s, "k", plate.k, 0.0, 0.0, false);
+    if (s.has("coefficient"))
+      s.fail(s.line_of("coefficient"), "the course law takes 'k', not 'coefficient'");
+  } else if (law == "quadratic") {
+    plate.law = PlateLaw::Quadratic;
+    plate.coefficient = s.number_or("coefficient", plate.coefficient);
+    require_range(s, "coefficient", plate.coefficient, 0.0, 0.0, false);
+    if (s.has("k")) s.fail(s.line_of("k"), "the quadratic law takes 'coefficient', not 'k'");
+  } else {
+    s.fail(s.line_of("law"), "law is \"course\" or \"quadratic\", not \"" + law + "\"");
+  }
+  // The broad face: the two largest half extents, 2 a by 2 b.
+  Vec3 h = b.half_extents;
+  std::sort(h.data(), h.data() + 3);
+  plate.area = s.number_or("area", 4.0 * h[1] * h[2]);
+  require_range(s, "area", plate.area, 0.0, 0.0, false);
+  s.finish();
+  b.plate = plate;
+}
+
 /// [body.hull]: drag areas ahead, astern and across, or no drift at all.
 void read_hull(TomlReader& r, const Scene& scene, Body& b) {
   const toml::table* t = r.table("hull");
@@ -218,6 +256,7 @@ void read_bodies(TomlReader& root, Scene& scene) {
     read_applied_load(r, scene, b);
     read_sail(r, scene, b);
     read_hull(r, scene, b);
+    read_plate(r, scene, b);
     refuse_ground_overlap(r, scene, b, r.line_of("position"));
     r.finish();
     scene.bodies.push_back(b);

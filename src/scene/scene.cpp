@@ -52,6 +52,11 @@ FeatureSet World::features() const {
     if (b.wind_force.norm() > 0.0) f.add(Feature::Wind);
     if (b.force.norm() > 0.0 || b.torque.norm() > 0.0) f.add(Feature::AppliedForce);
     if (b.sail || b.hull) f.add(Feature::Sailing);
+    // A plate is an aerodynamic force like drag, and sees the wind.
+    if (b.plate) {
+      f.add(Feature::Drag);
+      if (air->wind.norm() > 0.0) f.add(Feature::Wind);
+    }
   }
   if (drag) f.add(Feature::Drag);
   if (magnus_used) f.add(Feature::Magnus);

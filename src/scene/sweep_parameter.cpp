@@ -55,6 +55,14 @@ std::conditional_t<std::is_const_v<S>, const double*, double*> target(
       if (p[3] == "heel_stiffness") return &b.sail->heel_stiffness;
       return nullptr;
     }
+    if (p[2] == "plate") {
+      if (!b.plate) return nullptr;
+      if (p[3] == "k" && b.plate->law == PlateLaw::Course) return &b.plate->k;
+      if (p[3] == "coefficient" && b.plate->law == PlateLaw::Quadratic)
+        return &b.plate->coefficient;
+      if (p[3] == "area") return &b.plate->area;
+      return nullptr;
+    }
     const int c = component(p[3]);
     if (c < 0) return nullptr;
     if (p[2] == "position") return &b.position[c];
@@ -127,6 +135,7 @@ const char* kKnownPaths =
     "body.<name>.mass|radius|drag_coefficient|magnus, "
     "body.<name>.position|velocity|angular_velocity|half_extents|wind_force|force|torque.x|y|z, "
     "body.<name>.sail.angle|area|coefficient|heel_stiffness, "
+    "body.<name>.plate.k|coefficient|area (k with the course law, coefficient the quadratic), "
     "ground.restitution|friction_static|friction_kinetic|normal (an angle in degrees), "
     "air.density, air.wind.x|y|z, gravity.x|y|z, waves.amplitude|wavenumber|speed";
 
@@ -167,7 +176,7 @@ std::string sweep_path_problem(const Scene& scene, const std::string& path) {
 
 std::string sweep_value_problem(const Scene& scene, const std::string& path, double value) {
   const std::vector<std::string> p = sweep_path_parts(path);
-  const std::string& field = p[0] == "body" && p[2] != "sail" ? p[2] : p.back();
+  const std::string& field = p[0] == "body" && p[2] != "sail" && p[2] != "plate" ? p[2] : p.back();
   const std::string at = "the value " + short_number(value) + " for '" + path + "'";
   if (!std::isfinite(value)) return at + " is not a finite number";
   if ((field == "mass" || field == "radius" || field == "half_extents") && value <= 0.0)
@@ -176,7 +185,7 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
        field == "density") &&
       value < 0.0)
     return at + " must not be negative";
-  if ((field == "area" || field == "coefficient") && value <= 0.0)
+  if ((field == "area" || field == "coefficient" || field == "k") && value <= 0.0)
     return at + " must be greater than 0";
   if (field == "heel_stiffness" && value < 0.0) return at + " must not be negative";
   if (p[0] == "waves" && (field == "amplitude" || field == "speed") && value < 0.0)
