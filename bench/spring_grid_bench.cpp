@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "run/registry.hpp"
 #include "run/case_loading.hpp"
+#include "run/registry.hpp"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "run/registry.hpp"
 #include "run/case_loading.hpp"
+#include "run/registry.hpp"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "contact/contact_pairs.hpp"
-#include "reference/scene_model_state.hpp"
 #include "observe/observable_registry.hpp"
+#include "reference/scene_model_state.hpp"
 
 namespace bb {
 

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "observe/observable_registry.hpp"
 #include "report/gnuplot.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
-#include "observe/observable_registry.hpp"
 
 namespace bb {
 

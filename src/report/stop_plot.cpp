@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
+#include "observe/observable_registry.hpp"
 #include "observe/stop_observables.hpp"
 #include "report/gnuplot.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
-#include "observe/observable_registry.hpp"
 
 namespace bb {
 

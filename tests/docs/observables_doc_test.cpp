@@ -7,8 +7,8 @@
 #include <set>
 
 #include "docs/doc_tables.hpp"
-#include "scene/metric_names.hpp"
 #include "observe/observable_registry.hpp"
+#include "scene/metric_names.hpp"
 
 namespace bb {
 namespace {

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "scene/case_error.hpp"
 #include "run/case_loading.hpp"
+#include "scene/case_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

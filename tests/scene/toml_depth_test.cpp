@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/case_error.hpp"
 #include "run/case_loading.hpp"
+#include "scene/case_error.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 
