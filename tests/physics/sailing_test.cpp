@@ -14,6 +14,7 @@
 #include "run/case_runner.hpp"
 #include "scene/motion.hpp"
 #include "support/engine_support.hpp"
+#include "support/jacobian_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -92,21 +93,8 @@ TEST(Sailing, TheDerivativesOfSailAndHullMatchFiniteDifferences) {
     SCOPED_TRACE(boat.sail + " / " + boat.hull);
     const Scene scene =
         test::scene_from(boat_case("[-3.0, -7.0, 0.0]", 20.0, boat.sail, boat.hull, boat.velocity));
-    State s = initial_state(scene);
-    std::vector<Vec3> x{s[0].position}, v{s[0].velocity}, w{s[0].angular_velocity};
-    std::vector<Quat> q{s[0].orientation};
-    ForceJacobian jacobian;
-    ForceModel(scene).jacobian({x.data(), v.data(), q.data(), w.data()}, jacobian);
-    const double h = 1e-6;
-    for (int c = 0; c < 3; ++c) {
-      Vec3 up = v[0], down = v[0];
-      up[c] += h, down[c] -= h;
-      const Vec3 numeric = (force_on_boat(scene, up) - force_on_boat(scene, down)) / (2.0 * h);
-      Vec3 analytic = Vec3::Zero();
-      for (const JacobianBlock& b : jacobian.blocks())
-        if (b.body == 0 && b.by_body == 0 && b.wrt == Wrt::Velocity) analytic += b.value.col(c);
-      EXPECT_LT((analytic - numeric).norm(), 1e-5 * std::max(1.0, numeric.norm())) << "axis " << c;
-    }
+    test::expect_velocity_derivative_matches(
+        scene, initial_state(scene), [&](const Vec3& v) { return force_on_boat(scene, v); }, 1e-5);
   }
 }
 

@@ -15,6 +15,7 @@
 #include "run/accuracy_run.hpp"
 #include "scene/motion.hpp"
 #include "support/engine_support.hpp"
+#include "support/jacobian_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -72,20 +73,8 @@ TEST(WindPanel, ItsDerivativeMatchesFiniteDifferences) {
     const Scene scene = test::scene_from(panel_case(law, 30.0));
     State s = initial_state(scene);
     s[0].velocity = Vec3(2.0, 1.0, 0.0);
-    std::vector<Vec3> x{s[0].position}, v{s[0].velocity}, w{s[0].angular_velocity};
-    std::vector<Quat> q{s[0].orientation};
-    ForceJacobian jacobian;
-    ForceModel(scene).jacobian({x.data(), v.data(), q.data(), w.data()}, jacobian);
-    const double h = 1e-6;
-    for (int c = 0; c < 3; ++c) {
-      Vec3 up = v[0], down = v[0];
-      up[c] += h, down[c] -= h;
-      const Vec3 numeric = (push_on(scene, up) - push_on(scene, down)) / (2.0 * h);
-      Vec3 analytic = Vec3::Zero();
-      for (const JacobianBlock& b : jacobian.blocks())
-        if (b.body == 0 && b.by_body == 0 && b.wrt == Wrt::Velocity) analytic += b.value.col(c);
-      EXPECT_LT((analytic - numeric).norm(), 1e-6 * std::max(1.0, numeric.norm())) << c;
-    }
+    test::expect_velocity_derivative_matches(
+        scene, s, [&](const Vec3& v) { return push_on(scene, v); }, 1e-6);
   }
 }
 
@@ -126,8 +115,8 @@ TEST(WindPanel, TheReferencesEnergyChangesByTheWorkOfTheWind) {
   ASSERT_EQ(states.size() % 2, 1u);
   double work = 0.0;
   for (std::size_t j = 1; j + 1 < states.size(); j += 2)
-    work += (power(states[j - 1]) + 4.0 * power(states[j]) + power(states[j + 1])) *
-            scene.sample / 3.0;
+    work +=
+        (power(states[j - 1]) + 4.0 * power(states[j]) + power(states[j + 1])) * scene.sample / 3.0;
   const double change = total_energy(scene, states.back()) - total_energy(scene, states.front());
   EXPECT_GT(std::abs(work), 1.0);
   EXPECT_NEAR(change, work, 1e-8 * std::abs(work));
