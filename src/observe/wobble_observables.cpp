@@ -3,8 +3,11 @@
 // panel has taken up the wind and falls steadily: wobble_period (s) is the mean time between
 // upward zero crossings of the vertical velocity less its mean there (a steady fall's rate
 // taken out, every crossing moves alike and the spacing stays exact), wobble_amplitude (m)
-// half the whole range of the height less its least-squares line there. On the samples
+// half the whole range of the height less its least-squares line there. A fall that is not
+// steady there gets no value, with the reason. On the samples
 // every backend and the reference share, so the values compare.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -46,6 +49,24 @@ Rise rise_of(const Scene& scene, const Observe& observe, const Trajectory& traje
   if (r.times.size() < 8) {
     r = {};
     r.note = "fewer than 8 samples in the second half of the run";
+    return r;
+  }
+  // A fall still speeding up or slowing down has no steady rate to take out: the mean rate
+  // of the window's two halves may differ by a quarter of the wobble's swing in rate at most.
+  const std::size_t half_way = r.rates.size() / 2;
+  const double first = std::accumulate(r.rates.begin(), r.rates.begin() + half_way, 0.0) /
+                       static_cast<double>(half_way),
+               second = std::accumulate(r.rates.begin() + half_way, r.rates.end(), 0.0) /
+                        static_cast<double>(r.rates.size() - half_way);
+  const auto [low, high] = std::minmax_element(r.rates.begin(), r.rates.end());
+  const double swing = (*high - *low) / 2.0;
+  if (std::abs(second - first) > 0.25 * swing) {
+    const std::string note = fmt::format(
+        "the fall is not steady in the second half of the run: its mean vertical speed changes "
+        "by {:.3g} m/s there, against a wobble of {:.3g} m/s",
+        std::abs(second - first), swing);
+    r = {};
+    r.note = note;
   }
   return r;
 }

@@ -79,15 +79,18 @@ TEST(WindPanel, ItsDerivativeMatchesFiniteDifferences) {
 }
 
 /// The reference's wobble_period of the panel spinning at `spin` under `law`.
-double reference_wobble(const std::string& law, double spin) {
+ObservableValue reference_wobble_period(const std::string& law, double spin) {
   const Scene scene = test::scene_from(panel_case(law, 0.0, spin, 8.0, 1.0 / 64.0));
   const RunRecord run = run_accuracy(test::registry().reference(), scene, scene.sample, false);
   EXPECT_EQ(run.status, RunStatus::Ok) << run.reason;
   Observe observe;
   observe.kind = "wobble_period";
   observe.body = 0;
-  const ObservableValue v =
-      observable_kind("wobble_period")->measure(scene, observe, run.trajectory, nullptr);
+  return observable_kind("wobble_period")->measure(scene, observe, run.trajectory, nullptr);
+}
+
+double reference_wobble(const std::string& law, double spin) {
+  const ObservableValue v = reference_wobble_period(law, spin);
   EXPECT_TRUE(v.value) << v.note;
   return v.value.value_or(0.0);
 }
@@ -99,6 +102,14 @@ TEST(WindPanel, TheHeightWobblesWithHalfTheSpinsPeriod) {
       // Upward crossings interpolated between samples 1/64 s apart: within 1e-3 s.
       EXPECT_NEAR(reference_wobble(law, spin), std::numbers::pi / spin, 1e-3);
     }
+}
+
+// A panel that catches too little wind to stop speeding up has no steady fall to take out:
+// no period, with the reason, rather than one read off a fall that is still changing.
+TEST(WindPanel, AFallThatIsNotSteadyHasNoWobblePeriod) {
+  const ObservableValue v = reference_wobble_period("law = \"course\"\nk = 0.02", 4.0);
+  EXPECT_FALSE(v.value) << *v.value;
+  EXPECT_NE(v.note.find("not steady"), std::string::npos) << v.note;
 }
 
 TEST(WindPanel, TheReferencesEnergyChangesByTheWorkOfTheWind) {
