@@ -1,7 +1,9 @@
-// `report --shard I/N` runs one share of a report's work and keeps its results in a folder;
-// `merge` puts the shards' folders together and writes the report from them, refusing
-// shards of other case files, of another build, or a set with one missing.
+// `report --shard I/N` (or `run --shard I/N`) runs one share of the work and keeps its
+// results in a folder; `merge` puts the shards' folders together and writes the report (or
+// run's files) from them, refusing shards of other case files, of another build, of another
+// command or selection, or a set with one missing.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -28,11 +30,15 @@ namespace {
 /// The file a shard's folder holds beside its kept results.
 constexpr const char* kShardManifest = "beachball-shard.txt";
 
-/// What a shard was made from: its place, the build, how costs were timed, the cases.
+/// What a shard was made from: its place, the build, the command and what it selected, how
+/// costs were timed, the cases.
 struct ShardManifest {
   Shard shard;
   std::string build;
-  std::string cost;  ///< "off", or the cost pass's minimum timed seconds per run
+  ShardOf command = ShardOf::report;
+  std::string backends = "all";  ///< run's --backends, comma-separated
+  std::string dts = "all";       ///< run's --dt, exact and comma-separated
+  std::string cost;              ///< "off", or the cost pass's minimum timed seconds per run
   std::map<std::string, std::string> cases;  ///< name -> digest of its text
 };
 
@@ -40,9 +46,33 @@ std::string cost_text(const RunOptions& options) {
   return options.cost ? exact_number(options.cost_options.min_seconds) : "off";
 }
 
+std::string backends_text(const RunOptions& options) {
+  return options.backends.empty() ? "all" : fmt::format("{}", fmt::join(options.backends, ","));
+}
+
+std::string dts_text(const RunOptions& options) {
+  std::vector<std::string> dts;
+  for (double dt : options.dts) dts.push_back(exact_number(dt));
+  return dts.empty() ? "all" : fmt::format("{}", fmt::join(dts, ","));
+}
+
+const char* command_name(ShardOf command) {
+  return command == ShardOf::run ? "run" : "report";
+}
+
+/// The comma-separated words of a manifest's list ("all": none, every one).
+std::vector<std::string> listed(const std::string& text) {
+  std::vector<std::string> out;
+  if (text == "all") return out;
+  std::istringstream in(text);
+  for (std::string word; std::getline(in, word, ',');) out.push_back(word);
+  return out;
+}
+
 std::string manifest_text(const ShardManifest& m) {
-  std::string out = fmt::format("beachball shard {}/{}\nbuild {}\ncost {}\n", m.shard.index,
-                                m.shard.count, m.build, m.cost);
+  std::string out = fmt::format(
+      "beachball shard {}/{}\nbuild {}\ncommand {}\nbackends {}\ndt {}\ncost {}\n", m.shard.index,
+      m.shard.count, m.build, command_name(m.command), m.backends, m.dts, m.cost);
   for (const auto& [name, text] : m.cases) out += "case " + name + " " + text + "\n";
   return out;
 }
@@ -64,6 +94,12 @@ ShardManifest read_manifest(const std::string& dir) {
     words >> what >> a >> b;
     if (what == "build")
       m.build = a;
+    else if (what == "command" && (a == "run" || a == "report"))
+      m.command = a == "run" ? ShardOf::run : ShardOf::report;
+    else if (what == "backends")
+      m.backends = a;
+    else if (what == "dt")
+      m.dts = a;
     else if (what == "cost")
       m.cost = a;
     else if (what == "case")
@@ -101,7 +137,7 @@ void check_shard_folder(const std::string& dir) {
 }  // namespace
 
 int shard_command(const std::vector<std::string>& paths, const std::string& out,
-                  const RunOptions& options) {
+                  const RunOptions& options, ShardOf command) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
   check_before_work(scenes, options);
@@ -119,6 +155,7 @@ int shard_command(const std::vector<std::string>& paths, const std::string& out,
   with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
   for (const Scene& scene : scenes) {
     const CaseResults results = run_case(scene, registry, with_progress);
+    if (command == ShardOf::run) continue;
     // The stability search of the shard's backends (none: no search).
     std::vector<std::string> mine;
     for (const Backend* b : backends_for(scene, registry).all)
@@ -129,11 +166,16 @@ int shard_command(const std::vector<std::string>& paths, const std::string& out,
           [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
           options.isolation, options.timeout, known_trials(results.runs), options.cache);
   }
-  const ShardManifest manifest{shard, options.cache->program(), cost_text(options),
+  const ShardManifest manifest{shard,
+                               options.cache->program(),
+                               command,
+                               backends_text(options),
+                               dts_text(options),
+                               cost_text(options),
                                case_digests(scenes)};
   write_output_file(out + "/" + kShardManifest, manifest_text(manifest));
-  fmt::print("written: shard {}/{} of {} cases, its kept results in {}\n", shard.index, shard.count,
-             scenes.size(), out);
+  fmt::print("written: {} shard {}/{} of {} cases, its kept results in {}\n", command_name(command),
+             shard.index, shard.count, scenes.size(), out);
   return kExitOk;
 }
 
@@ -160,6 +202,12 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
       throw CaseError(dir, 0,
                       "was made by another build of beachball: merge with the build that ran "
                       "the shards");
+    if (m.command != first.command || m.backends != first.backends || m.dts != first.dts)
+      throw CaseError(dir, 0,
+                      fmt::format("is a shard of `{} --backends {} --dt {}`, the first of `{} "
+                                  "--backends {} --dt {}`: merge shards of one command",
+                                  command_name(m.command), m.backends, m.dts,
+                                  command_name(first.command), first.backends, first.dts));
     if (m.cost != first.cost)
       throw CaseError(dir, 0,
                       "timed its costs otherwise than the other shards (--no-cost, "
@@ -198,11 +246,15 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
   kept.require_kept(shards.front(),
                     "the shards hold no result for a run this report needs, "
                     "though they were made from these case files by this build");
+  const ShardManifest& made = manifests.front();
   RunOptions o = options;
   o.cache = &kept;
-  o.cost = manifests.front().cost != "off";
-  if (o.cost) o.cost_options.min_seconds = std::stod(manifests.front().cost);
-  const int code = report_command(paths, out, o);
+  o.cost = made.cost != "off";
+  if (o.cost) o.cost_options.min_seconds = std::stod(made.cost);
+  o.backends = listed(made.backends);
+  for (const std::string& dt : listed(made.dts)) o.dts.push_back(std::stod(dt));
+  const int code =
+      made.command == ShardOf::run ? run_command(paths, out, o) : report_command(paths, out, o);
   fmt::print("merged {} shards: {} results kept by them, {} run here\n", count, kept.reused(),
              kept.ran());
   return code;

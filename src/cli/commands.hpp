@@ -44,12 +44,17 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
                    const RunOptions& options);
 int stability_command(const std::vector<std::string>& paths, const std::string& out,
                       const RunOptions& options);
-/// `report --shard I/N`: runs the shard's share of the work (options.shard) and keeps its
-/// results in `out` (options.cache), with a manifest of what it was made from.
+/// The command a shard is a share of: `run` (its accuracy and cost runs) or `report` (those,
+/// the stability searches and the sweeps).
+enum class ShardOf { run, report };
+/// `report --shard I/N` or `run --shard I/N`: runs the shard's share of the command's work
+/// (options.shard) and keeps its results in `out` (options.cache), with a manifest of what
+/// it was made from.
 int shard_command(const std::vector<std::string>& paths, const std::string& out,
-                  const RunOptions& options);
-/// Puts the shards' folders together and writes the report from their kept results into
-/// `out`; refuses (CaseError) shards of other cases, another build, or an incomplete set.
+                  const RunOptions& options, ShardOf command);
+/// Puts the shards' folders together and writes, into `out`, the report or run's files
+/// (whichever command the shards were made by) from their kept results; refuses
+/// (CaseError) shards of other cases, another build or command, or an incomplete set.
 int merge_command(const std::vector<std::string>& shards, const std::vector<std::string>& paths,
                   const std::string& out, const RunOptions& options);
 int check_command(const std::vector<std::string>& paths, const std::string& junit,

@@ -26,7 +26,7 @@ struct Values {
   double timeout = 0.0;
   double cost_seconds = 0.005;
   /// $BEACHBALL_CACHE when set (a folder, or "off"), else the user's cache folder.
-  std::string shard;                ///< "I/N", report only
+  std::string shard;                ///< "I/N": report, run and check
   std::vector<std::string> shards;  ///< merge's shard folders
   std::string cache =
       std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE") : bb::default_cache_folder();
@@ -82,6 +82,9 @@ Commands declare_commands(CLI::App& app, Values& v) {
     command->add_flag("--fresh", v.fresh, "run everything again (new results are still kept)");
   };
   add_cache_options(run);
+  run->add_option("--shard", v.shard,
+                  "I/N: run only share I of N of the work and keep its results in --out, for "
+                  "`merge` (no case files)");
 
   auto* report = app.add_subcommand("report", "run the suite and write the report pages");
   report->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
@@ -94,12 +97,15 @@ Commands declare_commands(CLI::App& app, Values& v) {
                      "for `merge` (no pages)");
 
   auto* merge = app.add_subcommand(
-      "merge", "write the report from the kept results of every `report --shard I/N`");
+      "merge",
+      "write the report (or run's files) from the kept results of every `report --shard I/N` "
+      "(or `run --shard I/N`)");
   merge->add_option("SHARDS", v.shards, "the shards' folders")->required();
   merge->add_option("--cases", v.cases,
                     "the case files or folders the shards ran (default: "
                     "the bundled suite)");
-  merge->add_option("--out", v.out, "report folder")->default_val("reports");
+  merge->add_option("--out", v.out, "report folder (or run's output folder)")
+      ->default_val("reports");
   merge->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(merge);
 
@@ -152,8 +158,11 @@ bb::RunOptions run_options(const CLI::App& app, Values& v) {
 /// The parsed subcommand, run.
 int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) {
   if (*c.list) return bb::cli::list_command(v.cases);
+  if (*c.run && options.shard)
+    return bb::cli::shard_command(v.cases, v.out, options, bb::cli::ShardOf::run);
   if (*c.run) return bb::cli::run_command(v.cases, v.out, options);
-  if (*c.report && options.shard) return bb::cli::shard_command(v.cases, v.out, options);
+  if (*c.report && options.shard)
+    return bb::cli::shard_command(v.cases, v.out, options, bb::cli::ShardOf::report);
   if (*c.report) return bb::cli::report_command(v.cases, v.out, options);
   if (*c.merge) return bb::cli::merge_command(v.shards, v.cases, v.out, options);
   if (*c.stability) return bb::cli::stability_command(v.cases, v.out, options);
@@ -185,8 +194,10 @@ int main(int argc, char** argv) {
     bb::RunOptions options = run_options(app, values);
     // Kept results: reused where nothing that decides them changed, said at the end.
     std::optional<bb::RunCache> cache;
-    // A report's shard keeps its results in its own folder; a merge reads the shards'.
-    if (options.shard && *commands.report)
+    // A shard of a report or run keeps its results in its own folder; a merge reads the
+    // shards'.
+    const bool shard_folder = options.shard && (*commands.report || *commands.run);
+    if (shard_folder)
       options.cache = &cache.emplace(values.out, values.fresh);
     else if (!values.cache.empty() && values.cache != "off" && !*commands.list && !*commands.merge)
       options.cache = &cache.emplace(values.cache, values.fresh);
@@ -195,7 +206,7 @@ int main(int argc, char** argv) {
     if (cache && cache->reused() + cache->ran() > 0) {
       fmt::print("kept results: {} reused, {} run, in {}{}\n", cache->reused(), cache->ran(),
                  cache->folder(), cache->reused() > 0 ? " (--fresh runs them all again)" : "");
-      if (!(options.shard && *commands.report)) cache->prune();
+      if (!shard_folder) cache->prune();
     }
     return code;
   } catch (const bb::Interrupted& e) {

@@ -54,6 +54,45 @@ TEST(Shards, MergedTheyAreTheReportUnsplit) {
   EXPECT_EQ(a, b);
 }
 
+// `run --shard I/N` with a selection of backends and steps: merged, the shards are run's
+// files unsplit, made with the same selection; a merge refuses shards of two commands.
+TEST(Shards, RunShardsMergedAreTheRunUnsplit) {
+  const std::string dir = test::fresh_dir("shards_run");
+  std::string bouncier = test::kStackedBalls;
+  bouncier.replace(bouncier.find("\"stack\""), 7, "\"bouncy\"");
+  bouncier.replace(bouncier.find("restitution = 0.5"), 17, "restitution = 0.9");
+  const std::string cases = test::write_case(dir, "stack.toml", test::kStackedBalls) + " " +
+                            test::write_case(dir, "bouncy.toml", bouncier);
+  const std::string selection =
+      " --no-cost --backends course/semi-implicit-euler,course/rk4,bullet --dt 1/60,1/120";
+  for (int i = 1; i <= 2; ++i) {
+    const test::Outcome o =
+        test::beachball("run " + cases + selection + " --shard " + std::to_string(i) + "/2 --out " +
+                        dir + "/shard" + std::to_string(i));
+    ASSERT_EQ(o.exit_code, 0) << o.out;
+    EXPECT_NE(o.out.find("run shard"), std::string::npos) << o.out;
+    EXPECT_FALSE(fs::exists(dir + "/shard" + std::to_string(i) + "/stack.json"));
+  }
+  const test::Outcome merged = test::beachball(
+      "merge " + dir + "/shard2 " + dir + "/shard1 --cases " + cases + " --out " + dir + "/merged");
+  ASSERT_EQ(merged.exit_code, 0) << merged.out;
+  const test::Outcome whole =
+      test::beachball("run " + cases + selection + " --out " + dir + "/whole");
+  ASSERT_EQ(whole.exit_code, 0) << whole.out;
+  const auto a = test::snapshot(dir + "/merged"), b = test::snapshot(dir + "/whole");
+  ASSERT_TRUE(b.count("bouncy.json") && b.count("stack.json")) << whole.out;
+  EXPECT_EQ(a, b);
+  // A report's shard beside a run's: refused, naming both commands.
+  const test::Outcome report =
+      test::beachball("report " + cases + " --no-cost --shard 2/2 --out " + dir + "/report2");
+  ASSERT_EQ(report.exit_code, 0) << report.out;
+  const test::Outcome mixed = test::beachball(
+      "merge " + dir + "/shard1 " + dir + "/report2 --cases " + cases + " --out " + dir + "/mixed");
+  EXPECT_EQ(mixed.exit_code, 2) << mixed.out;
+  EXPECT_NE(mixed.out.find("is a shard of `report"), std::string::npos) << mixed.out;
+  EXPECT_FALSE(fs::exists(dir + "/mixed/stack.json"));
+}
+
 TEST(Shards, AMergeRefusesAnIncompleteOrForeignSetBeforeItWrites) {
   const Split s = split_in_three("shards_refused", false);
   const auto merge = [&](const std::string& folders, const std::string& cases) {
