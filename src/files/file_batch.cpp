@@ -196,8 +196,7 @@ int finish_interrupted_switches(const std::string& folder) {
         if (exists_here(target) && !exists_here(aside)) std::rename(target.c_str(), aside.c_str());
         if (s.put) std::rename(waiting.c_str(), target.c_str());
       }
-    std::error_code remove_error;
-    fs::remove_all(staging, remove_error);
+    remove_owned_folder(staging.string());
   }
   return found;
 }

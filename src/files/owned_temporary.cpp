@@ -88,6 +88,21 @@ bool abandoned_marker(const std::string& marker) {
   return free;
 }
 
+bool remove_owned_folder(const std::string& folder) {
+  std::error_code ec;
+  bool only_marker_left = true;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    if (entry.path().filename() == kOwnerMarker) continue;
+    std::error_code remove_error;
+    fs::remove_all(entry.path(), remove_error);
+    only_marker_left = only_marker_left && !remove_error;
+  }
+  // The marker goes only once nothing else is left, then the empty folder.
+  if (ec || !only_marker_left) return false;
+  std::remove((folder + "/" + kOwnerMarker).c_str());
+  return rmdir(folder.c_str()) == 0;
+}
+
 int remove_abandoned_temporaries(const std::string& parent, const std::string& prefix) {
   int removed = 0;
   std::error_code ec;
@@ -98,9 +113,7 @@ int remove_abandoned_temporaries(const std::string& parent, const std::string& p
     std::error_code kind_error;
     if (!entry.is_directory(kind_error) || entry.is_symlink(kind_error)) continue;
     if (!abandoned_marker((entry.path() / kOwnerMarker).string())) continue;
-    std::error_code remove_error;
-    fs::remove_all(entry.path(), remove_error);
-    removed += !remove_error;
+    removed += remove_owned_folder(entry.path().string());
   }
   return removed;
 }
@@ -121,10 +134,7 @@ OwnedTemporary::OwnedTemporary(const std::string& parent, const std::string& pre
 }
 
 void OwnedTemporary::remove() {
-  if (!released_ && !path_.empty()) {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
+  if (!released_ && !path_.empty()) remove_owned_folder(path_);
   path_.clear();
   if (marker_fd_ >= 0) close(marker_fd_);
   marker_fd_ = -1;

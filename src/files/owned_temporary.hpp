@@ -46,6 +46,11 @@ int mark_as_owned(const std::string& folder);
 /// and its lock can be taken now.
 bool abandoned_marker(const std::string& marker);
 
+/// Removes `folder`, which holds beachball's marker, with the marker last: a kill part-way
+/// leaves the folder still marked, for the next run to finish, never an unmarked folder
+/// nobody can prove is beachball's. Returns whether it is gone.
+bool remove_owned_folder(const std::string& folder);
+
 /// Removes every folder `parent/<prefix>*` that holds an abandoned marker; returns how many.
 /// Anything else (a user's folder of the same shape of name) is left alone.
 int remove_abandoned_temporaries(const std::string& parent, const std::string& prefix);
