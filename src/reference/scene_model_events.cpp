@@ -222,10 +222,15 @@ void SceneModel::end_motion(int i, const double* y, double t) {
 
 void SceneModel::stop(int i, double* y, double t) {
   // Located to the event tolerance, the speed along the ground is what that tolerance
-  // leaves (about a for 1e-12 s): rest, exactly.
+  // leaves (about a for 1e-12 s): rest, exactly. A body resting on the ground keeps no speed
+  // along its normal either: on a slope, the rounding of v - (v.n) n would otherwise leave
+  // a slide of 1e-17 m/s in a direction of its own, across the force.
   const Vector3d n = scene_.ground->normal;
   Vec v(y + at(i) + 3);
-  v = v.dot(n) * n;
+  if (resting_[i])
+    v.setZero();
+  else
+    v = v.dot(n) * n;
   end_motion(i, y, t);
   settle(i, y, t);
 }

@@ -271,5 +271,59 @@ angle = -30.0
   }
 }
 
+/// A 1 m box on a ground tilted by `degrees` (towards +x), sent along the slope at `speed`
+/// (positive: uphill), with mu_s 0.6 and mu_k 0.5.
+Scene block_sent_along_a_slope(double degrees, double speed) {
+  const double a = degrees * M_PI / 180.0, c = std::cos(a), s = std::sin(a);
+  // Uphill is towards -x on a ground whose normal leans towards +x.
+  const double ux = -c, uy = s;
+  char text[1024];
+  std::snprintf(text, sizeof text, R"(name = "sent"
+dims = 2
+duration = 3.0
+sample = 0.05
+dt = [0.01]
+report_dt = 0.01
+[ground]
+normal = [%.17g, %.17g, 0.0]
+friction_static = 0.6
+friction_kinetic = 0.5
+[[body]]
+name = "block"
+shape = "box"
+half_extents = [0.5, 0.5, 0.5]
+mass = 1.0
+position = [%.17g, %.17g, 0.0]
+angle = %.17g
+velocity = [%.17g, %.17g, 0.0]
+)",
+                s, c, 0.5 * s, 0.5 * c, -degrees, speed * ux, speed * uy);
+  return test::scene_from(text);
+}
+
+// A block that stops on a slope below atan(mu_s) stays there: sent up 20 degrees at 3 m/s
+// it stops after v0 / (g (sin + mu_k cos)); sent down 10 degrees, after v0 / (g (mu_k cos -
+// sin)). The reference used to refuse both at the stop ("slides across the force"): the
+// rounding of the stopped velocity on a tilted plane left a slide of its own direction.
+TEST(FrictionReference, ABlockThatStopsOnASlopeBelowTheThresholdStaysThere) {
+  const double g = 9.81;
+  for (const auto& [degrees, speed] : {std::pair{20.0, 3.0}, {10.0, -3.0}, {20.0, -3.0}}) {
+    const Scene scene = block_sent_along_a_slope(degrees, speed);
+    const RunRecord run = run_accuracy(ReferenceBackend(), scene, scene.report_dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << degrees << " " << speed << ": " << run.reason;
+    const double a = degrees * M_PI / 180.0;
+    const double slowing =
+        speed > 0.0 ? g * (std::sin(a) + 0.5 * std::cos(a)) : g * (0.5 * std::cos(a) - std::sin(a));
+    const BodyEvents& e = run.trajectory.events.bodies[0];
+    ASSERT_TRUE(e.stop_time) << degrees << " " << speed;
+    EXPECT_NEAR(*e.stop_time, std::abs(speed) / slowing, kClosedForm) << degrees << " " << speed;
+    EXPECT_NEAR((e.stop_position - scene.bodies[0].position).norm(),
+                speed * speed / (2.0 * slowing), kClosedForm);
+    EXPECT_NEAR((run.trajectory.states.back()[0].position - e.stop_position).norm(), 0.0,
+                kClosedForm)
+        << degrees << " " << speed << ": it did not stay";
+  }
+}
+
 }  // namespace
 }  // namespace bb
