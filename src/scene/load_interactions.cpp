@@ -89,7 +89,9 @@ void read_air_and_ground(TomlReader& root, Scene& scene) {
     g.normal = unit_vector(r, "normal", normal);
     g.restitution = r.number_or("restitution", 0.0);
     require_range(r, "restitution", g.restitution, 0.0, 1.0);
-    g.friction_static = r.number_or("friction_static", 0.0);
+    // One coefficient given sets both (Coulomb's law with one coefficient): a static one of
+    // 0 beside a kinetic one would push a stopped body off again.
+    g.friction_static = r.number_or("friction_static", r.number_or("friction_kinetic", 0.0));
     require_range(r, "friction_static", g.friction_static, 0.0, 0.0);
     g.friction_kinetic = r.number_or("friction_kinetic", g.friction_static);
     require_range(r, "friction_kinetic", g.friction_kinetic, 0.0, 0.0);
@@ -144,13 +146,13 @@ void read_contacts(TomlReader& root, Scene& scene, const BodyNames& names_index)
     c.restitution = r.number_or("restitution", 0.0);
     require_range(r, "restitution", c.restitution, 0.0, 1.0);
     // `friction` sets both coefficients; or friction_static and friction_kinetic, as
-    // [ground] takes them (kinetic defaults to static).
+    // [ground] takes them (either alone sets both).
     if (r.has("friction") && (r.has("friction_static") || r.has("friction_kinetic")))
       r.fail(r.line_of("friction"),
              "give 'friction', or 'friction_static' and 'friction_kinetic', not both");
     const double both = r.number_or("friction", 0.0);
     require_range(r, "friction", both, 0.0, 0.0);
-    c.friction_static = r.number_or("friction_static", both);
+    c.friction_static = r.number_or("friction_static", r.number_or("friction_kinetic", both));
     require_range(r, "friction_static", c.friction_static, 0.0, 0.0);
     c.friction_kinetic = r.number_or("friction_kinetic", c.friction_static);
     require_range(r, "friction_kinetic", c.friction_kinetic, 0.0, 0.0);

@@ -98,5 +98,21 @@ TEST(CaseRules, EqualFrictionCoefficientsAreFineAndKineticAboveStaticIsNot) {
   EXPECT_THROW(test::scene_from(ground + "friction_kinetic = 0.5000001\n"), CaseError);
 }
 
+// One coefficient alone sets both, in [ground] and in a [[contact]]: a static coefficient
+// left at 0 beside a kinetic one pushed a stopped block up a slope in the reference.
+TEST(CaseRules, OneFrictionCoefficientAloneSetsBoth) {
+  const Scene kinetic =
+      test::scene_from(std::string(test::kMinimalCase) + "[ground]\nfriction_kinetic = 0.4\n");
+  EXPECT_EQ(kinetic.ground->friction_static, 0.4);
+  EXPECT_EQ(kinetic.ground->friction_kinetic, 0.4);
+  const Scene fixed = test::scene_from(std::string(test::kMinimalCase) +
+                                       "[ground]\nfriction_static = 0.7\n"
+                                       "[[contact]]\nbodies = [\"ball\", \"ground\"]\n"
+                                       "friction_kinetic = 0.3\n");
+  ASSERT_EQ(fixed.contacts.size(), 1u);
+  EXPECT_EQ(fixed.contacts[0].friction_static, 0.3);
+  EXPECT_EQ(fixed.contacts[0].friction_kinetic, 0.3);
+}
+
 }  // namespace
 }  // namespace bb
