@@ -6,9 +6,23 @@
 
 namespace bb {
 
+namespace {
+
+/// Whether a body of `scene` feels a constant force: its own, or the wind's on a wall.
+bool pushed(const Scene& scene) {
+  if (scene.features().has(Feature::AppliedForce)) return true;
+  for (const Body& b : scene.bodies)
+    if (b.wind_force.norm() > 0.0) return true;
+  return false;
+}
+
+}  // namespace
+
 DivergenceBounds divergence_bounds(const Scene& scene) {
   // Fastest plausible speed: the largest over the bodies of the speed it starts with and
-  // gets from its impulses (J / m each) and its constant force (F t / m), plus the speed its spin
+  // gets from its impulses (J / m each) and its constant forces, the wind's on a wall among them
+  // (F t / m), and a sail's drive (at most ten times the wind: an ice boat reaches about five),
+  // plus the speed its spin
   // gives its surface (its initial spin and the impulses' angular impulses over its smallest
   // moment, times its reach); plus the wind, plus what gravity adds over the whole run. A spin's
   // energy is within 1/2 m (w reach)^2, since no moment exceeds m reach^2.
@@ -22,7 +36,8 @@ DivergenceBounds divergence_bounds(const Scene& scene) {
     const double moment = principal_inertia(b).minCoeff();
     double v = b.velocity.norm(), w = b.angular_velocity.norm();
     // A constant force and torque add to the speed and the spin over the whole run.
-    if (!b.fixed) v += b.force.norm() / b.mass * scene.duration;
+    if (!b.fixed) v += (b.force.norm() + b.wind_force.norm()) / b.mass * scene.duration;
+    if (b.sail && scene.air) v += 10.0 * scene.air->wind.norm();
     if (moment > 0.0) w += b.torque.norm() / moment * scene.duration;
     for (const Impulse& imp : scene.impulses) {
       if (imp.body != static_cast<int>(i)) continue;
@@ -68,8 +83,7 @@ std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds
       std::ostringstream m;
       m << "body '" << name << "' moved more than " << bounds.travel
         << " m from its start, ten times what gravity, the initial speeds and spins"
-        << (scene.features().has(Feature::AppliedForce) ? ", the impulses and the constant forces"
-                                                        : " and the impulses")
+        << (pushed(scene) ? ", the impulses and the constant forces" : " and the impulses")
         << " allow";
       return m.str();
     }
