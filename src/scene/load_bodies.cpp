@@ -7,6 +7,7 @@
 #include "scene/load_case.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/text.hpp"
+#include "scene/vector_limits.hpp"
 
 namespace bb::load {
 
@@ -30,15 +31,16 @@ void reject_foreign_key(TomlReader& r, const std::string& key, const std::string
 void read_geometry(TomlReader& r, Body& b) {
   if (b.shape == Shape::Sphere) {
     b.radius = r.number("radius");
-    require_range(r, "radius", b.radius, 0.0, 0.0, false);
+    require_range(r, "radius", b.radius, kLeastSize, kMostSize);
   } else {
     reject_foreign_key(r, "radius", "sphere");
   }
   if (b.shape == Shape::Box) {
     b.half_extents = r.vec3("half_extents");
-    if (b.half_extents.x() <= 0.0 || b.half_extents.y() <= 0.0 || b.half_extents.z() <= 0.0)
-      r.fail(r.line_of("half_extents"),
-             "every 'half_extents' in " + r.where() + " must be greater than 0");
+    if (!(b.half_extents.minCoeff() >= kLeastSize && b.half_extents.maxCoeff() <= kMostSize))
+      r.fail(r.line_of("half_extents"), "every 'half_extents' in " + r.where() +
+                                            " must be between " + short_number(kLeastSize) +
+                                            " and " + short_number(kMostSize) + " m");
   } else {
     reject_foreign_key(r, "half_extents", "box");
   }
@@ -243,7 +245,7 @@ void read_bodies(TomlReader& root, Scene& scene) {
     read_geometry(r, b);
     b.fixed = r.boolean_or("fixed", false);
     b.mass = b.fixed ? r.number_or("mass", 0.0) : r.number("mass");
-    require_range(r, "mass", b.mass, 0.0, 0.0, b.fixed);
+    if (!b.fixed || b.mass != 0.0) require_range(r, "mass", b.mass, kLeastMass, kMostMass);
     b.position = r.vec3_or("position", {});
     require_planar(r, scene, "position", b.position);
     require_vector_range(r, "position", b.position, VectorKind::Position);

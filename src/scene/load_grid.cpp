@@ -8,6 +8,7 @@
 #include "scene/load_case.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/text.hpp"
+#include "scene/vector_limits.hpp"
 
 namespace bb::load {
 
@@ -108,9 +109,9 @@ std::optional<GridPlan> read_grid(TomlReader& root, const Scene& scene) {
                                     " particles; that is beyond what beachball runs");
   }
   g.spacing = r.number_or("spacing", g.spacing);
-  require_range(r, "spacing", g.spacing, 0.0, 0.0, false);
+  require_range(r, "spacing", g.spacing, kLeastSize, kMostSize);
   g.mass = r.number_or("mass", g.mass);
-  require_range(r, "mass", g.mass, 0.0, 0.0, false);
+  require_range(r, "mass", g.mass, kLeastMass, kMostMass);
   g.neighbours = r.integer_or("neighbours", scene.dims == 2 ? 8 : 26);
   const bool ok = scene.dims == 2 ? (g.neighbours == 4 || g.neighbours == 6 || g.neighbours == 8)
                                   : (g.neighbours == 6 || g.neighbours == 18 || g.neighbours == 26);
@@ -119,9 +120,9 @@ std::optional<GridPlan> read_grid(TomlReader& root, const Scene& scene) {
                                         ? "'neighbours' in a 2D [grid] must be 4, 6 or 8"
                                         : "'neighbours' in a 3D [grid] must be 6, 18 or 26");
   g.stiffness = r.number_or("stiffness", g.stiffness);
-  require_range(r, "stiffness", g.stiffness, 0.0, 0.0, false);
+  require_range(r, "stiffness", g.stiffness, 0.0, kMostSpringConstant, false);
   g.damping = r.number_or("damping", g.damping);
-  require_range(r, "damping", g.damping, 0.0, 0.0);
+  require_range(r, "damping", g.damping, 0.0, kMostSpringConstant);
   g.origin = r.vec3_or("origin", {});
   require_planar(r, scene, "origin", g.origin);
   plan.origin_line = r.line_of("origin");

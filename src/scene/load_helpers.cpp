@@ -93,7 +93,9 @@ void require_range(const TomlReader& reader, const std::string& key, double valu
   const bool too_high = high > low && value > high;
   if (too_low || too_high) {
     std::string rule = low_inclusive ? "at least " + show(low) : "greater than " + show(low);
-    if (high > low) rule = "between " + show(low) + " and " + show(high);
+    if (high > low)
+      rule = low_inclusive ? "between " + short_number(low) + " and " + short_number(high)
+                           : rule + " and at most " + short_number(high);
     reader.fail(reader.line_of(key),
                 "'" + key + "' in " + reader.where() + " must be " + rule + ", not " + show(value));
   }

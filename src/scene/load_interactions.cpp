@@ -6,6 +6,7 @@
 #include "scene/initial_overlap.hpp"
 #include "scene/load_parts.hpp"
 #include "scene/text.hpp"
+#include "scene/vector_limits.hpp"
 
 namespace bb::load {
 
@@ -173,12 +174,12 @@ void read_springs(TomlReader& root, Scene& scene, const BodyNames& names) {
     s.body_a = a;
     s.body_b = b;
     s.stiffness = r.number("stiffness");
-    require_range(r, "stiffness", s.stiffness, 0.0, 0.0, false);
+    require_range(r, "stiffness", s.stiffness, 0.0, kMostSpringConstant, false);
     s.damping = r.number_or("damping", 0.0);
-    require_range(r, "damping", s.damping, 0.0, 0.0);
+    require_range(r, "damping", s.damping, 0.0, kMostSpringConstant);
     s.rest_length =
         r.number_or("rest_length", (scene.bodies[a].position - scene.bodies[b].position).norm());
-    require_range(r, "rest_length", s.rest_length, 0.0, 0.0);
+    require_range(r, "rest_length", s.rest_length, 0.0, kMostSize);
     r.finish();
     scene.springs.push_back(s);
   }

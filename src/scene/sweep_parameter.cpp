@@ -177,10 +177,15 @@ std::string sweep_path_problem(const Scene& scene, const std::string& path) {
 std::string sweep_value_problem(const Scene& scene, const std::string& path, double value) {
   const std::vector<std::string> p = sweep_path_parts(path);
   const std::string& field = p[0] == "body" && p[2] != "sail" && p[2] != "plate" ? p[2] : p.back();
-  const std::string at = "the value " + short_number(value) + " for '" + path + "'";
+  const std::string at = "the value " + shortest_number(value) + " for '" + path + "'";
   if (!std::isfinite(value)) return at + " is not a finite number";
-  if ((field == "mass" || field == "radius" || field == "half_extents") && value <= 0.0)
-    return at + " must be greater than 0";
+  if (field == "mass" && !(value >= kLeastMass && value <= kMostMass))
+    return at + " must be between " + short_number(kLeastMass) + " and " + short_number(kMostMass) +
+           " kg";
+  if ((field == "radius" || field == "half_extents") &&
+      !(value >= kLeastSize && value <= kMostSize))
+    return at + " must be between " + short_number(kLeastSize) + " and " + short_number(kMostSize) +
+           " m";
   if ((field == "drag_coefficient" || field == "friction_static" || field == "friction_kinetic" ||
        field == "density") &&
       value < 0.0)

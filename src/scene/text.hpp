@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -49,6 +50,16 @@ inline std::string significant_digits(double x, int digits = 3) {
   char buffer[40];
   std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
   return buffer;
+}
+
+/// `x` in the fewest significant digits that read back as the same double (0.50000001, not
+/// 0.5): a number the user wrote, said back.
+inline std::string shortest_number(double x) {
+  for (int digits = 6; digits < 17; ++digits) {
+    const std::string text = significant_digits(x, digits);
+    if (std::strtod(text.c_str(), nullptr) == x) return text;
+  }
+  return significant_digits(x, 17);
 }
 
 /// `x` exactly: 17 significant digits, which read back as the same double.

@@ -22,6 +22,15 @@ enum class VectorKind {
   Impulse,  ///< an [[impulse]]
 };
 
+/// The range of a body's sizes (a sphere's radius, a box's half extents, a grid's spacing, a
+/// spring's rest length at most): a micrometre to a thousand kilometres. ODE aborts on a
+/// ball of 1e-200 m (its inertia rounds to 0) and every engine on one of 1e200 m.
+inline constexpr double kLeastSize = 1e-6, kMostSize = 1e6;
+/// The range of a moving body's or particle's mass: a microgram to a million tonnes.
+inline constexpr double kLeastMass = 1e-9, kMostMass = 1e9;
+/// The largest spring stiffness (N/m) and damping (N s/m).
+inline constexpr double kMostSpringConstant = 1e9;
+
 struct VectorLimit {
   double least = 0.0;  ///< smallest norm allowed (directions only)
   double most = 0.0;   ///< largest norm allowed

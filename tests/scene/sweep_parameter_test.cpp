@@ -49,9 +49,15 @@ TEST(SweepParameter, NamesBodiesGroundAirAndGravityAndRefusesTheRest) {
   EXPECT_NE(sweep_path_problem(s, "body.block.radius").find("not a sphere"), std::string::npos);
   EXPECT_NE(sweep_path_problem(s, "body.ball.position.w").find("names nothing"), std::string::npos);
   EXPECT_NE(sweep_path_problem(s, "ground").find("names nothing"), std::string::npos);
-  EXPECT_NE(sweep_value_problem(s, "body.ball.mass", -1.0).find("greater than 0"),
+  EXPECT_NE(sweep_value_problem(s, "body.ball.mass", -1.0).find("between 1e-09 and 1e+09 kg"),
             std::string::npos);
   EXPECT_NE(sweep_value_problem(s, "ground.normal", 95.0).find("between -90 and 90"),
+            std::string::npos);
+  // Sizes a backend cannot take (ODE aborts on a ball of 1e-200 m), and the value said back
+  // as the user wrote it.
+  EXPECT_NE(sweep_value_problem(s, "body.ball.radius", 1e200).find("between 1e-06 and 1e+06 m"),
+            std::string::npos);
+  EXPECT_NE(sweep_value_problem(s, "ground.restitution", 1.00000001).find("the value 1.00000001"),
             std::string::npos);
 }
 
