@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "scene/text.hpp"
+
 namespace bb {
 
 namespace {
@@ -12,6 +14,11 @@ namespace {
 /// every step from the spin (BodyState::turn).
 ObservableValue final_angle(const Scene& scene, int body, const Trajectory& t) {
   if (scene.dims != 2) return {std::nullopt, "measured in 2D cases only (the turn about z)"};
+  if (const std::optional<double> at = t.events.bodies[body].turn_unclear)
+    return {std::nullopt, "its whole turns cannot be counted from t = " + short_number(*at) +
+                              " s: its orientation moved more than a quarter turn away from what "
+                              "its spin turns it by in a step (an orientation update that lags a "
+                              "fast spin)"};
   const double turned = t.states.back()[body].turn - t.states.front()[body].turn;
   return {turned * 180.0 / std::numbers::pi, ""};
 }

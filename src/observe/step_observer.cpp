@@ -32,8 +32,13 @@ Vec3 angular_momentum(const Scene& scene, const State& s, int a, int b) {
 
 }  // namespace
 
-double next_turn(double turn, const BodyState& before, const BodyState& now, double h) {
-  const double spun = 0.5 * (before.angular_velocity.z() + now.angular_velocity.z()) * h;
+double spin_turn(const BodyState& before, const BodyState& now, double h,
+                 std::optional<double> kicked) {
+  return kicked ? before.angular_velocity.z() * *kicked + now.angular_velocity.z() * (h - *kicked)
+                : 0.5 * (before.angular_velocity.z() + now.angular_velocity.z()) * h;
+}
+
+double next_turn(double turn, double spun, const BodyState& now) {
   const double angle = angle_about_z(now.orientation), whole = 2.0 * std::numbers::pi;
   return angle + whole * std::round((turn + spun - angle) / whole);
 }
@@ -364,6 +369,17 @@ void StepObserver::observe_apexes(double dt, const State& s) {
   }
 }
 
+std::optional<double> StepObserver::kick_in_step(std::size_t i, double t) const {
+  // An impulse lands at its time: at the start of the step it rounds to (a fixed step), or
+  // inside the interval (the reference between its samples); the case makes its time a
+  // multiple of every dt.
+  const double h = t - previous_t_, slack = 1e-9 * h;
+  for (const Impulse& imp : scene_.impulses)
+    if (imp.body == static_cast<int>(i) && imp.time >= previous_t_ - slack && imp.time < t - slack)
+      return std::max(0.0, imp.time - previous_t_);
+  return std::nullopt;
+}
+
 void StepObserver::observe(double t, const State& s) {
   if (!active()) return;
   const double dt = t - previous_t_;
@@ -371,8 +387,17 @@ void StepObserver::observe(double t, const State& s) {
   if (watch_turns_)
     for (std::size_t i = 0; i < s.size(); ++i) {
       if (!turning_[i]) continue;
-      turns_[i] =
-          first_ ? angle_about_z(s[i].orientation) : next_turn(turns_[i], previous_[i], s[i], dt);
+      if (first_) {
+        turns_[i] = angle_about_z(s[i].orientation);
+        continue;
+      }
+      const double spun = spin_turn(previous_[i], s[i], dt, kick_in_step(i, t));
+      const double expected = turns_[i] + spun;
+      turns_[i] = next_turn(turns_[i], spun, s[i]);
+      // Where the orientation and the spin disagree by more than a quarter turn, which whole
+      // turn the step made is a guess: said, not counted.
+      std::optional<double>& unclear = trace_.bodies[i].turn_unclear;
+      if (!unclear && std::abs(turns_[i] - expected) > 0.5 * std::numbers::pi) unclear = t;
     }
   if (!first_ && !falling_.empty()) observe_falls(t, s);
   if (!first_ && !swinging_.empty()) observe_swings(t, s);

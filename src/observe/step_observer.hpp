@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
@@ -21,13 +22,18 @@ namespace bb {
 /// The part of `v` along the scene's ground (all of it when there is no ground).
 Vec3 along_ground(const Scene& scene, const Vec3& v);
 
-/// A 2D body's turn about z (radians) at the end of a step of `h` seconds from `before` to
-/// `now`, given its unwrapped `turn` at the start: the angle of `now` plus the whole turns
-/// that bring it nearest to `turn` plus what the spin turned it by over the step (the mean
-/// of the spins at its ends, times h). The spin, not the angles alone, says how many whole
+/// What a 2D body's spin turned it by (radians) over a step of `h` seconds from `before` to
+/// `now` (the mean of the spins at its ends, times h), to count the whole turns of the step
+/// by (next_turn). The spin, not the angles alone, says how many whole
 /// turns the step made: right while the spin's estimate is within half a turn of the true
-/// turn over the step, even where a step turns the body by more than half a turn.
-double next_turn(double turn, const BodyState& before, const BodyState& now, double h);
+/// turn over the step, even where a step turns the body by more than half a turn. Where an
+/// impulse changed the spin `kicked` seconds into the step, the body turned at the spin of
+/// `before` until then and at that of `now` after (a mean would lose half of a kick's turn).
+double spin_turn(const BodyState& before, const BodyState& now, double h,
+                 std::optional<double> kicked = std::nullopt);
+/// The unwrapped turn at the end of a step that began at `turn` and turned by about `spun`:
+/// the angle of `now` plus the whole turns that bring it nearest to turn + spun.
+double next_turn(double turn, double spun, const BodyState& now);
 
 /// A body at rest that moves along the ground slower than this fraction of the fastest it
 /// has moved (or of |g| dt) only wobbles (an engine's rounding at rest): it has not set off.
@@ -129,6 +135,8 @@ class StepObserver {
   std::vector<char> turning_;
   bool watch_turns_ = false;
   std::vector<double> turns_;  ///< per body: radians, the turn about z so far
+  /// The first impulse on body i in (previous_t_ - rounding, t): seconds into the step.
+  std::optional<double> kick_in_step(std::size_t i, double t) const;
   State previous_;
   double previous_t_ = 0.0;
   bool first_ = true;

@@ -81,8 +81,10 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
     if (observer.active() && sim->exact_events()) {
       EventTrace& events = record.trajectory.events;
       const EventTrace& seen = observer.trace();
-      for (std::size_t i = 0; i < events.bodies.size(); ++i)
+      for (std::size_t i = 0; i < events.bodies.size(); ++i) {
         events.bodies[i].velocity_range = seen.bodies[i].velocity_range;
+        events.bodies[i].turn_unclear = seen.bodies[i].turn_unclear;
+      }
     }
   } catch (const UnsupportedScene& e) {
     // A scene past what the backend answers (the reference's exact answer) is unsupported,

@@ -88,6 +88,8 @@ void put(Writer& w, const EventTrace& events) {
     if (b.stop_time) w.raw(*b.stop_time), put(w, b.stop_position), put(w, b.motion_start);
     w.raw<char>(b.fall_time.has_value());
     if (b.fall_time) w.raw(*b.fall_time);
+    w.raw<char>(b.turn_unclear.has_value());
+    if (b.turn_unclear) w.raw(*b.turn_unclear);
   }
   w.raw<char>(events.first_collision.has_value());
   if (const auto& c = events.first_collision) {
@@ -110,6 +112,7 @@ EventTrace get_events(Reader& r) {
     if (r.raw<char>())
       b.stop_time = r.raw<double>(), b.stop_position = get_vec(r), b.motion_start = get_vec(r);
     if (r.raw<char>()) b.fall_time = r.raw<double>();
+    if (r.raw<char>()) b.turn_unclear = r.raw<double>();
   }
   if (r.raw<char>()) {
     CollisionBalance c;

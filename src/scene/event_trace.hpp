@@ -37,6 +37,11 @@ struct BodyEvents {
   /// has lying on its broadest face (a wall reaching the ground), for bodies whose fall is
   /// observed.
   std::optional<double> fall_time;
+  /// Seconds: the first step after which the body's turn about z could not be counted from
+  /// its spin (2D): its orientation ended more than a quarter turn away from where its spin
+  /// says, as an engine's orientation update that lags a fast spin leaves it. None: every
+  /// step's whole turns were counted.
+  std::optional<double> turn_unclear;
 };
 
 /// Metres: how near the height of lying flat a falling body's centre must come for it to

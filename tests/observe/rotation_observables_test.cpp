@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "observe/step_observer.hpp"
 #include "run/case_runner.hpp"
 #include "support/test_support.hpp"
 
@@ -67,6 +68,90 @@ TEST(FinalAngle, TheSampledTurnGrowsWithTheSpinWithoutJumps) {
       EXPECT_NEAR(t.states[j][0].turn, start - 100.0 * t.times[j], 1e-7)
           << run->backend << " at " << t.times[j] << " s";
   }
+}
+
+/// A ball at rest in 2D without gravity, given a pure couple at 0.5 s (two opposite
+/// impulses of `j` N s, 0.5 m above and below its centre) that spins it clockwise at
+/// 2 j (r / 2) / (2/5 m r^2) = 10 j rad/s, sampled every `sample` s, stepped at 1/60 s.
+Scene kicked_ball(double j, double sample) {
+  char text[1024];
+  std::snprintf(text, sizeof text, R"(name = "kicked"
+dims = 2
+duration = 1.0
+sample = %.17g
+dt = [0.0166666666666666667]
+report_dt = 0.0166666666666666667
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "ball"
+radius = 0.5
+mass = 1.0
+position = [0.0, 2.0, 0.0]
+[[impulse]]
+body = "ball"
+time = 0.5
+impulse = [%.17g, 0.0, 0.0]
+point = [0.0, 2.5, 0.0]
+[[impulse]]
+body = "ball"
+time = 0.5
+impulse = [%.17g, 0.0, 0.0]
+point = [0.0, 1.5, 0.0]
+[[observe]]
+kind = "final_angle"
+body = "ball"
+)",
+                sample, j, -j);
+  return test::scene_from(text);
+}
+
+// A spin an impulse gives turns the body from the impulse on, in the step it lands in and
+// between the reference's samples: at 200 rad/s (3.3 radians per 1/60 s step) and at
+// 80 rad/s sampled every 0.1 s, the course and the reference keep every turn of 0.5 s at
+// that spin. The mean of the spins before and after the step lost half the step's turn and
+// then a whole turn.
+TEST(FinalAngle, KeepsEveryTurnOfASpinAnImpulseGives) {
+  for (const auto& [j, sample] : {std::pair{20.0, 1.0 / 60.0}, {8.0, 0.1}}) {
+    const Scene scene = kicked_ball(j, sample);
+    RunOptions options;
+    options.backends = {"course/semi-implicit-euler", "course/rk4"};
+    options.cost = false;
+    const CaseResults results = run_case(scene, Registry::load(), options);
+    const double expected = -10.0 * j * 0.5 * 180.0 / std::numbers::pi;
+    std::vector<const RunRecord*> runs = {&results.reference_run};
+    for (const RunRecord& run : results.runs) runs.push_back(&run);
+    for (const RunRecord* run : runs) {
+      ASSERT_EQ(run->status, RunStatus::Ok) << run->backend << ": " << run->reason;
+      const auto angle = run->observables.at(0).measured.value;
+      ASSERT_TRUE(angle) << run->backend << ": " << run->observables[0].measured.note;
+      EXPECT_NEAR(*angle, expected, 1e-5) << run->backend << " at " << 10.0 * j << " rad/s";
+    }
+  }
+}
+
+// Where a body's orientation ends a step more than a quarter turn away from where its spin
+// says (an orientation update that lags a fast spin), its whole turns are a guess: the
+// turn is not counted and final_angle says why, rather than a number marked ok.
+TEST(FinalAngle, AStepWhoseTurnTheSpinDoesNotTellIsSaidNotCounted) {
+  const Scene scene = kicked_ball(20.0, 1.0 / 60.0);
+  StepObserver observer(scene);
+  State state(1);
+  state[0].orientation = Quat::Identity();
+  state[0].angular_velocity = Vec3(0.0, 0.0, -200.0);
+  observer.observe(0.0, state);
+  // Spinning at -200 rad/s, the body turns by only a third of what its spin says.
+  const double h = 1.0 / 60.0, lagging = -200.0 * h / 3.0;
+  state[0].orientation = Quat(Eigen::AngleAxisd(lagging, Vec3::UnitZ()));
+  observer.observe(h, state);
+  ASSERT_TRUE(observer.trace().bodies[0].turn_unclear);
+  EXPECT_DOUBLE_EQ(*observer.trace().bodies[0].turn_unclear, h);
+  Trajectory t;
+  t.times = {0.0, h};
+  t.states = {State(1), state};
+  t.events = observer.trace();
+  const ObservableValue angle = measure_final_angle(scene, scene.observes[0], t, nullptr);
+  EXPECT_FALSE(angle.value);
+  EXPECT_NE(angle.note.find("cannot be counted"), std::string::npos) << angle.note;
 }
 
 }  // namespace
