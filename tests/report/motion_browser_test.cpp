@@ -1,5 +1,6 @@
 // The motion view plays in a real browser: headless Chromium shows it at two moments, and
 // the pixels differ where the bodies moved and nowhere else; rsvg-convert renders the still.
+// (The plots' pictures: plot_pictures_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -124,37 +125,6 @@ TEST(MotionBrowser, RsvgRendersTheStill) {
       grey_quarters += grey;
     }
   EXPECT_EQ(grey_quarters, 4);
-}
-
-TEST(PlotEdges, NoPlotDrawsAtTheEdgeOfItsPicture) {
-  if (const std::string why = test::why_no_pictures(); !why.empty()) GTEST_SKIP() << why;
-  const std::string dir = test::fresh_dir("plot_edges");
-  // Long backend names (the friction variants) and two-column plots: the cases whose labels
-  // were cut at the picture's edge.
-  for (const char* name : {"sliding_block", "drag_fall"})
-    ASSERT_EQ(test::beachball("run " + test::source_path(std::string("cases/") + name + ".toml") +
-                              " --no-cost --out " + dir + "/" + name)
-                  .exit_code,
-              0);
-  int pictures = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    if (entry.path().extension() != ".svg") continue;
-    const std::string png = entry.path().string() + ".png";
-    ASSERT_EQ(std::system(("rsvg-convert " + entry.path().string() + " -o " + png).c_str()), 0);
-    const Image image = read_png(png);
-    ASSERT_GT(image.width, 4) << entry.path();
-    ++pictures;
-    // Nothing but background within two pixels of the left and right edges: a label or a
-    // legend that runs off the picture leaves dark pixels there.
-    int inked = 0;
-    for (int y = 0; y < image.height; ++y)
-      for (int x : {0, 1, image.width - 2, image.width - 1}) {
-        const unsigned char* p = image.at(x, y);
-        if (p[3] > 0 && (p[0] < 200 || p[1] < 200 || p[2] < 200)) ++inked;
-      }
-    EXPECT_EQ(inked, 0) << entry.path() << " is drawn up to its edge";
-  }
-  EXPECT_GE(pictures, 10);
 }
 
 }  // namespace
