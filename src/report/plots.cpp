@@ -11,6 +11,7 @@
 #include "report/energy_plot.hpp"
 #include "report/gnuplot.hpp"
 #include "report/motion_view.hpp"
+#include "report/plot_layout.hpp"
 #include "report/rotation_plot.hpp"
 #include "report/stop_plot.hpp"
 #include "report/sweep_page.hpp"
@@ -131,7 +132,7 @@ std::optional<std::pair<double, double>> first_point(const Trajectory& guide, st
 /// One panel per group of bodies (body_panels.hpp), every backend over the reference. With
 /// `speed`, each body's speed against time; else its path y against x where the group moves
 /// both ways in the plane, or the coordinate that moves most against time. Bodies sharing a
-/// panel are named at the end of the reference's curve.
+/// panel are named at the end of the reference's curve. The legend has a band of its own.
 std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std::string& name,
                         bool speed) {
   const Scene& scene = *results.scene;
@@ -143,6 +144,7 @@ std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std:
   const std::vector<int> drawn = drawn_bodies(scene);
   const auto panels_of = body_panels(scene, drawn, plotted_slots(scene, drawn, runs, *guide));
   std::string data, script;
+  std::vector<LegendEntry> legend;
   int block = 0, panels = 0;
   for (const std::vector<std::size_t>& group : panels_of) {
     Vec3 range = Vec3::Zero();
@@ -160,6 +162,7 @@ std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std:
       return path ? std::pair{b.position.x(), b.position.y()} : std::pair{t, b.position[axis]};
     };
     std::string plot, labels, names;
+    std::vector<LegendEntry> titled;
     for (std::size_t g = 0; g < group.size(); ++g) {
       const std::size_t k = group[g];
       for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -177,6 +180,7 @@ std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std:
         data += "# " + runs[i]->backend + "\n" + rows + "\n\n";
         plot += (plot.empty() ? "plot " : ", \\\n     ") +
                 series_line(i, block++, runs[i]->backend, g == 0);
+        if (g == 0) titled.push_back({runs[i]->backend, series_style(i, runs[i]->backend)});
       }
       const std::string& who = scene.bodies[drawn[k]].name;
       names += (names.empty() ? "" : ", ") + who;
@@ -193,24 +197,27 @@ std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std:
     }
     // A group no run has a finite value for leaves its panel empty.
     if (plot.empty()) continue;
-    ++panels;
+    // The legend is the first panel's.
+    if (++panels == 1) legend = titled;
     const std::string y_label = speed  ? names + " speed (m/s)"
                                 : path ? names + " y (m)"
                                        : names + " " + "xyz"[axis] + " (m)";
     const std::string x_label = path ? names + " x (m)" : "t (s)";
-    script += fmt::format("unset label\n{}set xlabel {}\nset ylabel {}\n{}\nunset key\n", labels,
+    script += fmt::format("unset label\n{}set xlabel {}\nset ylabel {}\n{}\n", labels,
                           quote(x_label), quote(y_label), plot);
   }
   if (panels == 0)
     return "no run has a finite " + std::string(speed ? "velocity" : "position") + " to draw";
-  // One legend, beside the first panel; every panel keeps the same right margin to line up.
+  // One legend, in its band right of the panels (a legend of 20 entries in two columns lay
+  // over the first panel's data); every panel keeps the same right margin to line up.
   const std::string title =
       scene.name + (speed ? ": speed at report_dt" : ": where the moving bodies go, at report_dt");
+  const LegendBand band = legend_band(legend, 40);
+  const int height = std::max(80 + 280 * panels, band.height + 40);
   const std::string layout = fmt::format(
-      "set multiplot layout {},1 title {}\nset grid\nset rmargin at screen 0.70\n"
-      "set key at screen 0.99, screen 0.92 right top maxrows 20 samplen 2 font \",10\"\n",
-      panels, quote(title));
-  return draw(layout + script + "unset multiplot\n", data, batch, name, 80 + 280 * panels);
+      "set multiplot layout {},1 title {}\nset grid\nunset key\nset rmargin at screen {:.4f}\n",
+      panels, quote(title), band.panels_right);
+  return draw(layout + script + band.plot(height) + "unset multiplot\n", data, batch, name, height);
 }
 
 /// Each backend's largest position distance from the reference over the bodies, against

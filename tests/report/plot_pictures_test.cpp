@@ -1,6 +1,6 @@
 // The plots as a reader sees them, on a projector: rendered by rsvg-convert, nothing is
 // drawn at the picture's edge (a label or legend cut off); read from the SVG, each panel's
-// name stays within its column.
+// name stays within its column and no legend entry sits over a panel's data.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -94,6 +94,35 @@ TEST(PlotEdges, TheSweepsPanelsAreNamedWithinTheirColumn) {
       }
   }
   EXPECT_GE(named, static_cast<int>(layout.panels.size()));
+}
+
+// The legend has a band of its own: for a case with many backends (ball_in_box: twelve
+// course variants and every engine) no entry of any plot's legend lies over a panel's
+// plotting area. Its trajectory's two-column legend sat over the first panel's data.
+TEST(PlotLegend, NoLegendEntryLiesOverAPanel) {
+  const std::string dir = test::fresh_dir("plot_legend");
+  run_bundled(dir, "ball_in_box", "1/60");
+  run_bundled(dir, "wind_panel", "1/60");
+  int plots = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.path().extension() != ".svg" ||
+        entry.path().filename().string().find("motion") != std::string::npos)
+      continue;
+    const test::GnuplotLayout layout = test::gnuplot_layout(text_of(entry.path()));
+    ASSERT_FALSE(layout.panels.empty()) << entry.path();
+    ASSERT_FALSE(layout.legend.empty()) << entry.path();
+    ++plots;
+    for (const auto& e : layout.legend)
+      for (const test::Box& p : layout.panels)
+        EXPECT_FALSE(e.box.overlaps(p))
+            << entry.path().filename() << ": the legend's " << e.title << " at [" << e.box.x0
+            << ", " << e.box.x1 << "] x [" << e.box.y0 << ", " << e.box.y1
+            << "] lies over the panel [" << p.x0 << ", " << p.x1 << "] x [" << p.y0 << ", " << p.y1
+            << "]";
+  }
+  EXPECT_GE(plots, 5);
+  const std::string trajectory = text_of(dir + "/ball_in_box/ball_in_box-trajectory.svg");
+  EXPECT_GE(test::gnuplot_layout(trajectory).legend.size(), 20u);
 }
 
 }  // namespace
