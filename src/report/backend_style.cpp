@@ -9,25 +9,32 @@ namespace bb {
 
 namespace {
 
-/// The colours of the backends every report knows by name.
+/// The colours of every backend the course and the engine catalogue name. Every two
+/// colours that can share a plot (these, the reference's black and the course variants'
+/// shades below) are at least 20 apart in CIELAB (CIE76 delta E; 2.3 is a just noticeable
+/// difference, and lines on a projector need far more), and none is lighter than L* 76, so
+/// each stands out on white (tests/report/backend_style_test.cpp).
 constexpr std::pair<const char*, const char*> kNamed[] = {
     {"reference", "#000000"},
-    {"course/explicit-euler", "#d62728"},
-    {"course/semi-implicit-euler", "#ff7f0e"},
-    {"course/velocity-verlet", "#2ca02c"},
-    {"course/rk4", "#1f77b4"},
-    {"bullet", "#9467bd"},
-    {"bullet-float", "#e377c2"},
-    {"bullet/force", "#8c564b"},
-    {"bullet-softbody", "#c49c94"},
-    {"box2d", "#17becf"},
-    {"box2d/force", "#0b6e7a"},
-    {"ode", "#7f7f7f"},
-    {"ode/force", "#bcbd22"},
-    {"mujoco", "#393b79"},
+    {"course/explicit-euler", "#d32326"},
+    {"course/semi-implicit-euler", "#f37400"},
+    {"course/velocity-verlet", "#2ba02c"},
+    {"course/rk4", "#0b76b2"},
+    {"bullet", "#9367bd"},
+    {"bullet-float", "#e476c2"},
+    {"bullet/force", "#8a564b"},
+    {"bullet-softbody", "#c39b93"},
+    {"box2d", "#00c0cf"},
+    {"box2d/force", "#006d79"},
+    {"ode", "#797e81"},
+    {"ode/force", "#bebe22"},
+    {"mujoco", "#393a78"},
+    {"mujoco/rk4", "#87a3eb"},
+    {"mujoco/implicit", "#657b3a"},
 };
 
-/// For a name no one has listed: one of these, by a hash of the name.
+/// For a name no one has listed (an engine added without a colour): one of these, by a
+/// hash of the name.
 constexpr const char* kSpare[] = {"#637939", "#8c6d31", "#843c39", "#7b4173",
                                   "#3182bd", "#e6550d", "#31a354", "#756bb1"};
 
@@ -44,12 +51,17 @@ std::string shade(const std::string& hex, double amount) {
   return out;
 }
 
-/// A course variant's shade: the ground and friction rules each move it a fixed way.
+/// How far a course variant's shade moves towards white (lighter) and towards black.
+constexpr double kLighter = 0.37, kDarker = -0.53;
+
+/// A course variant's shade: of the choices of each rule a case can compare, one keeps the
+/// integrator's colour, one is lighter and one darker, so the three variants of one
+/// integrator stay apart from each other and from every other backend's colour.
 double variant_shade(const std::string& suffix) {
   constexpr std::pair<const char*, double> kVariants[] = {
-      {"+reflect", -0.35},  {"+clamp", 0.35},      {"+mirror", 0.0},  {"+naive", -0.45},
-      {"+low-speed", 0.5},  {"+seed-plank", -0.3}, {"+impulse", 0.3}, {"+free", 0.0},
-      {"+kinematic", -0.3}, {"+shared", 0.4}};
+      {"+reflect", kDarker},   {"+clamp", kLighter}, {"+mirror", 0.0},       {"+naive", kDarker},
+      {"+low-speed", 0.0},     {"+seed-plank", 0.0}, {"+impulse", kLighter}, {"+free", 0.0},
+      {"+kinematic", kDarker}, {"+shared", kLighter}};
   double amount = 0.0;
   for (const auto& [name, move] : kVariants)
     if (suffix.find(name) != std::string::npos) amount += move;
@@ -66,7 +78,7 @@ BackendStyle backend_style(const std::string& backend) {
   const std::size_t plus = backend.find('+');
   const std::string base = backend.substr(0, plus);
   for (const auto& [name, colour] : kNamed)
-    if (base == name) style.colour = colour;
+    if (base == name) style.colour = colour, style.named = true;
   if (style.colour.empty())
     style.colour = kSpare[std::hash<std::string>{}(base) % (sizeof kSpare / sizeof kSpare[0])];
   if (plus != std::string::npos)

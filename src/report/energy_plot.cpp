@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "report/gnuplot.hpp"
+#include "report/plot_layout.hpp"
 
 namespace bb {
 
@@ -19,8 +20,7 @@ namespace {
 /// are clipped, and named with the most they reach.
 struct EnergyWindow {
   double low = 0.0, high = 0.0;
-  std::string clipped;  ///< "course/explicit-euler (reaches 2.65e+04 J)", or "" for none
-  int count = 0;        ///< how many runs are clipped
+  std::vector<std::string> clipped;  ///< "course/explicit-euler (reaches 2.65e+04 J)", ...
 };
 
 constexpr double kOffScale = 20.0;
@@ -47,22 +47,18 @@ std::optional<EnergyWindow> energy_window(const std::vector<const RunRecord*>& r
   std::sort(sorted.begin(), sorted.end());
   const double typical = sorted[sorted.size() / 2];
   const double limit = kOffScale * std::max({typical, std::abs(*start), 1e-12});
-  EnergyWindow w{1e300, -1e300, "", 0};
+  EnergyWindow w{1e300, -1e300, {}};
   for (const RunRecord* r : runs) {
     const auto [lo, hi] = finite_range(r->energy);
     if (lo > hi) continue;
     if (std::max(std::abs(lo - *start), std::abs(hi - *start)) > limit) {
       const double most = std::abs(hi - *start) >= std::abs(lo - *start) ? hi : lo;
-      // Three are named; the rest counted, so the line fits above the plot.
-      if (++w.count <= 3)
-        w.clipped +=
-            fmt::format("{}{} (reaches {:.3g} J)", w.clipped.empty() ? "" : ", ", r->backend, most);
+      w.clipped.push_back(fmt::format("{} (reaches {:.3g} J)", r->backend, most));
     } else {
       w.low = std::min(w.low, lo), w.high = std::max(w.high, hi);
     }
   }
   if (w.clipped.empty() || w.low > w.high) return std::nullopt;
-  if (w.count > 3) w.clipped += fmt::format(" and {} more", w.count - 3);
   const double pad = 0.08 * std::max(w.high - w.low, 1e-9 * std::max(1.0, std::abs(*start)));
   w.low -= pad, w.high += pad;
   return w;
@@ -84,20 +80,23 @@ std::string energy_plot(const CaseResults& results, FileBatch& batch, const std:
     plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block++, run.backend);
   }
   if (plot.empty()) return "no run has a finite energy to draw";
-  // A run far off the others' scale is cut at the window's edge; the title's second line
-  // says which, and how far it goes.
-  std::string window, title = quote(scene.name + ": energy at report_dt");
+  // A run far off the others' scale is cut at the window's edge; the title's next lines say
+  // which, and how far each goes, wrapped to the width of the plot (the title is centred
+  // over it: a line wider than the plot ran off the picture's left edge).
+  std::vector<std::string> title = {scene.name + ": energy at report_dt"};
+  std::string window;
   if (const auto w = energy_window(runs)) {
     window = fmt::format("set yrange [{:.9g}:{:.9g}]\n", w->low, w->high);
-    title.pop_back();
-    title += "\\n" + quote("off this scale, cut at its edge: " + w->clipped).substr(1);
+    for (const std::string& line :
+         wrapped_items("off this scale, cut at its edge:", w->clipped, 0.7 * kPlotWidth, 12.0))
+      title.push_back(line);
   }
   const std::string parts = scene.springs.empty() ? "kinetic + rotational + gravitational"
                                                   : "kinetic + rotational + gravitational + spring";
   const std::string script = fmt::format(
       "set grid\nset key outside right top\nset xlabel \"t (s)\"\n"
       "set ylabel {}\nset title {}\n{}{}\n",
-      quote("total energy (J): " + parts), title, window, plot);
+      quote("total energy (J): " + parts), quote_lines(title), window, plot);
   return draw(script, data, batch, name);
 }
 

@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "report/backend_style.hpp"
+#include "report/plot_layout.hpp"
 
 namespace bb {
 
@@ -37,7 +38,8 @@ namespace {
 
 std::string terminal(int height) {
   return fmt::format(
-      "set terminal svg size 960,{} noenhanced font \"sans,12\" background \"white\"\n", height);
+      "set terminal svg size {},{} noenhanced font \"sans,12\" background \"white\"\n", kPlotWidth,
+      height);
 }
 
 }  // namespace
@@ -160,17 +162,18 @@ std::vector<const RunRecord*> report_runs(const CaseResults& results) {
   return out;
 }
 
-std::string series_line(std::size_t i, int block, const std::string& backend, bool titled) {
+std::string series_style(std::size_t i, const std::string& backend) {
   // One colour per backend on every plot of the report; the reference thick and black,
   // the course methods solid, the engines dashed (backend_style.hpp).
   const BackendStyle style = backend_style(backend);
-  if (style.kind == LineKind::Reference)
-    return fmt::format("data index {} using 1:2 with lines lw 4 lc rgb \"black\" {}", block,
-                       titled ? "title " + quote(backend) : "notitle");
-  return fmt::format(
-      "data index {} using 1:2 with linespoints lw 1.5 dt {} pt {} ps 0.6 pi 6 lc rgb \"{}\" {}",
-      block, style.kind == LineKind::Engine ? 2 : 1, i % 13, style.colour,
-      titled ? "title " + quote(backend) : "notitle");
+  if (style.kind == LineKind::Reference) return "with lines lw 4 lc rgb \"black\"";
+  return fmt::format("with linespoints lw 1.5 dt {} pt {} ps 0.6 pi 6 lc rgb \"{}\"",
+                     style.kind == LineKind::Engine ? 2 : 1, i % 13, style.colour);
+}
+
+std::string series_line(std::size_t i, int block, const std::string& backend, bool titled) {
+  return fmt::format("data index {} using 1:2 {} {}", block, series_style(i, backend),
+                     titled ? "title " + quote(backend) : "notitle");
 }
 
 std::string series_rows(const std::vector<double>& times, const std::vector<double>& values) {
@@ -220,30 +223,46 @@ void TwoColumnPlot::add(bool right, std::size_t i, const std::string& backend,
   data_ += "# " + backend + "\n" + rows + "\n\n";
   std::string& plot = right ? right_ : left_;
   plot += (plot.empty() ? "plot " : ", \\\n     ") + series_line(i, block_++, backend);
+  if (!right) left_titles_.push_back({backend, series_style(i, backend)});
 }
 
 void TwoColumnPlot::end_row(const std::string& left_label, const std::string& right_label) {
   if (!left_.empty() && !right_.empty()) {
-    // Fixed margins put the columns side by side; the legend goes with the first panel.
-    rows_script_ += fmt::format(
-        "set lmargin at screen 0.09\nset rmargin at screen 0.40\nset xlabel {}\n"
-        "set ylabel {}\n{}\nunset key\n"
-        "set lmargin at screen 0.49\nset rmargin at screen 0.79\nset ylabel {}\n{}\n",
-        quote(x_label_), quote(left_label), left_, quote(right_label), right_);
-    ++rows_;
+    // The legend is the first row's left panel's.
+    if (rows_.empty()) legend_ = left_titles_;
+    rows_.push_back({left_label, right_label, left_, right_});
   }
   left_.clear();
   right_.clear();
+  left_titles_.clear();
 }
 
 std::string TwoColumnPlot::draw_into(FileBatch& batch, const std::string& name) const {
-  if (rows_ == 0) return "no run at report_dt has states to draw";
-  const std::string script = fmt::format(
-      "set multiplot layout {},2 title {}\nset grid\n"
-      "set key at screen 0.99, screen 0.94 right top maxrows 20 samplen 2 font \",9\"\n{}"
-      "unset multiplot\n",
-      rows_, quote(title_), rows_script_);
-  return draw(script, data_, batch, name, 80 + 260 * rows_);
+  if (rows_.empty()) return "no run at report_dt has states to draw";
+  // The columns share what the legend's band leaves: each panel's tic labels left of it, its
+  // name above it (wrapped to its width: a long name on the side of a panel ran into the
+  // next row and the other column).
+  const LegendBand band = legend_band(legend_, 40);
+  constexpr double kLeft = 0.08, kGap = 0.09, kNameFont = 11.0;
+  const double width = (band.panels_right - kLeft - kGap) / 2.0;
+  const double right_left = kLeft + width + kGap;
+  const auto panel_name = [&](const std::string& label) {
+    return quote_lines(wrapped(label, width * kPlotWidth, kNameFont));
+  };
+  const int height = std::max(80 + 260 * static_cast<int>(rows_.size()), band.height + 60);
+  std::string script;
+  for (const Row& row : rows_)
+    script += fmt::format(
+        "set lmargin at screen {:.4f}\nset rmargin at screen {:.4f}\nset xlabel {}\n"
+        "set title {} font \",{}\"\n{}\n"
+        "set lmargin at screen {:.4f}\nset rmargin at screen {:.4f}\nset title {} font "
+        "\",{}\"\n{}\n",
+        kLeft, kLeft + width, quote(x_label_), panel_name(row.left_label), kNameFont, row.left,
+        right_left, band.panels_right, panel_name(row.right_label), kNameFont, row.right);
+  const std::string page = fmt::format(
+      "set multiplot layout {},2 title {}\nset grid\nunset key\n{}{}unset multiplot\n",
+      rows_.size(), quote_lines(wrapped(title_, kPlotWidth - 60, 12.0)), script, band.plot(height));
+  return draw(page, data_, batch, name, height);
 }
 
 }  // namespace bb

@@ -9,6 +9,7 @@
 
 #include "files/file_batch.hpp"
 #include "files/result_cache.hpp"
+#include "report/plot_layout.hpp"
 #include "run/results.hpp"
 
 namespace bb {
@@ -42,6 +43,9 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
                  const std::string& name, int height = 600);
 /// Runs at report_dt that produced samples, the reference first.
 std::vector<const RunRecord*> report_runs(const CaseResults& results);
+/// How series `i` of `backend` is drawn, in the backend's own style (backend_style.hpp):
+/// gnuplot's "with ..." clause.
+std::string series_style(std::size_t i, const std::string& backend);
 /// The plot clause of series `i` of `backend` in data block `block`, drawn in the backend's
 /// own style (backend_style.hpp); `titled` false leaves it out of the legend (a second body
 /// of the same backend on a shared panel).
@@ -53,7 +57,8 @@ std::string series_rows(const std::vector<double>& times, const std::vector<doub
 std::vector<std::size_t> thinned(const std::vector<double>& values, std::size_t max_points);
 
 /// A page of rows of two panels against time, every run in each panel with the reference
-/// first (thick and black), one legend right of both columns.
+/// first (thick and black), each panel named above it, one legend in a band of its own
+/// right of both columns (plot_layout.hpp).
 class TwoColumnPlot {
  public:
   /// `x_label` names the horizontal axis of every panel.
@@ -62,14 +67,20 @@ class TwoColumnPlot {
   /// Adds run `i` (its place among report_runs) to the current row's left or right panel.
   void add(bool right, std::size_t i, const std::string& backend, const std::vector<double>& times,
            const std::vector<double>& values);
-  /// Ends the current row, its panels labelled on y; a row without series is left out.
+  /// Ends the current row, its panels named `left_label` and `right_label`; a row without
+  /// series is left out.
   void end_row(const std::string& left_label, const std::string& right_label);
   /// Draws the rows as `name` into `batch`; returns why there is nothing to draw, else "".
   std::string draw_into(FileBatch& batch, const std::string& name) const;
 
  private:
-  std::string title_, x_label_, data_, rows_script_, left_, right_;
-  int block_ = 0, rows_ = 0;
+  struct Row {
+    std::string left_label, right_label, left, right;
+  };
+  std::string title_, x_label_, data_, left_, right_;
+  std::vector<LegendEntry> legend_, left_titles_;
+  std::vector<Row> rows_;
+  int block_ = 0;
 };
 
 }  // namespace bb

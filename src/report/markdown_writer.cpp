@@ -164,12 +164,18 @@ std::string stop_and_rotation_sections(const CaseResults& results, const PlotFil
 std::string claims_section(const CaseResults& results, const PlotFiles& plots) {
   std::string out;
   const Table claims = case_claims_table(results);
-  if (!claims.rows.empty())
+  // Every page has the section: a case without claims says so, so that a reader looking for
+  // the claims finds that there are none rather than wondering where they went.
+  if (claims.rows.empty())
+    out +=
+        "\n## Claims\n\nNo claim of the course text is tested on this case; the [claims "
+        "ledger](claims.md) lists the claims every case of a report tests.\n";
+  else
     out +=
         "\n## Claims\n\nThe sentences of the course text this case checks, each with the "
         "words it quotes (or marked as the case's own), and every backend's verdict over the dt "
-        "sweep with the two numbers compared at report_dt; a report's claims ledger has every "
-        "case's.\n\n" +
+        "sweep with the two numbers compared at report_dt; a report's [claims "
+        "ledger](claims.md) has every case's.\n\n" +
         render_markdown(claims);
 
   out += sweep_markdown(results, plots.sweep);

@@ -44,4 +44,8 @@ std::string legend_svg(const std::vector<const RunRecord*>& runs, double x, doub
   return out;
 }
 
+double legend_bottom(std::size_t runs, double y) {
+  return y + 20.0 * static_cast<double>(runs) + 5.0;
+}
+
 }  // namespace bb::motion

@@ -22,5 +22,7 @@ std::string run_label(const RunRecord& run);
 
 /// A legend entry per run, from (x, y).
 std::string legend_svg(const std::vector<const RunRecord*>& runs, double x, double y);
+/// The lowest point legend_svg draws for `runs` entries from y (the last line's descent).
+double legend_bottom(std::size_t runs, double y);
 
 }  // namespace bb::motion

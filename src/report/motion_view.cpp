@@ -245,7 +245,10 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
     bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
   }
   const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
-  const double height = bottom + kTimeBarHeight;
+  // Tall enough for the legend too: a long one ran off the picture's bottom.
+  const double height =
+      std::max(bottom + kTimeBarHeight,
+               multiples ? 0.0 : motion::legend_bottom(runs.size(), kTitleHeight + 14.0) + kMargin);
   const std::string speed =
       play == total ? "real time" : fmt::format("{:.2g} x real time", total / play);
   std::string svg = header(width, height,
@@ -315,8 +318,11 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
     bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
   }
   const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
+  const double height =
+      std::max(bottom + kMargin,
+               multiples ? 0.0 : motion::legend_bottom(runs.size(), kTitleHeight + 14.0) + kMargin);
   std::string svg =
-      header(width, bottom + kMargin,
+      header(width, height,
              fmt::format("{}: the scene at {} instants, report_dt = {} s", escape_xml(scene.name),
                          instants.size(), format_dt(scene.report_dt)),
              reference_note(runs, multiples));

@@ -126,5 +126,25 @@ TEST(ClaimsPage, TheCasePageShowsItsClaimsWithQuotesAndVerdicts) {
   EXPECT_NE(claims.find("reference: **holds** (8 &lt; 9.81)"), std::string::npos) << claims;
 }
 
+// Every case page has a Claims section: one whose case tests no claim says so in one line
+// and links the ledger (the 18 bundled cases without claims had no section at all).
+TEST(ClaimsPage, ACasePageWithoutClaimsSaysSoAndLinksTheLedger) {
+  static Scene scene;
+  scene = test::scene_from(test::minimal_case("quiet"));
+  ASSERT_TRUE(scene.claims.empty());
+  CaseResults results;
+  results.scene = &scene;
+  results.reference_run.backend = "reference";
+  const std::string page = results_markdown(results, PlotFiles{});
+  const std::size_t section = page.find("\n## Claims\n\n");
+  ASSERT_NE(section, std::string::npos) << page;
+  const std::string body = page.substr(section + 12, page.find('\n', section + 12) - section - 12);
+  EXPECT_NE(body.find("No claim of the course text is tested on this case"), std::string::npos)
+      << body;
+  EXPECT_NE(body.find("](claims.md)"), std::string::npos) << body;
+  // One line, then the next section.
+  EXPECT_EQ(page.compare(section + 12 + body.size(), 4, "\n\n##"), 0) << page.substr(section);
+}
+
 }  // namespace
 }  // namespace bb

@@ -1,13 +1,14 @@
 // The motion view plays in a real browser: headless Chromium shows it at two moments, and
 // the pixels differ where the bodies moved and nowhere else; rsvg-convert renders the still.
+// (The plots' pictures: plot_pictures_test.cpp.)
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "support/picture_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 
@@ -15,26 +16,8 @@ namespace bb {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// An RGBA image, or empty when the file could not be read.
-struct Image {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgba;
-  const unsigned char* at(int x, int y) const { return &rgba[4 * (y * width + x)]; }
-};
-
-Image read_png(const std::string& path) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  Image out;
-  if (!png_image_begin_read_from_file(&image, path.c_str())) return out;
-  image.format = PNG_FORMAT_RGBA;
-  out.rgba.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, out.rgba.data(), 0, nullptr)) return {};
-  out.width = static_cast<int>(image.width);
-  out.height = static_cast<int>(image.height);
-  return out;
-}
+using test::Image;
+using test::read_png;
 
 /// Pixels that differ between `a` and `b` inside [x0, x1) x [y0, y1).
 int differing(const Image& a, const Image& b, int x0, int y0, int x1, int y1) {
@@ -94,7 +77,9 @@ fixed = true
 
 TEST(MotionBrowser, TheViewMovesInChromiumWhereTheBallIsAndNowhereElse) {
   const std::string browser = chromium();
-  if (browser.empty()) GTEST_SKIP() << "Chromium is not installed (scripts/setup installs it)";
+  if (browser.empty())
+    GTEST_SKIP() << "Chromium is not installed (scripts/setup --tests installs it)";
+  if (const std::string why = test::why_no_pictures(); !why.empty()) GTEST_SKIP() << why;
   const std::string dir = test::fresh_dir("motion_browser");
   const std::string path = test::write_case(dir, "bounce.toml", kBounce);
   const test::Outcome o = test::beachball(
@@ -115,8 +100,7 @@ TEST(MotionBrowser, TheViewMovesInChromiumWhereTheBallIsAndNowhereElse) {
 }
 
 TEST(MotionBrowser, RsvgRendersTheStill) {
-  if (std::system("rsvg-convert --version > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "rsvg-convert is not installed (scripts/setup installs librsvg2-bin)";
+  if (const std::string why = test::why_no_pictures(); !why.empty()) GTEST_SKIP() << why;
   const std::string dir = test::fresh_dir("motion_still");
   const std::string path = test::write_case(dir, "bounce.toml", kBounce);
   ASSERT_EQ(test::beachball("run " + path + " --no-cost --backends reference --out " + dir + "/out")
@@ -141,38 +125,6 @@ TEST(MotionBrowser, RsvgRendersTheStill) {
       grey_quarters += grey;
     }
   EXPECT_EQ(grey_quarters, 4);
-}
-
-TEST(PlotEdges, NoPlotDrawsAtTheEdgeOfItsPicture) {
-  if (std::system("rsvg-convert --version > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "rsvg-convert is not installed (scripts/setup installs librsvg2-bin)";
-  const std::string dir = test::fresh_dir("plot_edges");
-  // Long backend names (the friction variants) and two-column plots: the cases whose labels
-  // were cut at the picture's edge.
-  for (const char* name : {"sliding_block", "drag_fall"})
-    ASSERT_EQ(test::beachball("run " + test::source_path(std::string("cases/") + name + ".toml") +
-                              " --no-cost --out " + dir + "/" + name)
-                  .exit_code,
-              0);
-  int pictures = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    if (entry.path().extension() != ".svg") continue;
-    const std::string png = entry.path().string() + ".png";
-    ASSERT_EQ(std::system(("rsvg-convert " + entry.path().string() + " -o " + png).c_str()), 0);
-    const Image image = read_png(png);
-    ASSERT_GT(image.width, 4) << entry.path();
-    ++pictures;
-    // Nothing but background within two pixels of the left and right edges: a label or a
-    // legend that runs off the picture leaves dark pixels there.
-    int inked = 0;
-    for (int y = 0; y < image.height; ++y)
-      for (int x : {0, 1, image.width - 2, image.width - 1}) {
-        const unsigned char* p = image.at(x, y);
-        if (p[3] > 0 && (p[0] < 200 || p[1] < 200 || p[2] < 200)) ++inked;
-      }
-    EXPECT_EQ(inked, 0) << entry.path() << " is drawn up to its edge";
-  }
-  EXPECT_GE(pictures, 10);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "files/file_batch.hpp"
 #include "report/gnuplot.hpp"
+#include "support/picture_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 
@@ -257,6 +258,36 @@ TEST(Plots, AnExplodingRunIsCutAtTheEnergyAxisAndNamed) {
       EXPECT_NE(energy.find("course/explicit-euler (reaches", cut), std::string::npos);
       EXPECT_EQ(energy.find("course/rk4 (reaches", cut), std::string::npos);
       EXPECT_NE(energy.find("gravitational + spring"), std::string::npos);
+    }
+  }
+}
+
+// The trajectories too: explicit Euler's exploding spring set the axes (thousands of
+// metres on the spring grids), so every other run collapsed into a dot. The axes come from
+// the reference and the runs near it; the run that leaves is cut at the axis and named.
+TEST(Plots, AnExplodingRunIsCutAtTheTrajectoryAxesAndNamed) {
+  for (const bool explode : {false, true}) {
+    const std::string dir = test::fresh_dir(explode ? "path_cut" : "path_whole");
+    const std::string path = test::write_case(dir, "pair.toml", falling_pair(false, explode));
+    const test::Outcome o = test::beachball(
+        "run " + path + " --no-cost --backends reference,course/explicit-euler,course/rk4 --out " +
+        dir + "/out");
+    ASSERT_EQ(o.exit_code, 0) << o.out;
+    const std::string trajectory = svg_of(dir + "/out/pair-trajectory.svg");
+    ASSERT_FALSE(trajectory.empty());
+    const std::size_t cut = trajectory.find("off this scale, cut at its edge: ");
+    EXPECT_EQ(cut != std::string::npos, explode) << trajectory.substr(0, 3000);
+    if (!explode) continue;
+    EXPECT_NE(trajectory.find("course/explicit-euler (reaches", cut), std::string::npos);
+    EXPECT_EQ(trajectory.find("course/rk4 (reaches", cut), std::string::npos);
+    // Every axis spans what the reference does, give or take: the balls fall 100 m, the
+    // bob swings by a metre; no tic reads thousands.
+    for (const test::SvgText& t : test::svg_texts(trajectory)) {
+      const bool tic = t.anchor == "end" && !t.turned &&
+                       t.text.find_first_not_of(" -.0123456789e+") == std::string::npos;
+      if (tic) {
+        EXPECT_LE(std::abs(std::stod(t.text)), 200.0) << "a tic at " << t.text;
+      }
     }
   }
 }
