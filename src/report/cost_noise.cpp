@@ -78,6 +78,11 @@ std::string cost_ns_cell(const std::optional<Cost>& cost) {
          format_ns(cost ? std::optional<double>(cost->ns_per_step) : std::nullopt);
 }
 
+std::string cost_spread_cell(const std::optional<Cost>& cost) {
+  if (!cost) return "-";
+  return format_ns(cost->ns_per_step_min) + "-" + format_ns(cost->ns_per_step_max);
+}
+
 std::string cost_seconds_cell(const std::optional<Cost>& cost) {
   return busy_mark(cost) +
          format_value(cost ? std::optional<double>(cost->seconds_per_simulated_second)

@@ -32,6 +32,9 @@ KeptCosts kept_costs(const std::vector<CaseResults>& all);
 /// else "".
 std::string kept_costs_note(const std::vector<CaseResults>& all);
 
+/// The fastest and the slowest repeat of a run's cost, ns per step ("252894-261257").
+std::string cost_spread_cell(const std::optional<Cost>& cost);
+
 /// A cost cell in ns per step: the median, "~" in front when timed on a busy machine.
 std::string cost_ns_cell(const std::optional<Cost>& cost);
 /// The same in seconds of computing per simulated second.

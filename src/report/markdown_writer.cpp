@@ -268,7 +268,8 @@ std::string reference_section(const CaseResults& results) {
   out += fmt::format(
       "- cost: time spent in step() only, in a serial pass after the accuracy runs; each run "
       "is repeated until the timed total reaches a minimum and the median is reported (the "
-      "JSON gives the fastest and slowest repeat beside it); a median more than {:g} times "
+      "Every dt table and the JSON give the fastest and slowest repeat beside it); a median more "
+      "than {:g} times "
       "the fastest repeat, over three repeats or more, says the machine was busy while that "
       "run was timed, and its cost is marked ~\n",
       kBusyMedianOverMin);

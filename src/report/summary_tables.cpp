@@ -98,7 +98,8 @@ Table sweep_table(const CaseResults& results) {
   t.headers = {"backend", "dt s", "status", "steps", "pos max m", "vel max m/s", "energy max"};
   // Each observable at every dt: a claim that holds at one step and fails at another shows here.
   for (const Observe& o : results.scene->observes) t.headers.push_back(o.name);
-  for (const char* h : {"ns/step", "s per sim s"}) t.headers.push_back(h);
+  for (const char* h : {"ns/step", "ns/step fastest-slowest", "s per sim s"})
+    t.headers.push_back(h);
   t.right_aligned.assign(t.headers.size(), true);
   t.right_aligned[0] = t.right_aligned[2] = false;
   for (const RunRecord& run : results.runs) {
@@ -113,6 +114,7 @@ Table sweep_table(const CaseResults& results) {
     for (const Observe& o : results.scene->observes)
       row.push_back(observable_cell(run, o.name, false));
     row.push_back(cost_ns_cell(run.cost));
+    row.push_back(cost_spread_cell(run.cost));
     row.push_back(cost_seconds_cell(run.cost));
     t.rows.push_back(row);
   }

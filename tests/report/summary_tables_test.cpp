@@ -85,6 +85,9 @@ TEST(CostNoise, AMedianFarAboveTheFastestRepeatIsMarkedAndWarnedAbout) {
   EXPECT_EQ(t.rows[0][c], "100");
   EXPECT_EQ(t.rows[1][c], "~100");
   EXPECT_EQ(t.rows[2][c], "100");  // two repeats have no spread to read
+  // The fastest and the slowest repeat beside the median.
+  EXPECT_EQ(t.headers[c + 1], "ns/step fastest-slowest");
+  EXPECT_EQ(t.rows[1][c + 1], "40-300");
   const CostNoise noise = cost_noise(results);
   EXPECT_EQ(noise.judged, 2);
   EXPECT_EQ(noise.busy, 1);
