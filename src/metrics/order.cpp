@@ -147,6 +147,15 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
     fit.reason = short_run_reason(fit, in_run, points[start].dt, slopes, disagreeing);
     return fit;
   }
+  // Two local slopes cannot tell an order from a drift (1.19 then 1.32 on the way from 1.7
+  // down to 1): they must agree to a tenth of their size.
+  if (slopes.size() == 2 && std::abs(slopes[1] - slopes[0]) >
+                                kTwoSlopeAgreement * 0.5 * std::abs(slopes[0] + slopes[1])) {
+    fit.reason = "not asymptotic: only two local slopes in range, " +
+                 significant_digits(slopes[0]) + " then " + significant_digits(slopes[1]) +
+                 ", and they differ by more than a tenth: too few to tell an order from a drift";
+    return fit;
+  }
   const double fitted = least_squares_slope(points, start, end);
   // An error that does not shrink with dt is held by something other than the step.
   if (fitted < kSmallestOrder) {

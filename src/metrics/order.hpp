@@ -38,6 +38,9 @@ inline constexpr double kSaturationFraction = 0.1;
 
 /// A fitted slope below this is no order: the error is held by something other than the step.
 inline constexpr double kSmallestOrder = 0.5;
+/// A fit over three points (two local slopes) needs the two to agree within this fraction of
+/// their mean: two cannot show whether the slopes are settling or drifting.
+inline constexpr double kTwoSlopeAgreement = 0.1;
 
 /// Local slopes of neighbouring points agree when they lie within this much of each other:
 /// 0.25, or 15 percent of their mean, whichever is larger.
