@@ -110,7 +110,7 @@ TEST(Cli, BadInputExitsTwoNamingFileAndLineAndWritesNothing) {
   const Outcome o = beachball("run " + good + " " + bad + " --out " + out);
   EXPECT_EQ(o.exit_code, 2);
   EXPECT_NE(o.out.find(bad + ":" + std::to_string(line) +
-                       ": 'mass' in [[body]] 'ball' must be greater than 0"),
+                       ": 'mass' in [[body]] 'ball' must be between 1e-09 and 1e+09, not -2"),
             std::string::npos)
       << o.out;
   EXPECT_FALSE(fs::exists(out));
