@@ -112,7 +112,7 @@ GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
   const int all = static_cast<int>(whole.level.size());
   if (all < 4) return {};
   const double last = whole.level.back();
-  if (!(last > 1e-3 * whole.scale)) return {};
+  if (!(last > kGrowthNoise * whole.scale)) return {};
 
   if (auto verdict = early_verdict(whole)) return *verdict;
   const EnergyHistory h = from_rise(whole);

@@ -140,9 +140,19 @@ TEST(EnergyGrowth, TooFewStepsAreJudgedOnARunawayAlone) {
 
 TEST(EnergyGrowth, ARiseWithinNoiseSaysNothing) {
   const GrowthVerdict v =
-      judge_growth(history([](double t) { return 1e-4 * std::exp(8 * t); }, 1e3), 1.02);
+      judge_growth(history([](double t) { return 1e-10 * std::exp(8 * t); }, 1e3), 1.02);
   EXPECT_EQ(v.growth, Growth::Bounded);
   EXPECT_TRUE(v.reason.empty()) << v.reason;
+}
+
+// A hanging chain's explicit Euler: its swing compounds from 0.4 J to 3.6 J while the
+// scene's scale, its weight over the whole fall it could make, is 3600 J. A thousandth of
+// the scale hid it as noise; it compounds.
+TEST(EnergyGrowth, ASwingCompoundingFarBelowTheScaleCompounds) {
+  const GrowthVerdict v =
+      judge_growth(history([](double t) { return 0.1 * std::exp(3.6 * t); }, 3600.0), 1.02);
+  EXPECT_EQ(v.growth, Growth::Compounds) << v.reason;
+  EXPECT_FALSE(v.stable);
 }
 
 // Energy kept exactly for the first half, then drifting: the quarters with no rise to start
