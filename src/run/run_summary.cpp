@@ -29,6 +29,8 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& agains
     // run already measured in its child has its own value, not its states, to give.
     if (const auto formula = formula_value(scene, o))
       r.reference = formula;
+    else if (&against == &run && run.backend != "reference")
+      r.reference = std::nullopt;
     else if (against.status == RunStatus::Ok && against.summarised)
       r.reference = measured_value(against, o.name);
     else if (against.status == RunStatus::Ok)

@@ -14,7 +14,9 @@ namespace bb {
 inline constexpr std::size_t kPlottedBodies = 6;
 
 /// Each observable of the scene on `run`, with its reference value: the formula's where
-/// the kind has one, else `against`'s (when that run is ok).
+/// the kind has one, else `against`'s (when that run is ok). A backend's run that is its
+/// own `against` (the fallback's finest) has none: a difference from itself says nothing.
+/// The reference's own run keeps its value there, as the JSON has always given it.
 void add_observables(const Scene& scene, RunRecord& run, const RunRecord& against);
 
 /// run.energy (total energy at every sample) and, when `reference` has states,

@@ -122,6 +122,26 @@ TEST(Runner, ADivergingBackendDoesNotStopTheOthers) {
   EXPECT_GE(ok, 4);  // at least the four course integrators
 }
 
+// Without a reference, each backend is measured against its own finest run: that run has no
+// difference from a reference in its observables (it was "(0)", itself against itself),
+// while its coarser runs have one.
+TEST(Runner, TheFallbacksFinestRunHasNoReferenceValueOfItsOwn) {
+  const Scene scene = test::scene_from(std::string(test::kStackedBalls) +
+                                       "[[observe]]\nkind = \"final_speed\"\nbody = \"high\"\n");
+  RunOptions options;
+  options.cost = false;
+  options.backends = {"course/semi-implicit-euler"};
+  const CaseResults results = run_case(scene, Registry::load(), options);
+  ASSERT_EQ(results.runs.size(), 3u);
+  for (const RunRecord& run : results.runs) {
+    ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+    ASSERT_EQ(run.observables.size(), 1u);
+    EXPECT_TRUE(run.observables[0].measured.value);
+    const bool finest = *run.dt == scene.dt.back();
+    EXPECT_EQ(run.observables[0].reference.has_value(), !finest) << *run.dt;
+  }
+}
+
 TEST(Runner, OptionsNamingUnknownBackendsOrStepsAreBadInput) {
   const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
   const Registry registry = Registry::load();
