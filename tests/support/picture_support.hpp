@@ -8,8 +8,10 @@
 #include <png.h>
 #endif
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
-#include <regex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,26 +81,81 @@ struct SvgText {
   bool turned = false;  ///< drawn on its side (a y label)
 };
 
-/// A number of an SVG's attributes, as a group.
-inline const std::string kSvgNumber = R"re((-?[0-9.]+))re";
+/// Reads a gnuplot SVG's attributes by hand, left to right. (No std::regex: it trips GCC
+/// 12's maybe-uninitialized warning in the sanitizer build, an error there.)
+struct SvgCursor {
+  const std::string& s;
+  std::size_t at = 0;
+  /// Takes `text` if it comes next.
+  bool take(const std::string& text) {
+    if (s.compare(at, text.size(), text) != 0) return false;
+    at += text.size();
+    return true;
+  }
+  /// Takes a number (digits, '.', a leading '-').
+  bool number(double& v) {
+    std::size_t end = at;
+    if (end < s.size() && s[end] == '-') ++end;
+    while (end < s.size() && ((s[end] >= '0' && s[end] <= '9') || s[end] == '.')) ++end;
+    if (end == at || (end == at + 1 && s[at] == '-')) return false;
+    v = std::stod(s.substr(at, end - at));
+    at = end;
+    return true;
+  }
+  /// Takes everything up to `stop` (not included) into `out`.
+  bool until(char stop, std::string& out) {
+    const std::size_t end = s.find(stop, at);
+    if (end == std::string::npos) return false;
+    out = s.substr(at, end - at);
+    at = end;
+    return true;
+  }
+  void spaces() {
+    while (at < s.size() && (s[at] == ' ' || s[at] == '\n' || s[at] == '\t')) ++at;
+  }
+  /// Takes "x,y".
+  bool point(double& x, double& y) { return number(x) && take(",") && number(y); }
+};
 
-/// A line of gnuplot's text: its position (1, 2), whether it is turned (3), its size (4),
-/// its anchor (5) and the text (6).
-inline const std::regex& svg_text_pattern() {
-  static const std::regex pattern(
-      R"re(<g transform="translate\()re" + kSvgNumber + "," + kSvgNumber +
-      R"re(\)( rotate\([0-9-]+\))?" stroke="none" fill="black" font-family="[^"]*" font-size=")re" +
-      kSvgNumber + R"re("\s+text-anchor="(start|middle|end)">\s*<text>([^<]*)</text>)re");
-  return pattern;
+/// The line of gnuplot's text whose group starts at `at` in `svg`, if it is one.
+inline std::optional<SvgText> svg_text_at(const std::string& svg, std::size_t at) {
+  SvgCursor c{svg, at};
+  SvgText t;
+  std::string skipped;
+  if (!c.take("<g transform=\"translate(") || !c.point(t.x, t.y) || !c.take(")")) return {};
+  if (c.take(" rotate(")) {
+    if (!c.until(')', skipped) || !c.take(")")) return {};
+    t.turned = true;
+  }
+  if (!c.take("\" stroke=\"none\" fill=\"black\" font-family=\"") || !c.until('"', skipped) ||
+      !c.take("\" font-size=\"") || !c.number(t.size) || !c.take("\""))
+    return {};
+  c.spaces();
+  if (!c.take("text-anchor=\"") || !c.until('"', t.anchor) || !c.take("\">")) return {};
+  if (t.anchor != "start" && t.anchor != "middle" && t.anchor != "end") return {};
+  c.spaces();
+  if (!c.take("<text>") || !c.until('<', t.text) || !c.take("</text>")) return {};
+  return t;
 }
 
 /// Every line of text of a gnuplot SVG.
 inline std::vector<SvgText> svg_texts(const std::string& svg) {
   std::vector<SvgText> out;
-  for (std::sregex_iterator it(svg.begin(), svg.end(), svg_text_pattern()), end; it != end; ++it)
-    out.push_back({(*it)[6], (*it)[5], std::stod((*it)[1]), std::stod((*it)[2]),
-                   std::stod((*it)[4]), (*it)[3].matched});
+  for (std::size_t at = svg.find("<g transform="); at != std::string::npos;
+       at = svg.find("<g transform=", at + 1))
+    if (const auto t = svg_text_at(svg, at)) out.push_back(*t);
   return out;
+}
+
+/// The first stroke "d='M x,y L x,y" in `text`: its two points, x0 y0 x1 y1.
+inline std::optional<std::array<double, 4>> first_stroke(const std::string& text) {
+  for (std::size_t at = text.find("d='M"); at != std::string::npos;
+       at = text.find("d='M", at + 1)) {
+    SvgCursor c{text, at + 4};
+    std::array<double, 4> v{};
+    if (c.point(v[0], v[1]) && c.take(" L") && c.point(v[2], v[3])) return v;
+  }
+  return std::nullopt;
 }
 
 /// The layout of a gnuplot SVG: the borders drawn as closed rectangles are the panels; in
@@ -106,35 +163,34 @@ inline std::vector<SvgText> svg_texts(const std::string& svg) {
 /// entry, and that path's first stroke is the entry's sample.
 inline GnuplotLayout gnuplot_layout(const std::string& svg) {
   GnuplotLayout out;
-  const std::string& n = kSvgNumber;
-  const std::regex border("d='M" + n + "," + n + " L" + n + "," + n + " L" + n + "," + n + " L" +
-                          n + "," + n + " L" + n + "," + n + " Z");
-  for (std::sregex_iterator it(svg.begin(), svg.end(), border), end; it != end; ++it) {
-    const auto v = [&](int i) { return std::stod((*it)[i].str()); };
+  for (std::size_t at = svg.find("d='M"); at != std::string::npos; at = svg.find("d='M", at + 1)) {
     // M x0,y0 L x0,y1 L x1,y1 L x1,y0 L x0,y0 Z: an axis-aligned rectangle.
-    if (v(1) == v(3) && v(4) == v(6) && v(5) == v(7) && v(2) == v(8) && v(1) == v(9))
+    SvgCursor c{svg, at + 4};
+    double v[10];
+    bool ok = c.point(v[0], v[1]);
+    for (int k = 1; ok && k < 5; ++k) ok = c.take(" L") && c.point(v[2 * k], v[2 * k + 1]);
+    if (!ok || !c.take(" Z")) continue;
+    if (v[0] == v[2] && v[3] == v[5] && v[4] == v[6] && v[1] == v[7] && v[0] == v[8])
       out.panels.push_back(
-          {std::min(v(1), v(5)), std::min(v(2), v(4)), std::max(v(1), v(5)), std::max(v(2), v(4))});
+          {std::min(v[0], v[4]), std::min(v[1], v[3]), std::max(v[0], v[4]), std::max(v[1], v[3])});
   }
-  const std::regex sample("d='M" + n + "," + n + " L" + n + "," + n);
   for (std::size_t at = svg.find("<g id=\"gnuplot_plot_"); at != std::string::npos;) {
     const std::size_t next = svg.find("<g id=\"gnuplot_plot_", at + 1);
     const std::string group = svg.substr(at, next == std::string::npos ? next : next - at);
     at = next;
     // A titled plot draws its entry before its first path; an untitled one has none.
     const std::string head = group.substr(0, group.find("<path"));
-    std::smatch t, s;
-    if (!std::regex_search(head, t, svg_text_pattern())) continue;
-    const double x = std::stod(t[1]), y = std::stod(t[2]), size = std::stod(t[4]);
-    const double w = text_width(t[6], size);
-    const double left = t[5] == "start" ? x : t[5] == "end" ? x - w : x - w / 2;
-    Box box{left, y - size, left + w, y + 0.3 * size};
-    const std::string after = group.substr(head.size());
-    if (std::regex_search(after, s, sample) && std::stod(s[2]) == std::stod(s[4])) {
-      box.x0 = std::min({box.x0, std::stod(s[1]), std::stod(s[3])});
-      box.x1 = std::max({box.x1, std::stod(s[1]), std::stod(s[3])});
+    const std::vector<SvgText> texts = svg_texts(head);
+    if (texts.empty()) continue;
+    const SvgText& t = texts.front();
+    const double w = text_width(t.text, t.size);
+    const double left = t.anchor == "start" ? t.x : t.anchor == "end" ? t.x - w : t.x - w / 2;
+    Box box{left, t.y - t.size, left + w, t.y + 0.3 * t.size};
+    if (const auto s = first_stroke(group.substr(head.size())); s && (*s)[1] == (*s)[3]) {
+      box.x0 = std::min({box.x0, (*s)[0], (*s)[2]});
+      box.x1 = std::max({box.x1, (*s)[0], (*s)[2]});
     }
-    out.legend.push_back({t[6], box});
+    out.legend.push_back({t.text, box});
   }
   return out;
 }
