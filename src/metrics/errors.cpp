@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "scene/motion.hpp"
+#include "physics/energy.hpp"
 
 namespace bb {
 
@@ -23,8 +23,8 @@ ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory
   const std::size_t bodies = scene.bodies.size();
   ErrorMetrics m;
   std::vector<double> sum_squares(bodies, 0.0);
-  const double energy_scale =
-      std::max(std::abs(total_energy(scene, reference.states.front())), 1.0);
+  EnergyMeter energy(scene);
+  const double energy_scale = std::max(std::abs(energy(reference.states.front())), 1.0);
   for (std::size_t j = 0; j < run.states.size(); ++j) {
     const State& s = run.states[j];
     const State& r = reference.states[j];
@@ -35,7 +35,7 @@ ErrorMetrics compare(const Scene& scene, const Trajectory& run, const Trajectory
       sum_squares[i] += dx * dx;
       if (j + 1 == run.states.size()) m.position_final = std::max(m.position_final, dx);
     }
-    const double de = std::abs(total_energy(scene, s) - total_energy(scene, r)) / energy_scale;
+    const double de = std::abs(energy(s) - energy(r)) / energy_scale;
     m.energy_max = std::max(m.energy_max, de);
   }
   for (double ss : sum_squares)

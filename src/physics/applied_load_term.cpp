@@ -1,6 +1,7 @@
 // A constant force and torque on a body ([[body]] `force`, `torque`): a thruster, a hand
 // pushing steadily, a motor. World frame; the force acts at the centre.
 #include "physics/force_term.hpp"
+#include "physics/work_bounds.hpp"
 
 namespace bb {
 
@@ -8,13 +9,15 @@ namespace {
 
 class AppliedLoadTerm : public ForceTerm {
  public:
-  explicit AppliedLoadTerm(const World& scene) {
+  explicit AppliedLoadTerm(const World& scene) : gravity_(scene.gravity.norm()) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
       const Body& b = scene.bodies[i];
       if (b.force.isZero() && b.torque.isZero()) continue;
       bodies_.push_back(static_cast<int>(i));
       force_.push_back(b.force);
       torque_.push_back(b.torque);
+      mass_.push_back(b.mass);
+      moment_.push_back(principal_inertia(b).minCoeff());
       torques_ = torques_ || !b.torque.isZero();
     }
   }
@@ -28,9 +31,23 @@ class AppliedLoadTerm : public ForceTerm {
     }
   }
 
+  /// The push's and the turn's work over the whole run: push_work() and turn_work().
+  double supply(const BodyStates& start, double duration) const override {
+    double work = 0.0;
+    for (std::size_t j = 0; j < bodies_.size(); ++j) {
+      const int i = bodies_[j];
+      work += push_work(force_[j].norm(), mass_[j], start.velocity[i].norm(), gravity_, duration);
+      if (moment_[j] > 0.0)
+        work += turn_work(torque_[j].norm(), moment_[j], start.spin[i].norm(), duration);
+    }
+    return work;
+  }
+
  private:
+  double gravity_;           ///< m/s^2
   std::vector<int> bodies_;  ///< bodies with a force or a torque
   std::vector<Vec3> force_, torque_;
+  std::vector<double> mass_, moment_;  ///< per body: kg, and its smallest moment (kg m^2)
   bool torques_ = false;
 };
 

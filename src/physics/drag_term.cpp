@@ -1,6 +1,7 @@
 // Quadratic air drag (seed section 8, "the elephant falls faster"):
 // F = -1/2 Cd A rho |v - w| (v - w), A = pi r^2, w the wind.
 #include "physics/force_term.hpp"
+#include "physics/work_bounds.hpp"
 
 namespace bb {
 
@@ -8,12 +9,13 @@ namespace {
 
 class DragTerm : public ForceTerm {
  public:
-  explicit DragTerm(const World& scene) : air_(*scene.air) {
+  explicit DragTerm(const World& scene) : air_(*scene.air), gravity_(scene.gravity.norm()) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
       const Body& b = scene.bodies[i];
       if (b.drag_coefficient <= 0.0) continue;
       bodies_.push_back(static_cast<int>(i));
       k_.push_back(0.5 * b.drag_coefficient * frontal_area(b) * air_.density);
+      mass_.push_back(b.mass);
     }
   }
   bool empty() const { return bodies_.empty(); }
@@ -24,6 +26,13 @@ class DragTerm : public ForceTerm {
       const Vec3 relative = s.velocity[i] - air_.wind;
       force[i] += relative * (-k_[j] * relative.norm());
     }
+  }
+
+  /// In still air drag only takes energy; a wind gives at most what wind_work() bounds.
+  double supply(const BodyStates&, double duration) const override {
+    double work = 0.0;
+    for (double m : mass_) work += wind_work(m, air_.wind.norm(), gravity_, duration);
+    return work;
   }
 
   void add_jacobian(const BodyStates& s, ForceJacobian& out) const override {
@@ -40,8 +49,10 @@ class DragTerm : public ForceTerm {
 
  private:
   Air air_;
-  std::vector<int> bodies_;  ///< bodies with a drag coefficient
-  std::vector<double> k_;    ///< per body: 1/2 Cd A rho, kg/m
+  double gravity_;            ///< m/s^2
+  std::vector<int> bodies_;   ///< bodies with a drag coefficient
+  std::vector<double> k_;     ///< per body: 1/2 Cd A rho, kg/m
+  std::vector<double> mass_;  ///< per body: kg
 };
 
 }  // namespace

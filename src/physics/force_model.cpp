@@ -9,6 +9,7 @@ ForceModel::ForceModel(const World& scene, const ForceOptions& options)
   for (const ForceTermEntry& entry : force_terms())
     if (std::unique_ptr<ForceTerm> term = entry.make(scene, options)) {
       torques_ = torques_ || term->torques();
+      stores_energy_ = stores_energy_ || term->stores_energy();
       terms_.push_back(std::move(term));
     }
   for (std::size_t i = 0; i < scene.bodies.size(); ++i)
@@ -27,6 +28,18 @@ void ForceModel::evaluate(const BodyStates& s, Vec3* force, Vec3* torque) const 
 void ForceModel::jacobian(const BodyStates& s, ForceJacobian& out) const {
   out.clear();
   for (const auto& term : terms_) term->add_jacobian(s, out);
+}
+
+double ForceModel::potential_energy(const BodyStates& s) const {
+  double energy = 0.0;
+  for (const auto& term : terms_) energy += term->potential_energy(s);
+  return energy;
+}
+
+double ForceModel::supply(const BodyStates& start, double duration) const {
+  double energy = 0.0;
+  for (const auto& term : terms_) energy += term->supply(start, duration);
+  return energy;
 }
 
 Loads ForceModel::make_loads() const {

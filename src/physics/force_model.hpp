@@ -39,6 +39,13 @@ class ForceModel {
   }
   /// The terms' derivatives at `s` (force_term.hpp), `out` cleared first.
   void jacobian(const BodyStates& s, ForceJacobian& out) const;
+  /// The terms' potential energy at `s` (J), summed: force_term.hpp.
+  double potential_energy(const BodyStates& s) const;
+  /// Whether any term stores potential energy (else potential_energy() is 0 everywhere).
+  bool stores_energy() const { return stores_energy_; }
+  /// The most energy (J) the terms can put into the bodies' motion over a run of `duration`
+  /// seconds from the case's start `start`, summed: force_term.hpp.
+  double supply(const BodyStates& start, double duration) const;
   /// Loads sized for the scene, zero.
   Loads make_loads() const;
 
@@ -48,6 +55,7 @@ class ForceModel {
   std::size_t bodies_ = 0;
   Vec3 gravity_;
   bool torques_ = false;
+  bool stores_energy_ = false;
 };
 
 }  // namespace bb

@@ -52,9 +52,22 @@ class ForceTerm {
   virtual void add(const BodyStates& s, Vec3* force, Vec3* torque) const = 0;
   /// Adds d(force)/d(state) where the term can give it (an implicit solver's Newton matrix);
   /// a term that leaves it out is treated as constant there. Torques give no derivative.
+  /// The position blocks are the term's stiffness: the reference's choice of a stiff solver
+  /// and the course's stability theory read them, so a term with a stiffness must give them.
   virtual void add_jacobian(const BodyStates&, ForceJacobian&) const {}
   /// Whether the term ever gives a torque (else callers skip turning the bodies by it).
   virtual bool torques() const { return false; }
+  /// Potential energy (J) the term stores at `s`, for a term that has one (a spring's
+  /// k (l - L)^2 / 2); 0 for one that has none (drag, a push), whose work supply() bounds.
+  /// The scene's total energy adds it to the kinetic and gravitational energy.
+  virtual double potential_energy(const BodyStates&) const { return 0.0; }
+  /// Whether potential_energy() can be other than 0 (a caller with no such term skips it).
+  virtual bool stores_energy() const { return false; }
+  /// The most energy (J) the term can put into the bodies' motion over a run of `duration`
+  /// seconds from the case's start `start`: for a term with a potential, what it stores there
+  /// above its least; for a push or a wind, a bound on its work; 0 for a term that only takes
+  /// energy (drag in still air, a keel). Divergence and stability are judged against it.
+  virtual double supply(const BodyStates& /*start*/, double /*duration*/) const { return 0.0; }
 };
 
 /// Builds a term for `scene`, or nothing when the scene has no use for it.

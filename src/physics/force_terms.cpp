@@ -12,8 +12,10 @@ std::unique_ptr<ForceTerm> make_sail_term(const World&, const ForceOptions&);
 std::unique_ptr<ForceTerm> make_plate_term(const World&, const ForceOptions&);
 std::unique_ptr<ForceTerm> make_hull_term(const World&, const ForceOptions&);
 
-const std::vector<ForceTermEntry>& force_terms() {
-  static const std::vector<ForceTermEntry> terms = {
+namespace {
+
+std::vector<ForceTermEntry>& registry() {
+  static std::vector<ForceTermEntry> terms = {
       {"springs (seed section 7)", make_spring_term},
       {"quadratic air drag (seed section 8)", make_drag_term},
       {"Magnus force (seed section 8)", make_magnus_term},
@@ -26,6 +28,18 @@ const std::vector<ForceTermEntry>& force_terms() {
       {"a boat's hull in still water, the keel (seed section 9)", make_hull_term},
   };
   return terms;
+}
+
+}  // namespace
+
+const std::vector<ForceTermEntry>& force_terms() { return registry(); }
+
+ForceTermRegistration::ForceTermRegistration(ForceTermEntry entry) : name_(entry.name) {
+  registry().push_back(std::move(entry));
+}
+
+ForceTermRegistration::~ForceTermRegistration() {
+  std::erase_if(registry(), [&](const ForceTermEntry& e) { return e.name == name_; });
 }
 
 }  // namespace bb

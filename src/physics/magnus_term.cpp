@@ -1,6 +1,7 @@
 // The Magnus force of a spinning ball (seed section 8): F = k (omega x (v - w)), w the wind.
 #include "physics/cross_matrix.hpp"
 #include "physics/force_term.hpp"
+#include "physics/work_bounds.hpp"
 
 namespace bb {
 
@@ -8,11 +9,12 @@ namespace {
 
 class MagnusTerm : public ForceTerm {
  public:
-  explicit MagnusTerm(const World& scene) : wind_(scene.air->wind) {
+  explicit MagnusTerm(const World& scene) : wind_(scene.air->wind), gravity_(scene.gravity.norm()) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
       if (scene.bodies[i].magnus != 0.0) {
         bodies_.push_back(static_cast<int>(i));
         k_.push_back(scene.bodies[i].magnus);
+        mass_.push_back(scene.bodies[i].mass);
       }
   }
   bool empty() const { return bodies_.empty(); }
@@ -22,6 +24,14 @@ class MagnusTerm : public ForceTerm {
       const int i = bodies_[j];
       force[i] += s.spin[i].cross(s.velocity[i] - wind_) * k_[j];
     }
+  }
+
+  /// Across the velocity relative to the air: no work in still air, at most what
+  /// wind_work() bounds in a wind.
+  double supply(const BodyStates&, double duration) const override {
+    double work = 0.0;
+    for (double m : mass_) work += wind_work(m, wind_.norm(), gravity_, duration);
+    return work;
   }
 
   void add_jacobian(const BodyStates& s, ForceJacobian& out) const override {
@@ -35,8 +45,10 @@ class MagnusTerm : public ForceTerm {
 
  private:
   Vec3 wind_;
-  std::vector<int> bodies_;  ///< bodies with a Magnus coefficient
-  std::vector<double> k_;    ///< per body: kg
+  double gravity_;            ///< m/s^2
+  std::vector<int> bodies_;   ///< bodies with a Magnus coefficient
+  std::vector<double> k_;     ///< per body: kg
+  std::vector<double> mass_;  ///< per body: kg
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 // panel; its spin is whatever it was given.
 #include "physics/flat_plate.hpp"
 #include "physics/force_term.hpp"
+#include "physics/work_bounds.hpp"
 
 namespace bb {
 
@@ -12,7 +13,7 @@ namespace {
 
 class PlateTerm : public ForceTerm {
  public:
-  explicit PlateTerm(const World& scene) : wind_(scene.air->wind) {
+  explicit PlateTerm(const World& scene) : wind_(scene.air->wind), gravity_(scene.gravity.norm()) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
       const Body& b = scene.bodies[i];
       if (!b.plate) continue;
@@ -24,6 +25,7 @@ class PlateTerm : public ForceTerm {
                             ? b.plate->k * b.plate->area
                             : 0.5 * scene.air->density * b.plate->coefficient * b.plate->area);
       face_.push_back(Vec3::Unit(thin));
+      mass_.push_back(b.mass);
     }
   }
   bool empty() const { return bodies_.empty(); }
@@ -45,8 +47,17 @@ class PlateTerm : public ForceTerm {
     }
   }
 
+  /// Pushed by the wind relative to it: at most what wind_work() bounds.
+  double supply(const BodyStates&, double duration) const override {
+    double work = 0.0;
+    for (double m : mass_) work += wind_work(m, wind_.norm(), gravity_, duration);
+    return work;
+  }
+
  private:
   Vec3 wind_;
+  double gravity_;              ///< m/s^2
+  std::vector<double> mass_;    ///< per body: kg
   std::vector<int> bodies_;     ///< bodies with a plate
   std::vector<PlateLaw> law_;   ///< per body
   std::vector<double> factor_;  ///< per body: k a (N s/m) or 1/2 rho C a (kg/m)

@@ -30,6 +30,7 @@ class SailTerm : public ForceTerm {
         half_rho_c_a_.push_back(0.5 * scene.air->density * sails_.back().coefficient *
                                 sails_.back().area);
         angle_.push_back(sails_.back().angle * std::numbers::pi / 180.0);
+        mass_.push_back(scene.bodies[i].mass);
       }
   }
   bool empty() const { return bodies_.empty(); }
@@ -64,7 +65,19 @@ class SailTerm : public ForceTerm {
     }
   }
 
+  /// A sail drives its boat at most ten times the wind's speed (an ice boat reaches about
+  /// five): the kinetic energy of that speed.
+  double supply(const BodyStates&, double) const override {
+    const double fastest = kFastestSailing * wind_.norm();
+    double work = 0.0;
+    for (double m : mass_) work += 0.5 * m * fastest * fastest;
+    return work;
+  }
+
  private:
+  /// The fastest a sail drives a boat, in wind speeds.
+  static constexpr double kFastestSailing = 10.0;
+
   /// The sail's normal that the apparent wind blows along.
   Vec3 normal(std::size_t j, const BoatFrame& frame, const Vec3& apparent) const {
     // The boom swings to leeward: the sail's line turns from the heading towards the side
@@ -95,6 +108,7 @@ class SailTerm : public ForceTerm {
   std::vector<Sail> sails_;           ///< per body
   std::vector<double> half_rho_c_a_;  ///< per body: 1/2 rho_air C_s A, kg/m
   std::vector<double> angle_;         ///< per body: the sail's angle from the heading, rad
+  std::vector<double> mass_;          ///< per body: kg
 };
 
 }  // namespace

@@ -16,6 +16,16 @@ class SpringTerm : public ForceTerm {
     add_spring_forces(springs_, s.position, s.velocity, force);
   }
 
+  bool stores_energy() const override { return true; }
+  double potential_energy(const BodyStates& s) const override {
+    return spring_energy(springs_, s.position);
+  }
+
+  /// A spring gives back at most what it stores at the start (its damper only takes).
+  double supply(const BodyStates& start, double) const override {
+    return spring_energy(springs_, start.position);
+  }
+
   void add_jacobian(const BodyStates& s, ForceJacobian& out) const override {
     for (std::size_t k = 0; k < springs_.size(); ++k) {
       const int a = springs_.a[k], b = springs_.b[k];

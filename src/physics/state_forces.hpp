@@ -15,6 +15,8 @@ class StateForces {
   /// The forces and torques at `state`, one entry per body (zero on fixed bodies); nothing
   /// allocates.
   const Loads& at(const State& state);
+  /// `state` as the arrays the force model reads (valid until the next call).
+  BodyStates view(const State& state);
   const ForceModel& model() const { return model_; }
 
  private:

@@ -19,22 +19,6 @@ Vec3 angular_momentum(const Body& body, const BodyState& s) {
   return s.position.cross(body.mass * s.velocity) + spin;
 }
 
-double total_energy(const World& scene, const State& state) {
-  double energy = 0.0;
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const Body& body = scene.bodies[i];
-    if (body.fixed) continue;
-    const BodyState& s = state[i];
-    energy += kinetic_energy(body, s) - body.mass * scene.gravity.dot(s.position);
-  }
-  for (const Spring& spring : scene.springs) {
-    const double stretch =
-        (state[spring.body_b].position - state[spring.body_a].position).norm() - spring.rest_length;
-    energy += 0.5 * spring.stiffness * stretch * stretch;
-  }
-  return energy;
-}
-
 State initial_state(const World& scene) {
   State state(scene.bodies.size());
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {

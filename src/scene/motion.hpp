@@ -1,5 +1,6 @@
 // Quantities of a body's motion the harness reads from any backend's state: energy,
-// angular momentum, and the state a case starts in. (The forces: physics/force_model.hpp.)
+// angular momentum, and the state a case starts in. (The forces: physics/force_model.hpp;
+// the total energy, which adds each force term's potential: physics/energy.hpp.)
 #pragma once
 
 #include "scene/scene.hpp"
@@ -12,10 +13,6 @@ double kinetic_energy(const Body& body, const BodyState& state);
 
 /// Angular momentum (N m s) of one body about the world's origin: r x m v + J omega.
 Vec3 angular_momentum(const Body& body, const BodyState& state);
-
-/// Total mechanical energy (J): kinetic, rotational, gravitational (zero at the origin) and
-/// the springs' potential energy.
-double total_energy(const World& scene, const State& state);
 
 /// The state the case file describes at t = 0.
 State initial_state(const World& scene);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "physics/energy.hpp"
 #include "course/course_backend.hpp"
 #include "observe/observables.hpp"
 #include "reference/closed_form.hpp"

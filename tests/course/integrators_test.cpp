@@ -2,6 +2,7 @@
 // and the energy drift each shows in free fall (seed section 1, "Three beachballs 1").
 #include <gtest/gtest.h>
 
+#include "physics/energy.hpp"
 #include "course/course_backend.hpp"
 #include "metrics/errors.hpp"
 #include "metrics/order.hpp"

@@ -2,6 +2,7 @@
 // frame, the orientation turned by omega dt. Checked as properties: the 2D sequence's
 // closed sum, a free body's angular momentum kept exactly, and the flip's energy error
 // shrinking as dt halves.
+#include "physics/energy.hpp"
 #include "course/rigid_rotation.hpp"
 
 #include <gtest/gtest.h>

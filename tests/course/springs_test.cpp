@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/energy.hpp"
 #include "course/course_backend.hpp"
 #include "observe/observables.hpp"
 #include "reference/closed_form.hpp"

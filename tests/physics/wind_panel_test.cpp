@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "physics/energy.hpp"
 #include "observe/observable_registry.hpp"
 #include "physics/force_model.hpp"
 #include "physics/state_forces.hpp"

@@ -2,6 +2,7 @@
 // and angular momentum to 1e-9 over the whole run, through the flips.
 #include <gtest/gtest.h>
 
+#include "physics/energy.hpp"
 #include "observe/observables.hpp"
 #include "reference/closed_form.hpp"
 #include "reference/gsl_reference.hpp"

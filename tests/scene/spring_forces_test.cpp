@@ -1,6 +1,7 @@
 // The spring loop (seed section 7) that the course, the reference and engines applying
 // springs by hand all use: Newton's third law, Hooke's law with a damper along the
 // spring, the springs' potential in the total energy, and one answer from both layouts.
+#include "physics/energy.hpp"
 #include "scene/spring_forces.hpp"
 
 #include <gtest/gtest.h>
