@@ -5,6 +5,8 @@
 #include <complex>
 
 #include "course/integrators.hpp"
+#include "physics/state_forces.hpp"
+#include "scene/motion.hpp"
 
 namespace bb {
 
@@ -22,25 +24,44 @@ std::vector<int> dof_index(const World& scene, int& count) {
   return index;
 }
 
-/// y = M^-1/2 K M^-1/2 x without forming K: a sweep over the springs.
-void apply_stiffness(const World& scene, const std::vector<int>& index, const Eigen::VectorXd& x,
-                     Eigen::VectorXd& y) {
-  y.setZero();
-  const int d = scene.dims;
-  for (const Spring& s : scene.springs) {
-    const Vec3 delta = scene.bodies[s.body_b].position - scene.bodies[s.body_a].position;
-    if (delta.norm() == 0.0) continue;
-    const Eigen::VectorXd u = (delta / delta.norm()).head(d);
-    const int a = index[s.body_a], b = index[s.body_b];
-    const double wa = a < 0 ? 0.0 : 1.0 / std::sqrt(scene.bodies[s.body_a].mass);
-    const double wb = b < 0 ? 0.0 : 1.0 / std::sqrt(scene.bodies[s.body_b].mass);
-    // The spring stretches by u.(x_b - x_a); its force k u u^T acts on both ends.
-    double stretch = 0.0;
-    if (a >= 0) stretch -= wa * u.dot(x.segment(a, d));
-    if (b >= 0) stretch += wb * u.dot(x.segment(b, d));
-    if (a >= 0) y.segment(a, d) -= s.stiffness * stretch * wa * u;
-    if (b >= 0) y.segment(b, d) += s.stiffness * stretch * wb * u;
+/// The force model's derivative blocks with respect to `wrt` between moving bodies, at the
+/// case's start: -dF/dx is the stiffness K, -dF/dv the damping C.
+struct Coupling {
+  int row = 0, column = 0;  ///< first degrees of freedom
+  Eigen::Matrix3d value;    ///< -dF/d(wrt), mass-weighted: M^-1/2 (.) M^-1/2
+};
+
+std::vector<Coupling> couplings(const World& scene, const std::vector<int>& index,
+                                const ForceJacobian& jacobian, Wrt wrt) {
+  std::vector<Coupling> out;
+  for (const JacobianBlock& b : jacobian.blocks()) {
+    if (b.wrt != wrt || index[b.body] < 0 || index[b.by_body] < 0) continue;
+    const double weight = 1.0 / std::sqrt(scene.bodies[b.body].mass * scene.bodies[b.by_body].mass);
+    out.push_back({index[b.body], index[b.by_body], -weight * b.value});
   }
+  return out;
+}
+
+/// y = A x for the symmetric part of the mass-weighted blocks A, without forming A.
+void apply(const std::vector<Coupling>& blocks, int dims, const Eigen::VectorXd& x,
+           Eigen::VectorXd& y) {
+  y.setZero();
+  for (const Coupling& c : blocks) {
+    const Eigen::MatrixXd a = c.value.topLeftCorner(dims, dims);
+    y.segment(c.row, dims) += 0.5 * a * x.segment(c.column, dims);
+    y.segment(c.column, dims) += 0.5 * a.transpose() * x.segment(c.row, dims);
+  }
+}
+
+/// The blocks as a dense n x n matrix (symmetric part).
+Eigen::MatrixXd dense(const std::vector<Coupling>& blocks, int dims, int n) {
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+  for (const Coupling& c : blocks) {
+    const Eigen::MatrixXd v = c.value.topLeftCorner(dims, dims);
+    a.block(c.row, c.column, dims, dims) += 0.5 * v;
+    a.block(c.column, c.row, dims, dims) += 0.5 * v.transpose();
+  }
+  return a;
 }
 
 /// Spectral radius of the integrator's step matrix on the scalar mode, from two steps.
@@ -65,46 +86,46 @@ double spectral_radius(course::StepFn step, double omega, double gamma, double h
 std::optional<StiffestMode> stiffest_mode(const World& scene) {
   int n = 0;
   const std::vector<int> index = dof_index(scene, n);
-  bool any = false;
-  for (const Spring& s : scene.springs) any = any || index[s.body_a] >= 0 || index[s.body_b] >= 0;
-  if (!any || n == 0) return std::nullopt;
+  if (n == 0) return std::nullopt;
+  // The force model's own derivatives at the start: each term that has a stiffness gives it.
+  StateForces forces(scene);
+  ForceJacobian jacobian;
+  forces.model().jacobian(forces.view(initial_state(scene)), jacobian);
+  const std::vector<Coupling> stiffness = couplings(scene, index, jacobian, Wrt::Position);
+  const std::vector<Coupling> damping = couplings(scene, index, jacobian, Wrt::Velocity);
+  if (stiffness.empty()) return std::nullopt;
   StiffestMode mode;
   double lambda = 0.0;
+  Eigen::VectorXd shape(n);  // the stiffest mode's shape, unit length
   if (n <= kDenseLimit) {
-    // Dense: K column by column from the spring sweep, then every eigenvalue.
-    Eigen::MatrixXd k(n, n);
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(n), column(n);
-    for (int c = 0; c < n; ++c) {
-      e[c] = 1.0;
-      apply_stiffness(scene, index, e, column);
-      k.col(c) = column;
-      e[c] = 0.0;
-    }
-    lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(k, Eigen::EigenvaluesOnly)
-                 .eigenvalues()
-                 .maxCoeff();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> modes(dense(stiffness, scene.dims, n));
+    Eigen::Index stiffest = 0;
+    lambda = modes.eigenvalues().maxCoeff(&stiffest);
+    shape = modes.eigenvectors().col(stiffest);
     mode.how = "the largest eigenvalue of M^-1 K at the start (" + std::to_string(n) +
-               " degrees of freedom, axial spring stiffness)";
+               " degrees of freedom, K the force model's stiffness)";
   } else {
     // Power iteration from a checkerboard (the stiffest lattice modes alternate in sign);
     // the Rayleigh quotient approaches the largest eigenvalue from below.
-    Eigen::VectorXd x(n), y(n);
-    for (int i = 0; i < n; ++i) x[i] = ((i / scene.dims) % 2 == 0 ? 1.0 : -1.0) + 1e-3 * (i % 7);
-    x.normalize();
+    Eigen::VectorXd y(n);
+    for (int i = 0; i < n; ++i)
+      shape[i] = ((i / scene.dims) % 2 == 0 ? 1.0 : -1.0) + 1e-3 * (i % 7);
+    shape.normalize();
     for (int iteration = 0; iteration < 500; ++iteration) {
-      apply_stiffness(scene, index, x, y);
-      lambda = x.dot(y);
-      x = y.normalized();
+      apply(stiffness, scene.dims, shape, y);
+      lambda = shape.dot(y);
+      shape = y.normalized();
     }
     mode.how = "500 power iterations on M^-1 K at the start (" + std::to_string(n) +
-               " degrees of freedom; an estimate from below)";
+               " degrees of freedom, K the force model's stiffness; an estimate from below)";
   }
-  mode.omega = std::sqrt(std::max(lambda, 0.0));
-  // Modal damping where C = r K: every spring with the same damping-to-stiffness ratio.
-  const double ratio = scene.springs.front().damping / scene.springs.front().stiffness;
-  for (const Spring& s : scene.springs)
-    if (std::abs(s.damping / s.stiffness - ratio) > 1e-12 * ratio) mode.damping_known = false;
-  if (mode.damping_known) mode.damping_rate = ratio * lambda;
+  if (!(lambda > 0.0)) return std::nullopt;
+  mode.omega = std::sqrt(lambda);
+  // The mode's own damping rate, v^T M^-1/2 C M^-1/2 v: exact where C = r K (every spring
+  // with the same damping-to-stiffness ratio), the mode's share of C otherwise.
+  Eigen::VectorXd damped(n);
+  apply(damping, scene.dims, shape, damped);
+  mode.damping_rate = std::max(shape.dot(damped), 0.0);
   return mode;
 }
 

@@ -1,7 +1,8 @@
-// The stiffest mode of a scene's spring network, linearised at the start: the largest
-// eigenvalue of M^-1 K (K from each spring's axial stiffness k u u^T), and its damping
-// rate where every spring has the same damping-to-stiffness ratio (then C = r K and each
-// mode's rate is r omega^2).
+// The stiffest mode of a scene, linearised at the start: the largest eigenvalue of M^-1 K,
+// K = -dF/dx the force model's stiffness (each term gives its own: a spring's k u u^T plus
+// its tension across it), and its damping rate v^T C v on the mode's own shape v (the damping
+// C = -dF/dv, mass-weighted: exact where C = r K, every spring with the same
+// damping-to-stiffness ratio, when each mode's rate is r omega^2).
 #pragma once
 
 #include <optional>
@@ -14,11 +15,10 @@ namespace bb {
 struct StiffestMode {
   double omega = 0.0;         ///< rad/s
   double damping_rate = 0.0;  ///< 1/s, gamma in x'' = -omega^2 x - gamma x'
-  bool damping_known = true;  ///< false when the springs' damping ratios differ (left out)
   std::string how;            ///< how omega was found, in words
 };
 
-/// nullopt when the scene has no spring between moving bodies.
+/// nullopt when no force stiffens the moving bodies.
 std::optional<StiffestMode> stiffest_mode(const World& scene);
 
 /// The largest step (s) for which `integrator`'s step matrix on x'' = -omega^2 x - gamma x'

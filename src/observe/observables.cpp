@@ -4,23 +4,20 @@
 #include <cmath>
 
 #include "observe/observable_registry.hpp"
+#include "physics/terminal_fall.hpp"
 
 namespace bb {
 
 ObservableValue terminal_speed(const Scene& scene, const Body& body) {
   const std::string does_not_apply = "does not apply: " + body.name;
   if (body.fixed) return {std::nullopt, does_not_apply + " is fixed"};
-  if (body.drag_coefficient <= 0.0 || frontal_area(body) <= 0.0)
-    return {std::nullopt, does_not_apply + " has no drag"};
   if (!scene.air || scene.air->density <= 0.0)
     return {std::nullopt, does_not_apply + " is not in air"};
-  const double g = scene.gravity.norm();
-  if (g <= 0.0) return {std::nullopt, "does not apply: the case has no gravity"};
-  // A spinning body's Magnus force also carries it, so it settles at another speed.
-  if (body.magnus != 0.0 && body.angular_velocity.norm() > 0.0)
-    return {std::nullopt, does_not_apply + " spins and feels a Magnus force"};
-  const double k = 0.5 * scene.air->density * body.drag_coefficient * frontal_area(body);
-  return {std::sqrt(body.mass * g / k), ""};
+  // Where the force model's forces hold it against gravity (physics/terminal_fall.hpp).
+  std::string why;
+  const auto fall = terminal_fall(scene, static_cast<int>(&body - scene.bodies.data()), &why);
+  if (!fall) return {std::nullopt, "does not apply: " + why};
+  return {fall->speed, ""};
 }
 
 ObservableValue sag(const Scene& scene, const State& state) {

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "physics/force_model.hpp"
+#include "physics/state_forces.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/peak_watch.hpp"
 #include "reference/scene_model.hpp"
@@ -31,45 +32,32 @@ Methods methods(ReferenceSolver solver) {
   return {gsl_odeiv2_step_rk8pd, gsl_odeiv2_step_msbdf, 0.0};
 }
 
-/// The fastest rate (1/s) at which springs move a body: for each body, the bound
-/// sqrt(2 sum k / m) on the angular frequency of the stiffest mode it takes part in
-/// (Gershgorin's circles on M^-1 K) and the damping rate 2 sum c / m.
-double spring_rate(const World& scene) {
-  std::vector<double> k(scene.bodies.size()), c(scene.bodies.size());
-  for (const Spring& s : scene.springs)
-    for (int body : {s.body_a, s.body_b}) k[body] += s.stiffness, c[body] += s.damping;
-  double rate = 0.0;
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const Body& body = scene.bodies[i];
-    if (body.fixed) continue;
-    rate = std::max({rate, std::sqrt(2.0 * k[i] / body.mass), 2.0 * c[i] / body.mass});
-  }
-  return rate;
-}
-
-/// The fastest rate (1/s) at which the forces other than the springs change a body's
-/// velocity at state y: the largest singular value of dF/dv / m over the moving bodies (the
-/// force model's own derivatives), or the springs' rate when larger. Drag on a light body or
-/// a stiff spring makes it large; it is what limits an explicit method's step.
-double fastest_rate(const World& scene, const SceneModel& model, const std::vector<double>& y) {
+/// The fastest rate (1/s) at which the force model moves a body at state y, from its own
+/// derivatives (force_term.hpp): per moving body, the stiffness bound sqrt(sum ||dF/dx|| / m)
+/// on the angular frequency of the stiffest mode it takes part in (Gershgorin's circles on
+/// M^-1 K), and the damping bound (||its own dF/dv|| + sum of the others') / m. A stiff
+/// spring, or drag on a light body, makes it large; it is what limits an explicit method's step.
+double fastest_rate(const World& scene, const SceneModel& model, StateForces& forces,
+                    ForceJacobian& jacobian, const std::vector<double>& y) {
   State state(scene.bodies.size());
   model.read(y.data(), state);
-  double rate = spring_rate(scene);
-  std::vector<Vec3> x, v, w;
-  std::vector<Quat> q;
-  for (const BodyState& s : state)
-    x.push_back(s.position), v.push_back(s.velocity), w.push_back(s.angular_velocity),
-        q.push_back(s.orientation);
-  ForceJacobian jacobian;
-  ForceModel(scene, {false}).jacobian({x.data(), v.data(), q.data(), w.data()}, jacobian);
-  // Each body's own dF/dv, summed over the terms.
-  std::vector<Eigen::Matrix3d> by_velocity(state.size(), Eigen::Matrix3d::Zero());
-  for (const JacobianBlock& b : jacobian.blocks())
-    if (b.wrt == Wrt::Velocity && b.body == b.by_body) by_velocity[b.body] += b.value;
+  forces.model().jacobian(forces.view(state), jacobian);
+  std::vector<double> stiffness(state.size(), 0.0), damping(state.size(), 0.0);
+  std::vector<Eigen::Matrix3d> own(state.size(), Eigen::Matrix3d::Zero());
+  for (const JacobianBlock& b : jacobian.blocks()) {
+    if (b.wrt == Wrt::Position) stiffness[b.body] += b.value.norm();
+    if (b.wrt != Wrt::Velocity) continue;
+    if (b.body == b.by_body)
+      own[b.body] += b.value;
+    else
+      damping[b.body] += b.value.norm();
+  }
+  double rate = 0.0;
   for (std::size_t i = 0; i < state.size(); ++i) {
     const Body& body = scene.bodies[i];
     if (body.fixed) continue;
-    rate = std::max(rate, by_velocity[i].operatorNorm() / body.mass);
+    rate = std::max({rate, std::sqrt(stiffness[i] / body.mass),
+                     (own[i].operatorNorm() + damping[i]) / body.mass});
   }
   return rate;
 }
@@ -198,7 +186,8 @@ class ReferenceSimulation : public Simulation {
   /// steps would be limited by stability rather than accuracy.
   void check_stiffness() {
     if (implicit_) return;
-    const double rate = fastest_rate(scene_, *model_, integrator_->state());
+    const double rate =
+        fastest_rate(scene_, *model_, rate_forces_, rate_jacobian_, integrator_->state());
     if (rate * settings_.sample <= kStiffRateTimesSample) return;
     const double t = integrator_->time();
     // The implicit methods factor a dense Jacobian of the whole state: beyond some size, too
@@ -222,6 +211,8 @@ class ReferenceSimulation : public Simulation {
   }
 
   const World& scene_;
+  StateForces rate_forces_{scene_};  ///< the whole force model, for its derivatives
+  ForceJacobian rate_jacobian_;
   BackendSettings settings_;  ///< the sample interval and the observes
   double dt_;
   double tolerance_;

@@ -135,7 +135,7 @@ TEST(Observables, TerminalVelocityDoesNotApplyWithoutDragOrGravity) {
   std::string no_gravity = test::kMinimalCase;
   no_gravity.replace(no_gravity.find("[air]"), 5, "gravity = [0.0, 0.0, 0.0]\n\n[air]");
   for (const auto& [text, why] :
-       {std::pair{no_drag, "does not apply: ball has no drag"},
+       {std::pair{no_drag, "does not apply: ball has no drag (no force holds it against gravity)"},
         std::pair{no_gravity, "does not apply: the case has no gravity"}}) {
     const Scene scene = test::scene_from(text + observe);
     Trajectory trajectory;
@@ -172,7 +172,7 @@ TEST(Observables, TerminalTimeIsWhenTheSpeedFirstReaches95PercentOfTheTerminalSp
   const Scene plain =
       test::scene_from(no_drag + "\n[[observe]]\nkind = \"terminal_time\"\nbody = \"ball\"\n");
   EXPECT_EQ(measure(plain, plain.observes[0], trajectory, nullptr).note,
-            "does not apply: ball has no drag");
+            "does not apply: ball has no drag (no force holds it against gravity)");
 }
 
 // final_height is the centre's height along -gravity at the end of the run, whatever the
