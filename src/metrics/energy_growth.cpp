@@ -66,24 +66,25 @@ namespace {
 std::optional<GrowthVerdict> early_verdict(const EnergyHistory& whole) {
   const int all = static_cast<int>(whole.level.size());
   const double first = whole.level.front(), last = whole.level.back();
-  if (last > 10.0 * whole.scale && last > 2.0 * first && levelled_off(whole))
+  if (last > kNearScale * whole.scale && last > 2.0 * first && levelled_off(whole))
     return GrowthVerdict{
         Growth::Runaway, false,
         "energy ran away: its rise above the start went from " + significant_digits(first) +
             " J at the end of the first of the run's " + std::to_string(all) + " windows to " +
-            significant_digits(last) + " J, more than ten times the " +
-            significant_digits(whole.scale) +
-            " J the scene's physics can trade, and levelled off on the way: held by the "
+            significant_digits(last) + " J, more than " + significant_digits(kNearScale) +
+            " times the " + significant_digits(whole.scale) +
+            " J the scene can put into motion, and levelled off on the way: held by the "
             "motion's nonlinearity (a spring folding through itself), not by the step"};
   // Too few steps to tell how it grows: only a rise far beyond the physics counts.
   if (all < kGrowthWindows) {
     const std::string few = "energy seen over too few steps (" + std::to_string(all) +
                             ") to tell how it grows; its rise above the start reached " +
                             significant_digits(last) + " J";
-    if (last > 10.0 * whole.scale && last > 2.0 * first)
+    if (last > kNearScale * whole.scale && last > 2.0 * first)
       return GrowthVerdict{Growth::Runaway, false,
-                           few + ", more than ten times the " + significant_digits(whole.scale) +
-                               " J the scene's physics can trade, from " +
+                           few + ", more than " + significant_digits(kNearScale) + " times the " +
+                               significant_digits(whole.scale) +
+                               " J the scene can put into motion, from " +
                                significant_digits(first) + " J after its first step"};
     return GrowthVerdict{Growth::Bounded, true, few};
   }
@@ -141,11 +142,20 @@ GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
             " J to " + significant_digits(h.level[to - 1]) + " J" +
             (to < windows ? ", and " + significant_digits(last) + " J at the end" : "")};
   }
-  // The rise in the last quarter, beside the whole rise: under 5 percent is levelling off.
-  if (last - whole.level[quarter(4, all).first - 1] <= 0.05 * last)
+  // The rise in the last quarter, beside the whole rise: under 5 percent is levelling off,
+  // near the scene's own scale (a level far above it is held by something else).
+  if (last - whole.level[quarter(4, all).first - 1] <= 0.05 * last) {
+    if (last > kNearScale * whole.scale && last > 2.0 * whole.level.front())
+      return {Growth::Runaway, false,
+              "energy levelled off far from the scene's scale: its rise above the start grew "
+              "from " +
+                  significant_digits(whole.level.front()) + " J to " + significant_digits(last) +
+                  " J, more than " + significant_digits(kNearScale) + " times the " +
+                  significant_digits(whole.scale) + " J the scene can put into motion"};
     return {Growth::Bounded, true,
             "energy bounded: its rise above the start levelled off at " + significant_digits(last) +
                 " J"};
+  }
 
   // How it grew over the second half, as a power of the elapsed time (when it had begun).
   const int half = windows / 2;
@@ -157,6 +167,13 @@ GrowthVerdict judge_growth(const EnergyHistory& whole, double growth_factor) {
                                                      static_cast<double>(h.steps[half - 1]))) +
                          " over the second half"
                    : "";
+  // Drift that carries the energy far past all the scene can put into motion is not bounded.
+  if (last > kNearScale * whole.scale)
+    return {Growth::Runaway, false,
+            "energy drifts without bound: its rise above the start grew to " +
+                significant_digits(last) + " J" + power + ", past " +
+                significant_digits(kNearScale) + " times the " + significant_digits(whole.scale) +
+                " J the scene can put into motion"};
   return {Growth::Drift, true,
           "energy drifts: its rise above the start grew to " + significant_digits(last) + " J" +
               power + ": drift that adds, not growth that compounds"};

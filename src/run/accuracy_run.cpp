@@ -3,9 +3,9 @@
 #include <new>
 
 #include "observe/step_observer.hpp"
+#include "physics/energy.hpp"
 #include "run/divergence.hpp"
 #include "run/stability_watch.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 
@@ -34,18 +34,19 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
     const int per_sample = scene.steps_per_sample(dt);
     const int samples = scene.sample_count();
     const DivergenceBounds bounds = divergence_bounds(scene);
+    EnergyMeter energy(scene);
     State state(scene.bodies.size());
     sim->read(state);
-    const double initial_energy = total_energy(scene, state);
+    const double initial_energy = energy(state);
     // Contacts, apexes and turns are watched at every step, not only at the samples.
     StepObserver observer(scene);
     observer.observe(0.0, state);
     // At a step the stability search begins with, its trial is judged on these steps too.
     std::optional<StabilityWatch> watch;
     if (judge_stability && (dt == scene.stability.dt_min || dt == scene.stability.dt_max) &&
-        StabilityWatch(scene, dt, state).steps() ==
+        StabilityWatch::trial_steps(scene, dt) ==
             static_cast<long>(per_sample) * static_cast<long>(samples))
-      watch.emplace(scene, dt, state);
+      watch.emplace(scene, dt, state, StabilityWatch::trial_steps(scene, dt));
     observer.write_turns(state);
     record.trajectory.times.push_back(0.0);
     record.trajectory.states.push_back(state);
@@ -64,7 +65,7 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
       const double t = static_cast<double>(record.steps) * dt;
       record.trajectory.times.push_back(t);
       record.trajectory.states.push_back(state);
-      if (auto why = divergence(scene, bounds, state, initial_energy, total_energy(scene, state))) {
+      if (auto why = divergence(scene, bounds, state, initial_energy, energy(state))) {
         record.status = RunStatus::Diverged;
         record.reason = *why;
         record.diverged_at = t;

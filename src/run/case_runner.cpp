@@ -99,7 +99,10 @@ bool backend_runs(const RunOptions& options, const Scene& scene, const std::stri
 
 double time_limit(const Scene& scene, double dt, double timeout) {
   if (timeout > 0.0) return timeout;
-  const double steps = std::ceil(scene.duration / dt);
+  return steps_time_limit(scene, std::ceil(scene.duration / dt));
+}
+
+double steps_time_limit(const Scene& scene, double steps) {
   return 10.0 + 2e-5 * steps * static_cast<double>(scene.bodies.size() + scene.springs.size());
 }
 

@@ -44,6 +44,8 @@ bool backend_runs(const RunOptions& options, const Scene& scene, const std::stri
 /// Seconds an accuracy run of `scene` at `dt` may take: `timeout` when given, else 10 s
 /// plus 20 microseconds per step per body and spring.
 double time_limit(const Scene& scene, double dt, double timeout);
+/// Seconds a child may take for `steps` steps of `scene` (time_limit's rule, by steps).
+double steps_time_limit(const Scene& scene, double steps);
 
 /// How many times run_case calls on_progress for this scene and these options.
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options);

@@ -1,100 +1,87 @@
 #include "run/divergence.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+
+#include "scene/text.hpp"
 
 namespace bb {
 
-namespace {
-
-/// Whether a body of `scene` feels a constant force: its own, or the wind's on a wall.
-bool pushed(const Scene& scene) {
-  if (scene.features().has(Feature::AppliedForce)) return true;
-  for (const Body& b : scene.bodies)
-    if (b.wind_force.norm() > 0.0) return true;
-  return false;
+DivergenceBounds divergence_bounds(const Scene& scene) {
+  return divergence_bounds(scene, scene.duration, kBlowUpEnergy);
 }
 
-}  // namespace
-
-DivergenceBounds divergence_bounds(const Scene& scene) {
-  // Fastest plausible speed: the largest over the bodies of the speed it starts with and
-  // gets from its impulses (J / m each) and its constant forces, the wind's on a wall among them
-  // (F t / m), and a sail's drive (at most ten times the wind: an ice boat reaches about five),
-  // plus the speed its spin
-  // gives its surface (its initial spin and the impulses' angular impulses over its smallest
-  // moment, times its reach); plus the wind, plus what gravity adds over the whole run. A spin's
-  // energy is within 1/2 m (w reach)^2, since no moment exceeds m reach^2.
-  double speed = 0.0, size = 1.0, mass = 0.0;
+DivergenceBounds divergence_bounds(const Scene& scene, double duration, double factor) {
+  DivergenceBounds bounds;
+  bounds.scale = energy_scale(scene, duration);
+  bounds.factor = factor;
+  bounds.energy = factor * bounds.scale.total();
+  const double root = std::sqrt(factor);
+  const std::vector<double> fastest = speed_bounds(scene, bounds.scale, duration);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const Body& b = scene.bodies[i];
-    // How far its surface (or, on a hinge, its centre) is from where it turns about.
-    double reach = b.radius + b.half_extents.norm();
-    for (const Hinge& h : scene.hinges)
-      if (h.body == static_cast<int>(i)) reach += (b.position - h.anchor).norm();
-    const double moment = principal_inertia(b).minCoeff();
-    double v = b.velocity.norm(), w = b.angular_velocity.norm();
-    // A constant force and torque add to the speed and the spin over the whole run.
-    if (!b.fixed) v += (b.force.norm() + b.wind_force.norm()) / b.mass * scene.duration;
-    if (b.sail && scene.air) v += 10.0 * scene.air->wind.norm();
-    if (moment > 0.0) w += b.torque.norm() / moment * scene.duration;
-    for (const Impulse& imp : scene.impulses) {
-      if (imp.body != static_cast<int>(i)) continue;
-      v += imp.impulse.norm() / b.mass;
-      const double arm = (imp.point.value_or(b.position) - b.position).norm() + reach;
-      if (moment > 0.0) w += arm * imp.impulse.norm() / moment;
-    }
-    speed = std::max(speed, v + w * reach);
-    size = std::max(size, b.position.norm() + b.radius + b.half_extents.norm());
-    mass += b.mass;
+    bounds.speed.push_back(root * fastest[i]);
+    bounds.travel.push_back(root * (fastest[i] * duration + b.radius + b.half_extents.norm()));
   }
-  const double t = scene.duration, g = scene.gravity.norm();
-  if (scene.air) speed += scene.air->wind.norm();
-  speed += g * t;
-  // Springs stretched at the start give their energy to the lightest body at most.
-  double spring_energy = 0.0, lightest = 0.0;
-  for (const Spring& s : scene.springs) {
-    const double stretch =
-        (scene.bodies[s.body_b].position - scene.bodies[s.body_a].position).norm() - s.rest_length;
-    spring_energy += 0.5 * s.stiffness * stretch * stretch;
-  }
-  for (const Body& b : scene.bodies)
-    if (!b.fixed && (lightest == 0.0 || b.mass < lightest)) lightest = b.mass;
-  if (lightest > 0.0) speed += std::sqrt(2.0 * spring_energy / lightest);
-  const double travel = speed * t + size;
-  DivergenceBounds bounds;
-  bounds.travel = 10.0 * travel;
-  bounds.energy_scale = 0.5 * mass * speed * speed + mass * g * travel + spring_energy + 1.0;
-  // Far above a bounded swing (semi-implicit Euler near its limit swings its energy by a
-  // factor of 100 and is stable), low enough to stop an exponential blow-up early.
-  bounds.energy = 1e4 * bounds.energy_scale;
   return bounds;
+}
+
+std::optional<Beyond> beyond_reference(const Scene& scene, const Trajectory& run,
+                                       const Trajectory& reference) {
+  // The box around every moving body of the reference at every sample, its surface included.
+  Eigen::AlignedBox3d box;
+  double reach = 0.0;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const Body& b = scene.bodies[i];
+    if (b.fixed) continue;
+    reach = std::max(reach, b.radius + b.half_extents.norm());
+    for (const State& s : reference.states) box.extend(s[i].position);
+  }
+  if (box.isEmpty()) return std::nullopt;
+  const double size = std::max(box.diagonal().norm(), 2.0 * reach);
+  if (!(size > 0.0)) return std::nullopt;
+  const double limit = kBeyondReference * size;
+  for (std::size_t j = 0; j < run.states.size(); ++j)
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      if (scene.bodies[i].fixed) continue;
+      const double outside = box.exteriorDistance(run.states[j][i].position);
+      if (outside > limit)
+        return Beyond{run.times[j],
+                      "body '" + scene.bodies[i].name + "' went " + significant_digits(outside, 3) +
+                          " m outside everywhere the reference's bodies go (a box " +
+                          significant_digits(size, 3) + " m across), more than " +
+                          significant_digits(kBeyondReference, 3) + " times its size"};
+    }
+  return std::nullopt;
 }
 
 std::optional<std::string> divergence(const Scene& scene, const DivergenceBounds& bounds,
                                       const State& state, double initial_energy, double energy) {
+  const double root = std::sqrt(bounds.factor);
   for (std::size_t i = 0; i < state.size(); ++i) {
     const BodyState& s = state[i];
-    const std::string& name = scene.bodies[i].name;
+    const Body& b = scene.bodies[i];
     if (!s.position.allFinite() || !s.velocity.allFinite() || !s.angular_velocity.allFinite())
-      return "body '" + name + "' has a NaN or infinite position or velocity";
-    if ((s.position - scene.bodies[i].position).norm() > bounds.travel) {
-      std::ostringstream m;
-      m << "body '" << name << "' moved more than " << bounds.travel
-        << " m from its start, ten times what gravity, the initial speeds and spins"
-        << (pushed(scene) ? ", the impulses and the constant forces" : " and the impulses")
-        << " allow";
-      return m.str();
-    }
+      return "body '" + b.name + "' has a NaN or infinite position or velocity";
+    if (b.fixed) continue;
+    if (const double speed = s.velocity.norm(); speed > bounds.speed[i])
+      return "body '" + b.name + "' moves at " + significant_digits(speed, 3) + " m/s, more than " +
+             significant_digits(root, 3) + " times the " +
+             significant_digits(bounds.speed[i] / root, 3) +
+             " m/s the scene can give it (its start, free fall over the run, and all the "
+             "energy the scene can put into motion, " +
+             significant_digits(bounds.scale.total(), 3) + " J, given to it alone)";
+    if (const double moved = (s.position - b.position).norm(); moved > bounds.travel[i])
+      return "body '" + b.name + "' moved " + significant_digits(moved, 3) + " m from its start, " +
+             "more than " + significant_digits(root, 3) + " times the " +
+             significant_digits(bounds.travel[i] / root, 3) +
+             " m the fastest the scene can move it allows";
   }
-  const double change = std::abs(energy - initial_energy);
-  if (change > bounds.energy) {
-    std::ostringstream m;
-    m << "energy changed by " << change << " J, more than the bound of " << bounds.energy
-      << " J derived from the scene";
-    return m.str();
-  }
+  if (const double rise = energy - initial_energy; rise > bounds.energy)
+    return "energy rose by " + significant_digits(rise, 3) + " J, more than " +
+           significant_digits(bounds.factor, 3) + " times the " + bounds.scale.describe() +
+           " the scene can put into motion";
   return std::nullopt;
 }
 

@@ -3,8 +3,9 @@
 #include <algorithm>
 
 #include "metrics/order.hpp"
+#include "physics/energy.hpp"
+#include "run/divergence.hpp"
 #include "run/drawn_bodies.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 
@@ -43,7 +44,8 @@ void add_series(const Scene& scene, RunRecord& run, const Trajectory* reference)
   const Trajectory& t = run.trajectory;
   run.energy.clear();
   run.distance.clear();
-  for (const State& s : t.states) run.energy.push_back(total_energy(scene, s));
+  EnergyMeter energy(scene);
+  for (const State& s : t.states) run.energy.push_back(energy(s));
   if (reference == nullptr || reference->states.empty()) return;
   for (std::size_t j = 0; j < t.states.size() && j < reference->states.size(); ++j) {
     double worst = 0.0;
@@ -80,6 +82,13 @@ void record_position_scale(RunRecord& run) {
 }
 
 void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& against) {
+  // A body far outside everywhere the reference's bodies go has blown up (divergence.hpp).
+  if (run.status == RunStatus::Ok && &against != &run && against.backend == "reference")
+    if (auto beyond = beyond_reference(scene, run.trajectory, against.trajectory)) {
+      run.status = RunStatus::Diverged;
+      run.reason = beyond->reason;
+      run.diverged_at = beyond->time;
+    }
   // A run measured against itself (the fallback's finest) has no errors.
   if (run.status == RunStatus::Ok && &against != &run)
     run.errors = compare(scene, run.trajectory, against.trajectory);

@@ -14,7 +14,7 @@
 #include "scene/backend_names.hpp"
 #include "scene/case_error.hpp"
 #include "scene/case_limits.hpp"
-#include "scene/motion.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -32,13 +32,14 @@ std::string beyond_step_cap(const Scene& scene, double dt) {
 
 }  // namespace
 
-StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt) {
+StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt, long steps) {
   if (std::string why = beyond_step_cap(scene, dt); !why.empty()) return {false, why, "not run"};
+  if (steps == 0) steps = StabilityWatch::trial_steps(scene, dt);
   try {
     const auto sim = backend.start(scene, dt);
     State state(scene.bodies.size());
     sim->read(state);
-    StabilityWatch watch(scene, dt, state);
+    StabilityWatch watch(scene, dt, state, steps);
     for (long n = 1; n <= watch.steps(); ++n) {
       sim->step();
       sim->read(state);
@@ -48,6 +49,23 @@ StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt) {
   } catch (const std::exception& e) {
     return {false, std::string("error: ") + e.what(), "failed"};
   }
+}
+
+StabilityTrial judge_step(const Backend& backend, const Scene& scene, double dt,
+                          std::optional<double> theory) {
+  StabilityTrial trial = try_step(backend, scene, dt);
+  const long steps = StabilityWatch::trial_steps(scene, dt);
+  const double longer = static_cast<double>(steps) * static_cast<double>(kTheoryProbeFactor);
+  if (!trial.stable || !theory || dt <= *theory || longer > kMaxStepsPerRun) return trial;
+  StabilityTrial probe = try_step(backend, scene, dt, steps * kTheoryProbeFactor);
+  const std::string why = "the step is past the theory's limit of " +
+                          significant_digits(*theory, 3) + " s, so it was run " +
+                          std::to_string(kTheoryProbeFactor) + " times longer than the usual " +
+                          std::to_string(steps) + " steps";
+  probe.reason = probe.stable ? "stable over a longer run (" + why + ")" +
+                                    (probe.reason.empty() ? "" : ": " + probe.reason)
+                              : probe.reason + " (seen because " + why + ")";
+  return probe;
 }
 
 namespace {
@@ -67,6 +85,34 @@ std::optional<StabilityResult> unsupported(const Backend& backend, const Scene& 
 
 namespace {
 
+/// The theory's limit (s) for a course variant named `backend`, where the scene has one.
+std::optional<double> theory_for(const Scene& scene, const std::string& backend) {
+  for (const CourseVariant& v : course_variants(scene))
+    if (v.name == backend)
+      if (auto limit = theoretical_limit(scene, v.integrator)) return limit->dt;
+  return std::nullopt;
+}
+
+/// The theory, where the scene allows one, beside a course variant's result.
+void add_theory(const Scene& scene, StabilityResult& r) {
+  for (const CourseVariant& v : course_variants(scene))
+    if (v.name == r.backend)
+      if (auto limit = theoretical_limit(scene, v.integrator)) {
+        r.theory = limit->dt;
+        r.theory_formula = limit->formula;
+        r.theory_note = limit->note;
+      }
+}
+
+/// Seconds a trial of `scene` at `dt` may take in its child: as a run's limit, for every
+/// step it may take (the usual trial and, past the theory's limit, the longer one).
+double trial_time_limit(const Scene& scene, double dt, double timeout, bool longer) {
+  if (timeout > 0.0) return timeout;
+  const double steps = static_cast<double>(StabilityWatch::trial_steps(scene, dt)) *
+                       (longer ? 1.0 + static_cast<double>(kTheoryProbeFactor) : 1.0);
+  return steps_time_limit(scene, steps);
+}
+
 /// The search's smallest step must keep its trials within the cap (the loader sees to it for
 /// every case it loads); a scene built otherwise is refused before any trial.
 void require_search_within_cap(const Scene& scene) {
@@ -80,10 +126,12 @@ StabilityResult find_stability(const Backend& backend, const Scene& scene) {
   require_search_within_cap(scene);
   if (auto r = unsupported(backend, scene)) return *r;
   StabilitySearch search(scene.stability.dt_min, scene.stability.dt_max);
-  while (auto dt = search.next()) search.record(*dt, try_step(backend, scene, *dt));
+  const std::optional<double> theory = theory_for(scene, backend.name());
+  while (auto dt = search.next()) search.record(*dt, judge_step(backend, scene, *dt, theory));
   StabilityResult r;
   r.backend = backend.name();
   search.fill(r);
+  add_theory(scene, r);
   return r;
 }
 
@@ -108,14 +156,19 @@ std::vector<StabilityResult> find_stability_all(
   std::vector<StabilityResult> out(chosen.size());
   std::vector<StabilitySearch> searches(
       chosen.size(), StabilitySearch(scene.stability.dt_min, scene.stability.dt_max));
+  std::vector<std::optional<double>> theories;
+  for (const Backend* b : chosen) theories.push_back(theory_for(scene, b->name()));
   ChildPool pool(jobs, isolation);
   // Each finished trial queues the backend's next one until its search is over.
   std::function<void(std::size_t)> queue_next = [&](std::size_t i) {
     const Backend& b = *chosen[i];
     if (const auto dt = searches[i].next()) {
       const double step = *dt;
-      // A trial an accuracy run already judged on its own steps is not run again.
-      if (const auto found = known.find({b.name(), step}); found != known.end()) {
+      const std::optional<double> theory = theories[i];
+      // A trial an accuracy run already judged on its own steps is not run again (unless it
+      // is stable past the theory's limit: judge_step() then runs a longer one).
+      if (const auto found = known.find({b.name(), step});
+          found != known.end() && (!found->second.stable || !theory || step <= *theory)) {
         searches[i].record(step, found->second);
         queue_next(i);
         return;
@@ -128,8 +181,8 @@ std::vector<StabilityResult> find_stability_all(
       }
       pool.submit(
           b.name() + " stability at dt " + std::to_string(step),
-          [&b, &scene, step] { return wire::encode(try_step(b, scene, step)); },
-          time_limit(scene, step, timeout),
+          [&b, &scene, step, theory] { return wire::encode(judge_step(b, scene, step, theory)); },
+          trial_time_limit(scene, step, timeout, theory && step > *theory),
           [&, i, step, key](const ChildOutcome& o) {
             const StabilityTrial trial = o.kind == ChildOutcome::Kind::Done
                                              ? wire::decode_trial(o.payload)
@@ -154,15 +207,7 @@ std::vector<StabilityResult> find_stability_all(
     queue_next(i);
   }
   pool.run();
-  // Theory, where the scene allows one, beside each course variant.
-  for (std::size_t i = 0; i < chosen.size(); ++i)
-    for (const CourseVariant& v : course_variants(scene))
-      if (v.name == chosen[i]->name())
-        if (auto limit = theoretical_limit(scene, v.integrator)) {
-          out[i].theory = limit->dt;
-          out[i].theory_formula = limit->formula;
-          out[i].theory_note = limit->note;
-        }
+  for (StabilityResult& r : out) add_theory(scene, r);
   return out;
 }
 

@@ -16,9 +16,21 @@
 
 namespace bb {
 
-/// One run at one step, judged by its energy's growth after the last impulse (which may
-/// add energy at once) over kGrowthWindows windows: see energy_growth.hpp.
-StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt);
+/// One run at one step, `steps` long (StabilityWatch::trial_steps() when 0), judged by its
+/// energy's growth after the last impulse (which may add energy at once) over
+/// kGrowthWindows windows: see energy_growth.hpp.
+StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt, long steps = 0);
+
+/// How many times longer a trial runs, when its step is past the theory's limit and the
+/// usual trial found it stable: growth slow enough to stay small over the case's duration
+/// (an explicit Euler chain's stiffest mode, barely excited) shows over a longer run.
+inline constexpr long kTheoryProbeFactor = 10;
+
+/// try_step(); where `theory` (s, the theory's limit for the backend) lies below `dt` and the
+/// trial reads stable, the verdict of a trial kTheoryProbeFactor times longer instead, which
+/// says so.
+StabilityTrial judge_step(const Backend& backend, const Scene& scene, double dt,
+                          std::optional<double> theory);
 
 /// The whole search for one backend, in this process.
 StabilityResult find_stability(const Backend& backend, const Scene& scene);

@@ -3,29 +3,37 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/motion.hpp"
+#include "scene/case_limits.hpp"
 
 namespace bb {
 
-StabilityWatch::StabilityWatch(const Scene& scene, double dt, const State& start)
-    : scene_(scene), bounds_(divergence_bounds(scene)) {
-  steps_ = static_cast<long>(std::ceil(scene.duration / dt - 1e-9));
+long StabilityWatch::trial_steps(const Scene& scene, double dt) {
+  const long whole = static_cast<long>(std::ceil(scene.duration / dt - 1e-9));
+  return std::max(whole, std::min(kMinTrialSteps, static_cast<long>(kMaxStepsPerRun)));
+}
+
+StabilityWatch::StabilityWatch(const Scene& scene, double dt, const State& start, long steps)
+    : scene_(scene),
+      bounds_(divergence_bounds(scene, std::max(scene.duration, static_cast<double>(steps) * dt),
+                                kTrialStopEnergy)),
+      energy_(scene) {
+  steps_ = steps;
   // The energy's growth is judged after the last impulse, which may add energy at once.
   settled_ = scene.impulses.empty()
                  ? 0
                  : std::min(steps_, std::lround(scene.impulses.back().time / dt) + 1);
   judged_ = steps_ - settled_;
   windows_ = std::min<long>(kGrowthWindows, judged_);
-  history_.scale = bounds_.energy_scale;
+  history_.scale = bounds_.scale.total();
   history_.level.reserve(windows_);
   history_.steps.reserve(windows_);
-  e0_ = total_energy(scene, start);
+  e0_ = energy_(start);
 }
 
 bool StabilityWatch::observe(long n, const State& state) {
   if (diverged_ || n != observed_ + 1) return false;
   observed_ = n;
-  const double energy = total_energy(scene_, state);
+  const double energy = energy_(state);
   if (auto why = divergence(scene_, bounds_, state, e0_, energy)) {
     diverged_ = *why;
     return false;

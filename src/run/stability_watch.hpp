@@ -8,6 +8,7 @@
 #include <string>
 
 #include "metrics/energy_growth.hpp"
+#include "physics/energy.hpp"
 #include "run/divergence.hpp"
 #include "run/results.hpp"
 #include "scene/scene.hpp"
@@ -15,10 +16,17 @@
 
 namespace bb {
 
+/// The fewest steps a stability trial takes, past the case's duration when it has fewer.
+inline constexpr long kMinTrialSteps = 1000;
+
 class StabilityWatch {
  public:
-  /// A trial of `scene` at `dt` from the state `start` at t = 0.
-  StabilityWatch(const Scene& scene, double dt, const State& start);
+  /// A trial of `scene` at `dt` from the state `start` at t = 0, `steps` steps long.
+  StabilityWatch(const Scene& scene, double dt, const State& start, long steps);
+  /// Steps a trial of `scene` at `dt` takes: the whole duration, and at least
+  /// kMinTrialSteps (growth slow enough to stay small within a few dozen steps is not
+  /// stability), within the cap every run keeps to.
+  static long trial_steps(const Scene& scene, double dt);
   /// Steps the trial takes: the whole duration.
   long steps() const { return steps_; }
   /// The state after step n (1 to steps(), in order); false once the verdict is in.
@@ -29,6 +37,7 @@ class StabilityWatch {
  private:
   const Scene& scene_;
   DivergenceBounds bounds_;
+  EnergyMeter energy_;
   long steps_ = 0;
   long settled_ = 0;  ///< steps before the energy is judged: up to the last impulse
   long judged_ = 0;

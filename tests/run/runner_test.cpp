@@ -7,6 +7,7 @@
 
 #include "course/course_backend.hpp"
 #include "metrics/errors.hpp"
+#include "physics/energy.hpp"
 #include "report/summary_tables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
@@ -478,7 +479,7 @@ mass = 1.0
 position = [0.0, 0.0, 0.0]
 wind_force = [1000.0, 0.0, 0.0]
 )");
-  EXPECT_GE(divergence_bounds(scene).travel, 0.5 * 1000.0 * 4.0);
+  EXPECT_GE(divergence_bounds(scene).travel[0], 0.5 * 1000.0 * 4.0);
   int exact = 0;
   for (const RunRecord& r : every_run(scene)) {
     EXPECT_NE(r.status, RunStatus::Diverged) << r.backend << ": " << r.reason;
@@ -495,11 +496,14 @@ wind_force = [1000.0, 0.0, 0.0]
 TEST(Runner, TheDivergenceBoundsCountTheImpulses) {
   const Scene scene = load_case(test::source_path("cases/push.toml"));
   const DivergenceBounds bounds = divergence_bounds(scene);
-  // Each ball's reach: at most J / m times the run, plus its place and size, ten times over.
-  EXPECT_GE(bounds.travel, 10.0 * 2.0 * scene.duration);
-  EXPECT_LT(bounds.travel, 100.0 * (2.0 * scene.duration + 2.0));
+  // Each ball's reach: at least J / m times the run, ten times over, and of that order.
+  for (double travel : bounds.travel) {
+    EXPECT_GE(travel, 10.0 * 0.5 * scene.duration);
+    EXPECT_LT(travel, 100.0 * (2.0 * scene.duration + 2.0));
+  }
   // The energy the impulses can give: at least the light ball's 1/2 (2 m/s)^2 x 1 kg.
-  EXPECT_GE(bounds.energy_scale, 2.0);
+  EXPECT_GE(bounds.scale.impulses, 2.0);
+  EXPECT_LT(bounds.scale.total(), 100.0);
 }
 
 }  // namespace
