@@ -12,9 +12,9 @@ void on_signal(int signal) {
   if (arrived == 0) arrived = signal;
 }
 
-/// The signals that stop a command cleanly: Ctrl-C, a kill, a closed terminal, and a
-/// reader that went away (`beachball run ... | head -1`).
-constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+/// The signals that stop a command cleanly: Ctrl-C, a kill, a closed terminal, a reader
+/// that went away (`beachball run ... | head -1`), and a file grown past `ulimit -f`.
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXFSZ};
 
 void set_handler(void (*handler)(int)) {
   struct sigaction action {};
@@ -37,6 +37,21 @@ void install_interrupt_handlers() {
 
 void restore_default_signal_handlers() {
   set_handler(SIG_DFL);
+  // A child's file past the limit fails as a full disk does (its writes say so), rather
+  // than killing the run.
+  signal(SIGXFSZ, SIG_IGN);
+}
+
+std::string interrupt_description() {
+  const int s = arrived;
+  if (s == SIGXFSZ) return "stopped by signal 25: file size limit reached (ulimit -f)";
+  return "interrupted by signal " + std::to_string(s);
+}
+
+void stop_if_interrupted(const std::string& during) {
+  if (arrived != 0)
+    throw Interrupted("stopped during " + during +
+                      "; what was under way was rolled back, and earlier outputs are as they were");
 }
 
 int interrupt_signal() {
