@@ -10,6 +10,8 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
+#include <sstream>
 
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -51,10 +53,11 @@ Stopped stop_while_writing(pid_t pid, const std::string& parent, int signal) {
   return {code, std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count()};
 }
 
-/// The temporaries of beachball's in `folder`, one string ("" when none).
-std::string leftovers(const std::string& folder) {
-  return test::temporaries_in(folder);
-}
+/// $TMPDIR set to `value` while it lives (a failed assertion returns early: it is unset).
+struct TmpdirAs {
+  explicit TmpdirAs(const std::string& value) { setenv("TMPDIR", value.c_str(), 1); }
+  ~TmpdirAs() { unsetenv("TMPDIR"); }
+};
 
 /// Three cases: two minimal ones and the stacked balls (no reference: the fallback).
 std::string three_cases(const std::string& dir) {
@@ -92,7 +95,7 @@ TEST(StopWhileWriting, ACachedReportStopsAtOnceAndWritesNothing) {
   EXPECT_NE(test::file_bytes(log).find("interrupted by signal 15"), std::string::npos)
       << test::file_bytes(log);
   EXPECT_FALSE(fs::exists(dir + "/second")) << "a report, or an empty --out, was left";
-  EXPECT_EQ(leftovers(dir), "");
+  EXPECT_EQ(test::temporaries_in(dir), "");
 }
 
 TEST(StopWhileWriting, AMergeStopsAtOnceAndLeavesNothingBehind) {
@@ -107,7 +110,7 @@ TEST(StopWhileWriting, AMergeStopsAtOnceAndLeavesNothingBehind) {
   // Its temporary folders, if it made any, would go to $TMPDIR.
   const std::string tmp = dir + "/tmp";
   fs::create_directories(tmp);
-  setenv("TMPDIR", tmp.c_str(), 1);
+  std::optional<TmpdirAs> tmpdir(tmp);
   const auto merge = [&](const std::string& out) {
     std::vector<std::string> args = {"merge", dir + "/shard1", dir + "/shard2", "--cases"};
     for (const std::string& c : words(cases)) args.push_back(c);
@@ -120,18 +123,17 @@ TEST(StopWhileWriting, AMergeStopsAtOnceAndLeavesNothingBehind) {
   EXPECT_EQ(term.exit_code, 128 + SIGTERM) << test::file_bytes(dir + "/merged.log");
   EXPECT_LT(term.seconds, 5.0);
   EXPECT_FALSE(fs::exists(dir + "/merged"));
-  EXPECT_EQ(leftovers(dir), "");
+  EXPECT_EQ(test::temporaries_in(dir), "");
   // Killed outright, it leaves nothing in $TMPDIR either (the next merge would clear what
   // it leaves beside its --out).
   const Stopped killed = stop_while_writing(merge("killed"), dir, SIGKILL);
   ASSERT_GE(killed.seconds, 0.0) << test::file_bytes(dir + "/killed.log");
   EXPECT_EQ(killed.exit_code, 128 + SIGKILL);
-  EXPECT_TRUE(fs::is_empty(tmp)) << leftovers(tmp);
+  EXPECT_TRUE(fs::is_empty(tmp)) << test::temporaries_in(tmp);
   // Without a usable $TMPDIR a merge works all the same.
-  setenv("TMPDIR", (dir + "/no such folder").c_str(), 1);
+  tmpdir.emplace(dir + "/no such folder");
   const pid_t whole = merge("whole");
   EXPECT_EQ(test::wait_for(whole), 0) << test::file_bytes(dir + "/whole.log");
-  unsetenv("TMPDIR");
   EXPECT_TRUE(fs::exists(dir + "/whole/README.md"));
 }
 
