@@ -20,7 +20,15 @@ void set_handler(void (*handler)(int)) {
   struct sigaction action {};
   action.sa_handler = handler;
   sigemptyset(&action.sa_mask);
-  for (int s : kStopSignals) sigaction(s, &action, nullptr);
+  for (int s : kStopSignals) {
+    // A file size limit whose signal the caller ignores (`trap '' XFSZ`) makes a write fail
+    // as a full disk does, and is left so.
+    struct sigaction before {};
+    if (s == SIGXFSZ && handler != SIG_DFL && sigaction(s, nullptr, &before) == 0 &&
+        before.sa_handler == SIG_IGN)
+      continue;
+    sigaction(s, &action, nullptr);
+  }
 }
 
 sigset_t stop_signal_set() {
