@@ -207,8 +207,8 @@ int main(int argc, char** argv) {
       if (const std::string problem = cache->store().problem(); !problem.empty()) {
         fmt::print(stderr,
                    "note: no results are kept or reused: the folder of kept results {} "
-                   "cannot be used: {} (--cache DIR chooses another, --cache off says "
-                   "so)\n",
+                   "cannot be used: {} (--cache DIR names another; --cache off keeps "
+                   "nothing without this note)\n",
                    values.cache, problem);
         cache.reset();
       } else {
