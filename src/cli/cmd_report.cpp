@@ -182,17 +182,19 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
         options.isolation, options.timeout, known_trials(all.back().runs), options.cache);
     all.back().time_spent.stability = stability.lap();
   }
-  // Pages are written only when every case has run, and a signal waits until all are.
+  // Pages are written only when every case has run. A signal stops the writing and rolls it
+  // back (the batch and the folder beside go), or waits for the switch (a few renames).
   {
-    const DeferSignals writing;
     const KeptDrawings drawings = keep_drawings(options);
     FileBatch batch(report.target());
     std::vector<std::string> rotation_plots;
     for (const CaseResults& r : all)
       rotation_plots.push_back(write_case_outputs(r, batch).rotation);
+    stop_if_interrupted("the report's index");
     batch.write("README.md", index_page(all, rotation_plots, options.cost, options.jobs));
     batch.write("claims.md", claims_page(all));
     report.drop_old_report(batch);
+    const DeferSignals switching;
     batch.commit();
     report.commit();
   }

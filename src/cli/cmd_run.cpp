@@ -10,7 +10,7 @@
 namespace bb::cli {
 
 int run_command(const std::vector<std::string>& paths, const std::string& out,
-                const RunOptions& options) {
+                const RunOptions& options, bool all_runs_first) {
   // Every case is loaded and checked before anything runs or is written.
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
@@ -18,19 +18,26 @@ int run_command(const std::vector<std::string>& paths, const std::string& out,
   const OutputFolder folder(out);
   // A file in the way that beachball did not write stops the command now, not after the runs.
   for (const Scene& scene : scenes) check_outputs_are_ours(folder.path(), case_output_names(scene));
-  for (const Scene& scene : scenes) {
+  const auto run_one = [&](const Scene& scene) {
     Progress progress(progress_units(scene, registry, options));
     RunOptions with_progress = options;
     with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
-    const CaseResults results = run_case(scene, registry, with_progress);
+    return run_case(scene, registry, with_progress);
+  };
+  std::vector<CaseResults> ready;
+  if (all_runs_first)
+    for (const Scene& scene : scenes) ready.push_back(run_one(scene));
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const Scene& scene = scenes[i];
+    const CaseResults results = all_runs_first ? std::move(ready[i]) : run_one(scene);
     // A case's files replace its earlier set as one unit, once all are written; a signal
-    // waits for that and then stops the program.
+    // stops the writing and rolls it back, or waits for the switch (a few renames).
     {
-      const DeferSignals writing;
       const KeptDrawings drawings = keep_drawings(options);
       FileBatch batch(folder.path());
       write_case_outputs(results, batch);
       for (const std::string& old : recorded_case_files(folder.path(), scene.name)) batch.drop(old);
+      const DeferSignals switching;
       batch.commit();
     }
     fmt::print("{} - {}  (report_dt = {} s)\n\n{}", scene.name, scene.title,

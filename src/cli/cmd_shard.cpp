@@ -15,8 +15,8 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "files/atomic_file.hpp"
-#include "files/owned_temporary.hpp"
 #include "files/result_cache.hpp"
+#include "run/build_identity.hpp"
 #include "run/stability.hpp"
 #include "scene/case_error.hpp"
 #include "scene/text.hpp"
@@ -134,6 +134,18 @@ void check_shard_folder(const std::string& dir) {
   }
 }
 
+/// Refuses, before anything is written, a shard holding an entry that is not whole: a merge
+/// would otherwise write the cases before it and stop at it.
+void check_entries(const std::string& dir) {
+  const std::vector<std::string> damaged = ResultCache(dir, 0).damaged_entries();
+  if (!damaged.empty())
+    throw CaseError(
+        dir, 0,
+        fmt::format("holds {} kept result(s) that are not whole (cut short or "
+                    "damaged), {}{}: run that shard again",
+                    damaged.size(), damaged.front(), damaged.size() > 1 ? ", ..." : ""));
+}
+
 }  // namespace
 
 int shard_command(const std::vector<std::string>& paths, const std::string& out,
@@ -142,7 +154,8 @@ int shard_command(const std::vector<std::string>& paths, const std::string& out,
   const Registry registry = Registry::load();
   check_before_work(scenes, options);
   check_shard_folder(out);
-  fs::create_directories(out);
+  if (const std::string problem = options.cache->store().problem(); !problem.empty())
+    throw CaseError(out, 0, "cannot keep the shard's results: " + problem);
   const Shard shard = *options.shard;
   int units = 0;
   for (const Scene& scene : scenes) {
@@ -167,7 +180,7 @@ int shard_command(const std::vector<std::string>& paths, const std::string& out,
           options.isolation, options.timeout, known_trials(results.runs), options.cache);
   }
   const ShardManifest manifest{shard,
-                               options.cache->program(),
+                               options.cache->build(),
                                command,
                                backends_text(options),
                                dts_text(options),
@@ -183,9 +196,13 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
                   const std::string& out, const RunOptions& options) {
   const std::vector<Scene> scenes = load_cases(paths);
   const std::map<std::string, std::string> cases = case_digests(scenes);
+  // The build is every piece of code this process runs: the plugins (and their engines'
+  // libraries) are loaded first.
+  const Registry registry = Registry::load();
+  const std::string build = build_digest();
   // Every shard of one set, made by this build from these case files: checked before any work.
   std::vector<ShardManifest> manifests;
-  std::set<int> seen;
+  std::map<int, std::string> folders;
   for (const std::string& dir : shards) {
     ShardManifest m = read_manifest(dir);
     const ShardManifest& first = manifests.empty() ? m : manifests.front();
@@ -194,14 +211,14 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
           dir, 0,
           fmt::format("is shard {}/{}, of another split than shard {}/{}", m.shard.index,
                       m.shard.count, first.shard.index, first.shard.count));
-    if (!seen.insert(m.shard.index).second)
+    if (!folders.emplace(m.shard.index, dir).second)
       throw CaseError(
           dir, 0,
           fmt::format("is shard {}/{}, as another folder given is", m.shard.index, m.shard.count));
-    if (m.build != program_digest())
+    if (m.build != build)
       throw CaseError(dir, 0,
-                      "was made by another build of beachball: merge with the build that ran "
-                      "the shards");
+                      "was made by another build of beachball (its program, its libraries or its "
+                      "plugins differ): merge with the build that ran the shards");
     if (m.command != first.command || m.backends != first.backends || m.dts != first.dts)
       throw CaseError(dir, 0,
                       fmt::format("is a shard of `{} --backends {} --dt {}`, the first of `{} "
@@ -228,24 +245,12 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
   if (manifests.empty()) throw CaseError("merge", 0, "give the shards' folders");
   const int count = manifests.front().shard.count;
   for (int i = 1; i <= count; ++i)
-    if (!seen.count(i))
+    if (!folders.count(i))
       throw CaseError(shards.front(), 0,
                       fmt::format("shard {}/{} is missing: merge needs every shard", i, count));
-  // The shards' kept results, together in a temporary folder of this invocation's.
-  const OwnedTemporary merged(fs::temp_directory_path().string(), "beachball-merge-");
-  for (const std::string& dir : shards)
-    for (const auto& entry : fs::directory_iterator(dir)) {
-      if (entry.path().filename() == kShardManifest) continue;
-      const fs::path to = fs::path(merged.path()) / entry.path().filename();
-      std::error_code ec;
-      if (fs::exists(to, ec)) continue;
-      fs::create_hard_link(entry.path(), to, ec);
-      if (ec) fs::copy_file(entry.path(), to);
-    }
-  RunCache kept(merged.path(), false);
-  kept.require_kept(shards.front(),
-                    "the shards hold no result for a run this report needs, "
-                    "though they were made from these case files by this build");
+  for (const auto& [index, dir] : folders) check_entries(dir);
+  // The shards' kept results, read where they are: nothing is copied, nothing left behind.
+  RunCache kept(folders);
   const ShardManifest& made = manifests.front();
   RunOptions o = options;
   o.cache = &kept;
@@ -253,8 +258,10 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
   if (o.cost) o.cost_options.min_seconds = std::stod(made.cost);
   o.backends = listed(made.backends);
   for (const std::string& dt : listed(made.dts)) o.dts.push_back(std::stod(dt));
-  const int code =
-      made.command == ShardOf::run ? run_command(paths, out, o) : report_command(paths, out, o);
+  // Every case's results before any file is written: a result no shard holds stops the merge
+  // with nothing written.
+  const int code = made.command == ShardOf::run ? run_command(paths, out, o, true)
+                                                : report_command(paths, out, o);
   fmt::print("merged {} shards: {} results kept by them, {} run here\n", count, kept.reused(),
              kept.ran());
   return code;

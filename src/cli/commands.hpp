@@ -38,8 +38,10 @@ std::vector<std::string> case_output_names(const Scene& scene);
 void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options);
 
 int list_command(const std::vector<std::string>& paths);
+/// `run`; with `all_runs_first` (a merge), every case's results are had before any case's
+/// files are written.
 int run_command(const std::vector<std::string>& paths, const std::string& out,
-                const RunOptions& options);
+                const RunOptions& options, bool all_runs_first = false);
 int report_command(const std::vector<std::string>& paths, const std::string& out,
                    const RunOptions& options);
 int stability_command(const std::vector<std::string>& paths, const std::string& out,

@@ -172,7 +172,7 @@ int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) 
 
 /// A signal's stop: 128 + the signal, as a shell reports it.
 int interrupted(const char* what) {
-  fmt::print(stderr, "\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(), what);
+  fmt::print(stderr, "\nbeachball: {}: {}\n", bb::interrupt_description(), what);
   return 128 + bb::interrupt_signal();
 }
 
@@ -197,10 +197,24 @@ int main(int argc, char** argv) {
     // A shard of a report or run keeps its results in its own folder; a merge reads the
     // shards'.
     const bool shard_folder = options.shard && (*commands.report || *commands.run);
-    if (shard_folder)
+    if (shard_folder) {
       options.cache = &cache.emplace(values.out, values.fresh);
-    else if (!values.cache.empty() && values.cache != "off" && !*commands.list && !*commands.merge)
-      options.cache = &cache.emplace(values.cache, values.fresh);
+      // The merge must give what the report run whole gives: a crash or a timeout too.
+      cache->keep_every_outcome();
+    } else if (values.cache != "off" && !*commands.list && !*commands.merge) {
+      cache.emplace(values.cache, values.fresh);
+      // A folder that cannot be used is said, not skipped in silence.
+      if (const std::string problem = cache->store().problem(); !problem.empty()) {
+        fmt::print(stderr,
+                   "note: no results are kept or reused: the folder of kept results {} "
+                   "cannot be used: {} (--cache DIR names another; --cache off keeps "
+                   "nothing without this note)\n",
+                   values.cache, problem);
+        cache.reset();
+      } else {
+        options.cache = &*cache;
+      }
+    }
     bb::install_interrupt_handlers();
     const int code = dispatch(commands, values, options);
     if (cache && cache->reused() + cache->ran() > 0) {
@@ -212,6 +226,8 @@ int main(int argc, char** argv) {
   } catch (const bb::Interrupted& e) {
     return interrupted(e.what());
   } catch (const bb::CaseError& e) {
+    // A write that failed because a signal arrived (a file past `ulimit -f`) is its stop.
+    if (bb::interrupt_signal() != 0) return interrupted(e.what());
     fmt::print(stderr, "beachball: {}\n", e.what());
     return bb::cli::kExitBadInput;
   } catch (const std::exception& e) {

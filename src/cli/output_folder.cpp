@@ -148,18 +148,31 @@ OutputFolder::OutputFolder(const std::string& given) : given_(given) {
     if (stat(given.c_str(), &st) != 0)
       throw CaseError(given, 0, "is a symbolic link to nothing; point it at a folder or remove it");
     if (!S_ISDIR(st.st_mode)) throw CaseError(given, 0, "is not a folder");
+  } else {
+    made_ = true;
   }
-  check_writable(given);
-  std::error_code ec;
-  path_ = fs::canonical(given, ec).string();
-  if (ec) throw CaseError(given, 0, "cannot resolve the output folder: " + ec.message());
-  // The lock comes before anything in the folder is touched: a second beachball, in this
-  // PID namespace or another, stops here.
-  lock_ = std::make_unique<FolderLock>(path_);
+  try {
+    check_writable(given);
+    std::error_code ec;
+    path_ = fs::canonical(given, ec).string();
+    if (ec) throw CaseError(given, 0, "cannot resolve the output folder: " + ec.message());
+    // The lock comes before anything in the folder is touched: a second beachball, in this
+    // PID namespace or another, stops here.
+    lock_ = std::make_unique<FolderLock>(path_);
+  } catch (const CaseError&) {
+    // A folder refused is not left behind made and empty.
+    if (made_) rmdir(given.c_str());
+    throw;
+  }
   finish_interrupted_switches(path_);
   if (abandoned_marker(path_ + "/" + kOwnerMarker))
     std::remove((path_ + "/" + kOwnerMarker).c_str());
   remove_abandoned_temporaries(fs::path(path_).parent_path().string(), kBesidePrefix);
+}
+
+OutputFolder::~OutputFolder() {
+  // rmdir removes only an empty folder: anything written there stays.
+  if (made_ && !path_.empty()) rmdir(path_.c_str());
 }
 
 void check_outputs_are_ours(const std::string& folder, const std::vector<std::string>& names) {

@@ -29,6 +29,11 @@ void check_writable(const std::string& folder);
 class OutputFolder {
  public:
   explicit OutputFolder(const std::string& given);
+  /// Removes the folder again when this made it and nothing was written into it (a command
+  /// that stopped before its outputs leaves no empty folder).
+  ~OutputFolder();
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
   /// The folder as the user named it, for messages.
   const std::string& given() const { return given_; }
   /// The real folder written.
@@ -37,6 +42,7 @@ class OutputFolder {
  private:
   std::string given_;
   std::string path_;
+  bool made_ = false;  ///< this created the folder
   std::unique_ptr<FolderLock> lock_;
 };
 

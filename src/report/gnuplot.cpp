@@ -19,6 +19,7 @@
 
 #include "report/backend_style.hpp"
 #include "report/plot_layout.hpp"
+#include "run/interrupt.hpp"
 
 namespace bb {
 
@@ -109,9 +110,15 @@ std::string run_gnuplot(const std::string& script, const std::string& log) {
     _exit(127);
   }
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
+  while (waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) return std::string("cannot wait for gnuplot: ") + std::strerror(errno);
+    // A signal that stops the program need not wait for the drawing.
+    if (interrupt_signal() != 0) kill(pid, SIGKILL);
+  }
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  // Its SVG grew past this process's file size limit (which it inherits): the program's own
+  // stop, as if its own write had (interrupt.hpp).
+  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXFSZ) raise(SIGXFSZ);
   return WIFEXITED(status) ? "exit " + std::to_string(WEXITSTATUS(status))
                            : "killed by signal " + std::to_string(WTERMSIG(status));
 }
@@ -120,6 +127,9 @@ std::string run_gnuplot(const std::string& script, const std::string& log) {
 
 std::string draw(const std::string& script_body, const std::string& data, FileBatch& batch,
                  const std::string& name, int height) {
+  // A signal stops the drawing between two plots, and gnuplot's failure when the signal
+  // killed it too is the signal's stop, not a failure of its own.
+  stop_if_interrupted(name);
   // The SVG holds no path: the same script, data, size and gnuplot draw the same bytes.
   const std::string key = drawings_cache ? digest("drawing\n" + gnuplot_version().value_or("") +
                                                   terminal(height) + script_body + "\n" + data)
@@ -137,6 +147,7 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
                    terminal(height) + "set output " + quote(output) + "\n" +
                        "data = " + quote((temp / "data.txt").string()) + "\n" + script_body);
   const std::string ended = run_gnuplot((temp / "plot.gp").string(), (temp / "log.txt").string());
+  stop_if_interrupted(name);
   if (!ended.empty() || !complete_svg(output)) {
     std::ifstream log(temp / "log.txt");
     std::string said(std::istreambuf_iterator<char>(log), {});

@@ -29,17 +29,43 @@ double step_seconds(const RunRecord& run) {
   return run.cost ? run.cost->ns_per_step * 1e-9 * static_cast<double>(run.steps) : 0.0;
 }
 
+/// What the accuracy runs took: `runs` that ran in `seconds` on `jobs`, and `reused` taken
+/// from kept results, which took no run's time (a per-run figure counts only the runs that
+/// ran: docs/scale.md's c).
+std::string accuracy_runs_text(long runs, long reused, double seconds, double steps, int jobs) {
+  const std::string kept = reused == 0
+                               ? ""
+                               : fmt::format(
+                                     " {} more were taken from kept results, not run, and are not "
+                                     "counted here.",
+                                     reused);
+  if (runs == 0)
+    return fmt::format("The accuracy runs: none ran ({:.1f} s on {} {}).{}\n\n", seconds, jobs,
+                       jobs == 1 ? "job" : "jobs", kept);
+  return fmt::format(
+      "The accuracy runs: {} ran (the references and every backend at every dt), {:.1f} s on {} "
+      "{}, so {:.3f} s of a core per run on average.{} Their steps alone, from their costs, take "
+      "{:.1f} s of one core: however little else the harness did, the accuracy runs would take no "
+      "less than {:.1f} s with --jobs {}.\n\n",
+      runs, seconds, jobs, jobs == 1 ? "job" : "jobs", seconds * jobs / static_cast<double>(runs),
+      kept, steps, steps / jobs, jobs);
+}
+
 }  // namespace
 
 std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
   TimeSpent sum;
-  // The accuracy runs, and what their steps alone take of one core (their costs).
-  long runs = 0;
+  // The accuracy runs this report ran, and what their steps alone take of one core (their
+  // costs); a run taken from kept results took no run's time, and is counted apart.
+  long runs = 0, reused = 0;
   double steps = 0.0;
+  const auto count = [&](const RunRecord& run) {
+    ++(run.reused ? reused : runs);
+    if (!run.reused) steps += step_seconds(run);
+  };
   for (const CaseResults& r : all) {
-    runs += 1 + static_cast<long>(r.runs.size());
-    steps += step_seconds(r.reference_run);
-    for (const RunRecord& run : r.runs) steps += step_seconds(run);
+    count(r.reference_run);
+    for (const RunRecord& run : r.runs) count(run);
   }
   std::vector<const CaseResults*> cases;
   for (const CaseResults& r : all) {
@@ -63,15 +89,7 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
          "parallel, measured), the serial cost pass, the stability search and the sweeps; "
          "writing the pages is not counted. Measured like cost, so they change from one run "
          "to the next.\n\n" +
-         fmt::format(
-             "The accuracy runs: {} (the references and every backend at every dt), {:.1f} s "
-             "on {} {}, so {:.3f} s of a core per run on average. Their steps alone, from their "
-             "costs, take {:.1f} s of one core: however little else the harness did, the "
-             "accuracy runs would take no less than {:.1f} s with --jobs {}.\n\n",
-             runs, sum.accuracy, jobs, jobs == 1 ? "job" : "jobs",
-             runs > 0 ? sum.accuracy * jobs / static_cast<double>(runs) : 0.0, steps, steps / jobs,
-             jobs) +
-         render_markdown(t);
+         accuracy_runs_text(runs, reused, sum.accuracy, steps, jobs) + render_markdown(t);
 }
 
 }  // namespace bb

@@ -87,6 +87,12 @@ RunRecord record_from(const ChildOutcome& outcome, const std::string& backend,
   return run;
 }
 
+/// Whether a backend's finest run, as it came back, is what its coarser runs are measured
+/// against in their children: ok and written whole for them to read (summarised).
+bool measures_the_others(const RunRecord& finest) {
+  return finest.status == RunStatus::Ok && finest.summarised;
+}
+
 std::string label(const std::string& backend, std::optional<double> dt) {
   return dt ? backend + " at dt " + format_dt(*dt) : backend;
 }
@@ -113,6 +119,7 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
     const bool judge = shown_dt.has_value();
     if (const auto kept = look_up && options.cache ? options.cache->find(key) : std::nullopt) {
       slot = wire::decode_run(*kept);
+      slot.reused = true;
       progress(what);
       if (then) then();
       return;
@@ -127,8 +134,8 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
         time_limit(scene, dt, options.timeout),
         [&slot, &b, shown_dt, what, &progress, then, key, &options](const ChildOutcome& o) {
           slot = record_from(o, b.name(), shown_dt);
-          if (!key.empty() && RunCache::repeatable(slot))
-            options.cache->keep(key, wire::encode(slot));
+          if (!key.empty())
+            options.cache->keep(key, wire::encode(slot), RunCache::repeatable(slot));
           progress(what);
           if (then) then();
         });
@@ -166,12 +173,26 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
           std::vector<std::size_t> family = {i};
           for (std::size_t j = i; j-- > 0 && jobs[j].backend == jobs[i].backend;)
             family.push_back(j);
-          std::vector<std::string> keys;
-          for (std::size_t j : family)
-            keys.push_back(key_of(*jobs[j].backend, jobs[j].dt, "fallback"));
+          // A coarser run's key says what it was measured against: this selection's finest run
+          // (another selection of dts has another finest), or nothing when that one failed
+          // (it comes back whole, and the caller measures it).
+          const auto family_keys = [&, i, family](bool against_finest) {
+            std::vector<std::string> keys = {
+                key_of(*jobs[i].backend, jobs[i].dt, "fallback finest")};
+            const std::string role =
+                against_finest ? "fallback against " + exact_number(jobs[i].dt) : "fallback whole";
+            for (std::size_t k = 1; k < family.size(); ++k)
+              keys.push_back(key_of(*jobs[family[k]].backend, jobs[family[k]].dt, role));
+            return keys;
+          };
+          const auto kept_finest =
+              options.cache ? options.cache->peek(family_keys(true).front()) : std::nullopt;
+          const std::vector<std::string> keys =
+              family_keys(!kept_finest || measures_the_others(wire::decode_run(*kept_finest)));
           if (const auto kept = options.cache ? options.cache->find_all(keys) : std::nullopt) {
             for (std::size_t k = 0; k < family.size(); ++k) {
               out.runs[family[k]] = wire::decode_run((*kept)[k]);
+              out.runs[family[k]].reused = true;
               progress(label(jobs[family[k]].backend->name(), jobs[family[k]].dt));
             }
             continue;
@@ -186,16 +207,17 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
           };
           job(
               i, finest,
-              [&, i, file, family, keys] {
-                const bool ok = out.runs[i].status == RunStatus::Ok && out.runs[i].summarised;
+              [&, i, file, family, family_keys] {
+                const bool ok = measures_the_others(out.runs[i]);
+                const std::vector<std::string> keys = family_keys(ok);
                 // Without it they come back whole, for the caller to compare with whatever finer
-                // run did finish (case_runner.cpp says which dt that was): not kept.
+                // run did finish (case_runner.cpp says which dt that was), and are kept whole.
                 const Finish against_finest = [&scene, file](RunRecord& run) {
                   const RunRecord finest = read_run(file);
                   summarise_in_child(scene, run, finest);
                 };
                 for (std::size_t k = 1; k < family.size(); ++k)
-                  job(family[k], ok ? against_finest : nullptr, nullptr, ok ? keys[k] : "", false);
+                  job(family[k], ok ? against_finest : nullptr, nullptr, keys[k], false);
               },
               keys.front(), false);
         }

@@ -13,6 +13,7 @@
 #include "run/cost_pass.hpp"
 #include "run/engine_catalogue.hpp"
 #include "run/gates.hpp"
+#include "run/interrupt.hpp"
 #include "run/run_summary.hpp"
 #include "run/stopwatch.hpp"
 #include "run/sweep_runner.hpp"
@@ -234,6 +235,8 @@ void fit_orders(const Scene& scene, CaseResults& out) {
 }
 
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options) {
+  // Between cases too: kept results take no child process, whose pool would see the signal.
+  stop_if_interrupted("the runs of case " + scene.name);
   check_backend_names(scene, options);
   const std::vector<double> dts = selected_dts(scene, options);
   CaseResults out;

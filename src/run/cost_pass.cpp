@@ -38,8 +38,12 @@ void apply_timings(const std::vector<RunRecord*>& runs, const std::vector<Measur
   }
 }
 
+/// What a shard keeps of a measurement that crashed or timed out (its runs have no cost).
+constexpr const char* kNotTimed = "not timed: the measurement did not come back";
+
 /// What decides a batch's timings beyond the backend and the case: each run's step and
 /// calls, and how the pass times them.
+
 std::string cost_role(const std::vector<Measure>& measures, const CostOptions& cost) {
   std::string role = "cost";
   for (const Measure& m : measures)
@@ -83,9 +87,12 @@ void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
       options.cache ? options.cache->key(scene, cost_role(measures, cost), backend, std::nullopt)
                     : "";
   if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
-    const std::size_t line = kept->find('\n');
-    apply_timings(runs, measures, wire::decode_timings(kept->substr(line + 1)),
-                  kept->substr(0, line));
+    // A measurement that did not come back, kept by a shard for its merge: no cost.
+    if (*kept != kNotTimed) {
+      const std::size_t line = kept->find('\n');
+      apply_timings(runs, measures, wire::decode_timings(kept->substr(line + 1)),
+                    kept->substr(0, line));
+    }
     for (RunRecord* run : runs) progress("cost of " + run->backend);
     return;
   }
@@ -100,9 +107,12 @@ void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
       limit,
       [runs, measures, progress, key, &options](const ChildOutcome& outcome) {
         for (RunRecord* run : runs) progress("cost of " + run->backend);
-        if (outcome.kind != ChildOutcome::Kind::Done) return;
+        if (outcome.kind != ChildOutcome::Kind::Done) {
+          if (!key.empty()) options.cache->keep(key, kNotTimed, false);
+          return;
+        }
         apply_timings(runs, measures, wire::decode_timings(outcome.payload), "");
-        if (!key.empty()) options.cache->keep(key, utc_now() + "\n" + outcome.payload);
+        if (!key.empty()) options.cache->keep(key, utc_now() + "\n" + outcome.payload, true);
       });
 }
 

@@ -12,15 +12,23 @@ void on_signal(int signal) {
   if (arrived == 0) arrived = signal;
 }
 
-/// The signals that stop a command cleanly: Ctrl-C, a kill, a closed terminal, and a
-/// reader that went away (`beachball run ... | head -1`).
-constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+/// The signals that stop a command cleanly: Ctrl-C, a kill, a closed terminal, a reader
+/// that went away (`beachball run ... | head -1`), and a file grown past `ulimit -f`.
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXFSZ};
 
 void set_handler(void (*handler)(int)) {
   struct sigaction action {};
   action.sa_handler = handler;
   sigemptyset(&action.sa_mask);
-  for (int s : kStopSignals) sigaction(s, &action, nullptr);
+  for (int s : kStopSignals) {
+    // A file size limit whose signal the caller ignores (`trap '' XFSZ`) makes a write fail
+    // as a full disk does, and is left so.
+    struct sigaction before {};
+    if (s == SIGXFSZ && handler != SIG_DFL && sigaction(s, nullptr, &before) == 0 &&
+        before.sa_handler == SIG_IGN)
+      continue;
+    sigaction(s, &action, nullptr);
+  }
 }
 
 sigset_t stop_signal_set() {
@@ -37,6 +45,21 @@ void install_interrupt_handlers() {
 
 void restore_default_signal_handlers() {
   set_handler(SIG_DFL);
+  // A child's file past the limit fails as a full disk does (its writes say so), rather
+  // than killing the run.
+  signal(SIGXFSZ, SIG_IGN);
+}
+
+std::string interrupt_description() {
+  const int s = arrived;
+  if (s == SIGXFSZ) return "stopped by signal 25: file size limit reached (ulimit -f)";
+  return "interrupted by signal " + std::to_string(s);
+}
+
+void stop_if_interrupted(const std::string& during) {
+  if (arrived != 0)
+    throw Interrupted("stopped during " + during +
+                      "; what was under way was rolled back, and earlier outputs are as they were");
 }
 
 int interrupt_signal() {

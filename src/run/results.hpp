@@ -73,6 +73,9 @@ struct RunRecord {
   double position_scale = 0.0;  ///< largest |position| over the samples (m)
   double travel = 0.0;          ///< largest distance a body moves from its start (m)
   bool summarised = false;      ///< errors, observables and series measured in the child
+  /// Taken from kept results, not run by this invocation (where the time went counts only
+  /// runs that ran); never written to the results or the wire.
+  bool reused = false;
 };
 
 struct ReferenceInfo {

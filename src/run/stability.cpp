@@ -188,7 +188,9 @@ std::vector<StabilityResult> find_stability_all(
                                              ? wire::decode_trial(o.payload)
                                              : StabilityTrial{false, o.reason, "failed"};
             // A trial that did not finish (a crash, a timeout) is tried again next time.
-            if (!key.empty() && trial.growth != "failed") cache->keep(key, o.payload);
+            if (!key.empty())
+              cache->keep(key, o.kind == ChildOutcome::Kind::Done ? o.payload : wire::encode(trial),
+                          trial.growth != "failed");
             searches[i].record(step, trial);
             queue_next(i);
           });

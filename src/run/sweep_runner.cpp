@@ -75,7 +75,9 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
     // The point's rows depend on the backends asked for, too.
     std::string what = sweep.parameter + " = " + exact_number(value) + "; backends:";
     for (const std::string& b : options.backends) what += " " + b;
-    const std::string key = options.cache ? options.cache->key(scene, "sweep point", what) : "";
+    const std::string key =
+        options.cache ? options.cache->key(scene, "sweep point", what, sweep_point_unit(value))
+                      : "";
     if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
       out.points[i].runs = wire::decode_runs(*kept);
       progress("sweep " + label);
@@ -103,9 +105,12 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
                   ? wire::decode_runs(outcome.payload)
                   : lost_point(sweep_point_scene(scene, value), registry, options, outcome);
           const std::vector<RunRecord>& rows = out.points[i].runs;
-          if (!key.empty() && outcome.kind == ChildOutcome::Kind::Done &&
-              std::all_of(rows.begin(), rows.end(), RunCache::repeatable))
-            options.cache->keep(key, outcome.payload);
+          if (!key.empty())
+            options.cache->keep(
+                key,
+                outcome.kind == ChildOutcome::Kind::Done ? outcome.payload : wire::encode(rows),
+                outcome.kind == ChildOutcome::Kind::Done &&
+                    std::all_of(rows.begin(), rows.end(), RunCache::repeatable));
           progress("sweep " + label);
         });
   }

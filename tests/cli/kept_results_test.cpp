@@ -1,11 +1,13 @@
 // Only what changed runs again: a second `run` of the same cases reuses every kept result
 // and writes the same bytes; a case whose text changed runs again while the others are
 // reused; --fresh runs everything; a report reuses the accuracy runs, the stability trials
-// and a sweep's points, and writes the same report.
+// and a sweep's points, and writes the same report; a run of some of the steps is the same
+// bytes as a fresh one; a folder that cannot keep results is said.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -88,6 +90,45 @@ TEST(KeptResults, AReportReusesItsRunsTrialsAndSweepAndWritesTheSameReport) {
   EXPECT_EQ(kept(second.out), std::make_pair(all, 0)) << second.out;
   auto before = test::snapshot(dir + "/first"), after = test::snapshot(dir + "/second");
   EXPECT_EQ(after, before);
+}
+
+// A run of some of the case's steps reuses only what is the same bytes as a fresh run of
+// them: without a reference (the stacked balls), a backend's runs are measured against its
+// finest run of this selection, not a finer one an earlier run made.
+TEST(KeptResults, SomeOfTheStepsGiveTheBytesOfAFreshRunOfThem) {
+  const std::string dir = test::fresh_dir("kept_subset");
+  const std::string stack = test::write_case(dir, "stack.toml", test::kStackedBalls);
+  const auto run = [&](const std::string& out, const std::string& more) {
+    return test::beachball("run " + stack +
+                           " --no-cost --backends reference,course/rk4,course/explicit-euler "
+                           "--out " +
+                           dir + "/" + out + more);
+  };
+  const std::string cache = " --cache " + dir + "/cache";
+  ASSERT_EQ(run("all", cache).exit_code, 0);
+  const test::Outcome kept_subset = run("kept", " --dt 1/60,1/120" + cache);
+  ASSERT_EQ(kept_subset.exit_code, 0) << kept_subset.out;
+  // The reference and its self-check are the same whatever the steps: reused.
+  EXPECT_GE(kept(kept_subset.out).first, 2) << kept_subset.out;
+  const test::Outcome fresh_subset = run("fresh", " --dt 1/60,1/120");
+  ASSERT_EQ(fresh_subset.exit_code, 0) << fresh_subset.out;
+  EXPECT_EQ(test::file_bytes(dir + "/kept/stack.json"),
+            test::file_bytes(dir + "/fresh/stack.json"));
+  EXPECT_EQ(test::snapshot(dir + "/kept"), test::snapshot(dir + "/fresh"));
+}
+
+// A folder of kept results that cannot be used (a file, another user's folder, one that
+// cannot be written) is said, and nothing claims results were kept in it.
+TEST(KeptResults, AFolderThatCannotBeUsedIsSaid) {
+  const std::string dir = test::fresh_dir("kept_unusable");
+  const std::string a = test::write_case(dir, "a.toml", test::minimal_case("a"));
+  std::ofstream(dir + "/a file") << "not a folder";
+  const test::Outcome o =
+      test::beachball("run " + a + " --no-cost --out " + dir + "/out --cache '" + dir + "/a file'");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  EXPECT_NE(o.out.find("cannot be used: it is not a folder"), std::string::npos) << o.out;
+  EXPECT_EQ(kept(o.out), std::make_pair(-1, -1)) << o.out;
+  EXPECT_EQ(test::file_bytes(dir + "/a file"), "not a folder");
 }
 
 // Costs are kept too, but never passed off as fresh: a reused cost says when it was timed

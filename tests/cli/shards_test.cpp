@@ -1,7 +1,9 @@
 // A report split into shards (`report --shard I/N`, each runnable anywhere) and put back
 // together (`merge`) is the same report, byte for byte, as one run unsplit; a merge refuses
 // a set with a shard missing or given twice, shards made from other case files, and shards
-// that lost a result, before it writes anything; a shard never writes among a user's files.
+// that lost a result or hold a damaged one, before it writes anything (naming the shard,
+// the case and the run); a shard keeps a run that timed out, for the merge to show it; a
+// shard never writes among a user's files.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -118,13 +120,81 @@ TEST(Shards, AMergeRefusesAnIncompleteOrForeignSetBeforeItWrites) {
   EXPECT_EQ(o.exit_code, 2) << o.out;
   EXPECT_NE(o.out.find("another text of case a"), std::string::npos) << o.out;
   test::write_case(s.dir, "a.toml", test::minimal_case("a"));
-  // A shard that lost its results (the reference's, which every shard keeps, among them).
-  for (const auto& entry : fs::directory_iterator(s.dir + "/shard2"))
-    if (entry.path().extension() == ".entry") fs::remove(entry.path());
+  // A shard that lost its results (the reference's, which every shard keeps, among them):
+  // the error names the shard, the case and the run, and leaves no --out.
+  std::string lost;
+  for (int i = 1; i <= 3 && lost.empty(); ++i) {
+    const std::string dir = s.dir + "/shard" + std::to_string(i);
+    if (std::distance(fs::directory_iterator(dir), fs::directory_iterator()) < 4) continue;
+    lost = dir;
+    for (const auto& entry : fs::directory_iterator(dir))
+      if (entry.path().extension() == ".entry") fs::remove(entry.path());
+  }
+  ASSERT_FALSE(lost.empty());
   o = merge(shards(s, {1, 2, 3}), s.cases);
   EXPECT_EQ(o.exit_code, 2) << o.out;
-  EXPECT_NE(o.out.find("hold no result for a run"), std::string::npos) << o.out;
-  EXPECT_FALSE(fs::exists(s.dir + "/out/README.md"));
+  EXPECT_NE(o.out.find("case a: no shard holds the result of"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find(lost + ": "), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists(s.dir + "/out"));
+}
+
+// A run that ended in a timeout (or a crash, or an error) is kept by its shard, so that the
+// merge gives what the run unsplit gives; its folder run again runs it again.
+TEST(Shards, AMergeKeepsARunThatTimedOut) {
+  const std::string dir = test::fresh_dir("shards_timeout");
+  const std::string slow = test::write_case(dir, "slow.toml", test::slow_case("slow"));
+  // Every run takes seconds, far past the limit: each times out.
+  const std::string selection =
+      " --no-cost --backends course/rk4,course/explicit-euler --timeout 0.05";
+  for (int i = 1; i <= 2; ++i) {
+    const test::Outcome o =
+        test::beachball("run " + slow + selection + " --shard " + std::to_string(i) + "/2 --out " +
+                        dir + "/shard" + std::to_string(i));
+    ASSERT_EQ(o.exit_code, 0) << o.out;
+  }
+  const test::Outcome merged = test::beachball(
+      "merge " + dir + "/shard1 " + dir + "/shard2 --cases " + slow + " --out " + dir + "/merged");
+  ASSERT_EQ(merged.exit_code, 0) << merged.out;
+  const test::Outcome whole =
+      test::beachball("run " + slow + selection + " --out " + dir + "/whole");
+  ASSERT_EQ(whole.exit_code, 0) << whole.out;
+  const std::string json = test::file_bytes(dir + "/whole/slow.json");
+  EXPECT_NE(json.find("\"status\": \"timeout\""), std::string::npos) << json;
+  EXPECT_EQ(test::snapshot(dir + "/merged"), test::snapshot(dir + "/whole"));
+}
+
+// A damaged entry of a later case stops a merge of run's shards before it writes the cases
+// before it: every entry is checked first, and the message names the shard and the entry.
+TEST(Shards, ADamagedEntryStopsAMergeBeforeItWritesAnything) {
+  const std::string dir = test::fresh_dir("shards_damaged");
+  const std::string a = test::write_case(dir, "a.toml", test::minimal_case("a"));
+  const std::string b = test::write_case(dir, "b.toml", test::minimal_case("b"));
+  const std::string selection = " --no-cost --backends course/rk4";
+  const auto shard = [&](const std::string& cases, int i) {
+    return test::beachball("run " + cases + selection + " --shard " + std::to_string(i) +
+                           "/2 --out " + dir + "/shard" + std::to_string(i));
+  };
+  // The entries of case a, then those that case b adds.
+  std::set<std::string> of_a;
+  for (int i = 1; i <= 2; ++i) {
+    ASSERT_EQ(shard(a, i).exit_code, 0);
+    for (const auto& entry : fs::directory_iterator(dir + "/shard" + std::to_string(i)))
+      of_a.insert(entry.path().string());
+  }
+  for (int i = 1; i <= 2; ++i) ASSERT_EQ(shard(a + " " + b, i).exit_code, 0);
+  std::string damaged;
+  for (int i = 1; i <= 2; ++i)
+    for (const auto& entry : fs::directory_iterator(dir + "/shard" + std::to_string(i)))
+      if (entry.path().extension() == ".entry" && !of_a.count(entry.path().string())) {
+        fs::resize_file(entry.path(), fs::file_size(entry.path()) - 1);
+        damaged = entry.path().filename().string();
+      }
+  ASSERT_FALSE(damaged.empty());
+  const test::Outcome o = test::beachball("merge " + dir + "/shard1 " + dir + "/shard2 --cases " +
+                                          a + " " + b + " --out " + dir + "/out");
+  EXPECT_EQ(o.exit_code, 2) << o.out;
+  EXPECT_NE(o.out.find("that are not whole"), std::string::npos) << o.out;
+  EXPECT_FALSE(fs::exists(dir + "/out")) << "the merge wrote case a first";
 }
 
 TEST(Shards, AShardNeverWritesAmongAUsersFiles) {

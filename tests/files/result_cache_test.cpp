@@ -1,10 +1,13 @@
 // Kept results: an entry reads back as stored; a truncated, damaged or foreign entry is a
 // miss and the next store replaces it; two processes storing and loading the same keys at
 // once only ever read whole entries; pruning removes the entries used longest ago, and
-// nothing in the folder that is not one of its entries.
+// nothing in the folder that is not one of its entries, but what a killed store left; an
+// entry is never read for another key; a folder that cannot keep results says why.
 #include "files/result_cache.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -49,6 +52,65 @@ TEST(ResultCache, AnEntryReadsBackAndADamagedOneIsAMissThatTheNextStoreReplaces)
   // Nothing is written where the key is not one.
   EXPECT_FALSE(cache.store("../escape", bytes));
   EXPECT_FALSE(fs::exists(folder + "/../escape.entry"));
+}
+
+// An entry copied under another key, its key line rewritten to that key, is not that key's:
+// its checksum covers the key it was stored under.
+TEST(ResultCache, AnEntryWhoseKeyLineWasRewrittenIsAMiss) {
+  const std::string folder = test::fresh_dir("result_cache_rewritten");
+  const ResultCache cache(folder, 1 << 20);
+  ASSERT_TRUE(cache.store(kKey, "the results of one run"));
+  const std::string other = digest("another run");
+  std::string rewritten = test::file_bytes(entry_path(folder, kKey));
+  rewritten.replace(rewritten.find(kKey), kKey.size(), other);
+  std::ofstream(entry_path(folder, other), std::ios::binary) << rewritten;
+  EXPECT_FALSE(cache.load(other));
+  EXPECT_EQ(cache.damaged_entries(), std::vector<std::string>{other + ".entry"});
+  EXPECT_EQ(cache.load(kKey), "the results of one run");
+}
+
+// A store killed between linking its entry under a name of its own and renaming it into
+// place leaves "<key>.entry.<token>": prune removes it once its writer is gone (the lock a
+// writer holds is free), never while its writer lives, and never a user's file of that name.
+TEST(ResultCache, PruneRemovesWhatAKilledStoreLeft) {
+  const std::string folder = test::fresh_dir("result_cache_killed_store");
+  const ResultCache cache(folder, 1 << 20);
+  ASSERT_TRUE(cache.store(kKey, "bytes"));
+  const std::string whole = test::file_bytes(entry_path(folder, kKey));
+  const std::string left = entry_path(folder, digest("killed")) + ".0123456789abcdef";
+  const std::string live = entry_path(folder, digest("storing")) + ".fedcba9876543210";
+  const std::string users = entry_path(folder, digest("user")) + ".0000000000000000";
+  std::ofstream(left, std::ios::binary) << whole;
+  std::ofstream(live, std::ios::binary) << whole;
+  std::ofstream(users) << "a user's file";
+  const int writer = open(live.c_str(), O_RDONLY);
+  ASSERT_EQ(flock(writer, LOCK_EX | LOCK_NB), 0);
+  EXPECT_EQ(cache.prune(), 1);
+  close(writer);
+  EXPECT_FALSE(fs::exists(left));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(users));
+  EXPECT_EQ(cache.load(kKey), "bytes");
+}
+
+// A folder that cannot keep results says why: a file, a folder of another user, one that
+// cannot be written (a user's own; root writes anywhere, so each where it can be made).
+TEST(ResultCache, AFolderThatCannotKeepResultsSaysWhy) {
+  const std::string dir = test::fresh_dir("result_cache_unusable");
+  EXPECT_EQ(ResultCache(dir + "/new", 0).problem(), "");
+  EXPECT_TRUE(fs::is_directory(dir + "/new"));
+  std::ofstream(dir + "/file") << "a file";
+  EXPECT_EQ(ResultCache(dir + "/file", 0).problem(), "it is not a folder");
+  fs::create_directories(dir + "/theirs");
+  if (geteuid() == 0) {
+    ASSERT_EQ(chown((dir + "/theirs").c_str(), 65534, 65534), 0);
+    EXPECT_EQ(ResultCache(dir + "/theirs", 0).problem(), "it belongs to another user");
+  } else {
+    fs::permissions(dir + "/theirs", fs::perms::owner_read | fs::perms::owner_exec);
+    EXPECT_NE(ResultCache(dir + "/theirs", 0).problem().find("cannot be written"),
+              std::string::npos);
+    fs::permissions(dir + "/theirs", fs::perms::owner_all);
+  }
 }
 
 TEST(ResultCache, TwoProcessesAtOnceOnlyEverReadWholeEntries) {

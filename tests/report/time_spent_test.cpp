@@ -1,5 +1,6 @@
 // The index page's "where the time went": the whole report's row sums every case's parts,
-// the cases follow slowest first, and a report with nothing timed has no section.
+// the cases follow slowest first, runs taken from kept results are not counted as runs,
+// and a report with nothing timed has no section.
 #include "report/time_spent.hpp"
 
 #include <gtest/gtest.h>
@@ -56,12 +57,42 @@ TEST(TimeSpent, SaysWhatTheStepsAloneTakeAndTheCostOfARun) {
   all[0].runs[0].cost = Cost{1.5e6, 0.0, 3, 1e6, 2e6, ""};  // 3 s
   all[0].runs[1].steps = 10;                                // no cost: not counted
   const std::string page = time_spent_section(all, 2);
-  EXPECT_NE(page.find("The accuracy runs: 3 (the references and every backend at every dt), "
+  EXPECT_NE(page.find("The accuracy runs: 3 ran (the references and every backend at every dt), "
                       "6.0 s on 2 jobs, so 4.000 s of a core per run"),
             std::string::npos)
       << page;
   EXPECT_NE(page.find("take 4.0 s of one core"), std::string::npos) << page;
   EXPECT_NE(page.find("no less than 2.0 s with --jobs 2"), std::string::npos) << page;
+}
+
+// A run taken from kept results took no run's time: the per-run figure and the floor count
+// only the runs that ran, and the page says how many were reused.
+TEST(TimeSpent, RunsTakenFromKeptResultsAreNotCountedAsRuns) {
+  Scene scene;
+  scene.name = "kept";
+  std::vector<CaseResults> all(1);
+  all[0].scene = &scene;
+  all[0].time_spent = {6.0, 1.0, 0.0, 0.0};
+  all[0].reference_run.steps = 1000;
+  all[0].reference_run.cost = Cost{1e6, 0.0, 3, 1e6, 1e6, ""};  // 1 s, run
+  all[0].runs.resize(3);
+  for (RunRecord& run : all[0].runs) {
+    run.steps = 2000;
+    run.cost = Cost{1.5e6, 0.0, 3, 1e6, 2e6, ""};  // 3 s each
+    run.reused = true;
+  }
+  all[0].runs[0].reused = false;
+  const std::string page = time_spent_section(all, 2);
+  EXPECT_NE(page.find("The accuracy runs: 2 ran"), std::string::npos) << page;
+  EXPECT_NE(page.find("so 6.000 s of a core per run"), std::string::npos) << page;
+  EXPECT_NE(page.find("2 more were taken from kept results"), std::string::npos) << page;
+  EXPECT_NE(page.find("take 4.0 s of one core"), std::string::npos) << page;
+  // All of them reused: no figure per run.
+  all[0].reference_run.reused = true;
+  all[0].runs[0].reused = true;
+  const std::string none = time_spent_section(all, 2);
+  EXPECT_NE(none.find("none ran"), std::string::npos) << none;
+  EXPECT_EQ(none.find("per run"), std::string::npos) << none;
 }
 
 TEST(TimeSpent, NothingTimedIsNoSection) {
