@@ -101,7 +101,7 @@ void RunCache::keep(const std::string& key, const std::string& bytes) const {
 }
 
 bool RunCache::repeatable(const RunRecord& run) {
-  return run.status == RunStatus::Ok || run.status == RunStatus::Diverged ||
+  return ran_to_end(run.status) || run.status == RunStatus::Diverged ||
          run.status == RunStatus::Unsupported;
 }
 

@@ -249,14 +249,23 @@ right = "course/explicit-euler:final_speed/ball"
 // part; one whose runs diverged without bearing on it, or could not be measured, is neither.
 TEST(Claims, StandingCountsOnlyFailuresAndPartialHoldsAsFailing) {
   ClaimResult c;
-  ClaimVerdict holds{"a", "holds", VerdictKind::Holds, {}, false, "", {}, {}};
-  ClaimVerdict diverged{
-      "b", "holds; diverged at dt 1/30 s", VerdictKind::Holds, {1.0 / 30}, false, "", {}, {}};
+  const auto verdict = [](const char* backend, const char* text, VerdictKind kind) {
+    ClaimVerdict v;
+    v.backend = backend, v.verdict = text, v.kind = kind;
+    return v;
+  };
+  const ClaimVerdict holds = verdict("a", "holds", VerdictKind::Holds);
+  ClaimVerdict diverged = verdict("b", "holds; diverged at dt 1/30 s", VerdictKind::Holds);
+  diverged.diverged = {1.0 / 30};
   ClaimVerdict counted = diverged;
   counted.diverged_judged = true;
-  ClaimVerdict unmeasured{
-      "c", "not measured (c has no value for it)", VerdictKind::NotMeasured, {}, false, "", {}, {}};
-  ClaimVerdict partial{"d", "holds for dt <= 1/60 s", VerdictKind::Partial, {}, false, "", {}, {}};
+  const ClaimVerdict unmeasured =
+      verdict("c", "not measured (c has no value for it)", VerdictKind::NotMeasured);
+  const ClaimVerdict partial = verdict("d", "holds for dt <= 1/60 s", VerdictKind::Partial);
+  // A run held at its engine's cap is not judged: neither holds nor fails there.
+  ClaimVerdict capped =
+      verdict("e", "holds; not judged where capped at dt 1/30 s: a cap", VerdictKind::Holds);
+  capped.capped = {1.0 / 30};
   c.verdicts = {holds, counted};
   EXPECT_EQ(claim_standing(c), ClaimStanding::Holds);
   c.verdicts = {holds, diverged};
@@ -265,6 +274,8 @@ TEST(Claims, StandingCountsOnlyFailuresAndPartialHoldsAsFailing) {
   EXPECT_EQ(claim_standing(c), ClaimStanding::Neither);
   c.verdicts = {unmeasured, partial};
   EXPECT_EQ(claim_standing(c), ClaimStanding::Fails);
+  c.verdicts = {holds, capped};
+  EXPECT_EQ(claim_standing(c), ClaimStanding::Neither);
 }
 
 // An engine given one friction coefficient (mu_k) on a slope between atan(mu_k) and
