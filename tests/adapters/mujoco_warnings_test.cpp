@@ -3,9 +3,11 @@
 // BADQACC), warns once and steps on. Issue 36: the rows stayed `ok`, with tiny_mass_fall's
 // terminal velocity at 16,796 m/s (true 0.0105) and a 1e-9 kg ball pushed by 100 N moving at
 // g dt. A reset is a divergence at the reset's time, with MuJoCo's warning as the reason, on
-// every MuJoCo backend and in the stability search.
+// every MuJoCo backend and in the stability search. A contact list that is full (nconmax, 100
+// by default) drops what does not fit: a cap of the engine's, and the row says so.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -43,7 +45,7 @@ long first_return(const Backend& backend, const Scene& scene, double dt) {
 // The mote of tiny_mass_fall: at every step of the case, every MuJoCo row either finds the
 // terminal velocity sqrt(2 m g / (rho Cd A)) to a percent or has diverged; where it diverged
 // on a reset, the time is the reset's, seen in the state jumping back to the start.
-TEST(MujocoReset, TheMoteIsRightOrDivergedNeverOkWithAResetsNumber) {
+TEST(MujocoWarnings, TheMoteIsRightOrDivergedNeverOkWithAResetsNumber) {
   const Scene scene = load_case(test::source_path("cases/tiny_mass_fall.toml"));
   const double terminal = *formula_value(scene, scene.observes.front());
   int resets = 0;
@@ -78,7 +80,7 @@ TEST(MujocoReset, TheMoteIsRightOrDivergedNeverOkWithAResetsNumber) {
 
 // A 1e-9 kg ball pushed by 100 N accelerates at 1e11 m/s^2, past MuJoCo's 1e10 at its first
 // step: every step resets it, and it only ever moves g dt. Diverged at t = 0, never ok.
-TEST(MujocoReset, ABallPushedPastTheLimitDivergesAtTheStart) {
+TEST(MujocoWarnings, ABallPushedPastTheLimitDivergesAtTheStart) {
   const Scene scene = test::scene_from(R"(name = "pushed_mote"
 dims = 2
 duration = 1.0
@@ -111,6 +113,41 @@ force = [100.0, 0.0, 0.0]
     EXPECT_FALSE(trial.stable);
     EXPECT_EQ(trial.growth, "diverged");
     EXPECT_EQ(trial.reason, run.reason);
+  }
+}
+
+// 120 balls resting on the ground at once: 120 contacts, past MuJoCo's list of 100. The 20
+// it drops fall through the ground, and the row is capped with the cap named, not ok.
+TEST(MujocoWarnings, AFullContactListIsACap) {
+  std::string text = R"(name = "crowd"
+dims = 2
+duration = 0.5
+sample = 0.05
+dt = [0.01]
+report_dt = 0.01
+[ground]
+restitution = 0.0
+)";
+  for (int i = 0; i < 120; ++i)
+    text += "[[body]]\nname = \"b" + std::to_string(i) +
+            "\"\nradius = 0.1\nmass = 1.0\nposition = [" + std::to_string(0.3 * i) +
+            ", 0.1, 0.0]\n";
+  const Scene scene = test::scene_from(text);
+  for (const char* name : kMujocos) {
+    const Backend* b = test::engine(name);
+    if (b == nullptr) continue;
+    SCOPED_TRACE(name);
+    const RunRecord run = run_accuracy(*b, scene, 0.01);
+    // Some ball sinks into the ground, the contacts past the hundredth dropped.
+    double lowest = 1.0;
+    for (const BodyState& ball : run.trajectory.states.back())
+      lowest = std::min(lowest, ball.position.y());
+    EXPECT_LT(lowest, 0.0);
+    EXPECT_EQ(run.status, RunStatus::Capped) << run.reason;
+    EXPECT_EQ(run.reason.find("MuJoCo held the contacts at its cap of 100 (nconmax) from t = 0 s: "
+                              "mjWARN_CONTACTFULL"),
+              0u)
+        << run.reason;
   }
 }
 
