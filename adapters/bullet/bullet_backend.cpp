@@ -117,6 +117,8 @@ class BulletSimulation : public Simulation {
         if (start_.torques()) bodies_[i]->applyTorque(to_bt(loads.torque[i]));
       }
     }
+    // Bullet's springs pull along their frames: aimed along the bodies' line at each step.
+    if (joints_) joints_->aim();
     // One fixed substep of exactly dt: no interpolation, no accumulator.
     world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_));
     ++steps_;
