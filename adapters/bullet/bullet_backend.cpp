@@ -122,7 +122,7 @@ class BulletSimulation : public Simulation {
     // One fixed substep of exactly dt: no interpolation, no accumulator.
     world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_));
     ++steps_;
-    // A body spinning past the cap turns by the cap; the first one is reported.
+    // A body spinning past the cap turns by less than its spin; the first one is reported.
     if (!caps_.held())
       for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (!scene_.bodies[i].fixed)
