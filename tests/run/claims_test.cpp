@@ -262,10 +262,6 @@ TEST(Claims, StandingCountsOnlyFailuresAndPartialHoldsAsFailing) {
   const ClaimVerdict unmeasured =
       verdict("c", "not measured (c has no value for it)", VerdictKind::NotMeasured);
   const ClaimVerdict partial = verdict("d", "holds for dt <= 1/60 s", VerdictKind::Partial);
-  // A run held at its engine's cap is not judged: neither holds nor fails there.
-  ClaimVerdict capped =
-      verdict("e", "holds; not judged where capped at dt 1/30 s: a cap", VerdictKind::Holds);
-  capped.capped = {1.0 / 30};
   c.verdicts = {holds, counted};
   EXPECT_EQ(claim_standing(c), ClaimStanding::Holds);
   c.verdicts = {holds, diverged};
@@ -274,8 +270,6 @@ TEST(Claims, StandingCountsOnlyFailuresAndPartialHoldsAsFailing) {
   EXPECT_EQ(claim_standing(c), ClaimStanding::Neither);
   c.verdicts = {unmeasured, partial};
   EXPECT_EQ(claim_standing(c), ClaimStanding::Fails);
-  c.verdicts = {holds, capped};
-  EXPECT_EQ(claim_standing(c), ClaimStanding::Neither);
 }
 
 // An engine given one friction coefficient (mu_k) on a slope between atan(mu_k) and
