@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "../engine_caps.hpp"
 #include "../point_body.hpp"
 #include "box2d_contacts.hpp"
 #include "box2d_engine.hpp"
@@ -27,6 +28,26 @@ constexpr bool kSpringsByHand = true;
 #else
 constexpr bool kSpringsByHand = false;
 #endif
+
+/// Box2D 2.4.1's caps on a step's motion (b2_common.h), applied in b2Island::Solve.
+constexpr StepCap kMaxTranslation{
+    "Box2D",
+    "held body",
+    "at its cap of",
+    b2_maxTranslation,
+    "2 m",
+    "m/s",
+    "b2_maxTranslation, built in: b2Island::Solve scales a faster velocity down so that the "
+    "body moves 2 m in the step"};
+constexpr StepCap kMaxRotation{
+    "Box2D",
+    "held body",
+    "at its cap of",
+    b2_maxRotation,
+    "pi/2 rad",
+    "rad/s",
+    "b2_maxRotation, built in: b2Island::Solve scales a faster spin down so that the body "
+    "turns pi/2 rad in the step"};
 
 class Box2dSimulation : public Simulation {
  public:
@@ -88,7 +109,17 @@ class Box2dSimulation : public Simulation {
       }
     }
     world_.Step(dt_, velocity_iterations_, position_iterations_);
+    ++steps_;
+    // A body Box2D held at a cap leaves the step at it; the first one is reported.
+    if (!caps_.held())
+      for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (scene_.bodies[i].fixed) continue;
+        caps_.check(kMaxTranslation, i, bodies_[i]->GetLinearVelocity().Length(), steps_);
+        caps_.check(kMaxRotation, i, std::abs(bodies_[i]->GetAngularVelocity()), steps_);
+      }
   }
+
+  std::vector<EngineIntervention> interventions() const override { return caps_.interventions(); }
 
   void read(State& out) const override {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -131,8 +162,10 @@ class Box2dSimulation : public Simulation {
                                           "the step that starts at the impulse's time: J's x "
                                           "and y; the spin follows from the point")});
     add_point_body_setting(scene_, s);
-    s.push_back({"max_translation", std::string("2 m per step (b2_maxTranslation, built in)")});
-    s.push_back({"max_rotation", std::string("pi/2 rad per step (b2_maxRotation, built in)")});
+    s.push_back({"max_translation", std::string("2 m per step (b2_maxTranslation, built in); a "
+                                                "body held at it is reported as a cap")});
+    s.push_back({"max_rotation", std::string("pi/2 rad per step (b2_maxRotation, built in); a "
+                                             "body held at it is reported as a cap")});
     if (scene_.features().has(Feature::Rotation))
       s.push_back({"gyroscopic", std::string("none: a 2D body turns about z only, where w x I w "
                                              "is zero")});
@@ -183,6 +216,8 @@ class Box2dSimulation : public Simulation {
   std::vector<b2Body*> bodies_;
   State state_{scene_.bodies.size()};  ///< read before each step for the forces
   float first_stiffness_ = 0.0f;       ///< the first joint's stiffness as Box2D holds it
+  long steps_ = 0;                     ///< steps taken
+  CapWatch caps_{scene_, double(dt_), double(FLT_EPSILON)};  ///< the first body held at a cap
 };
 
 class Box2dBackend : public Backend {

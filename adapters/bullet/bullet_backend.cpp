@@ -4,11 +4,13 @@
 // springs applied as forces before each step instead.
 #include <btBulletDynamicsCommon.h>
 
+#include <cfloat>
 #include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "../engine_caps.hpp"
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "bullet_contacts.hpp"
@@ -45,6 +47,23 @@ constexpr const char* kPlane2d =
     "btRigidBody::setLinearFactor(1, 1, 0) and setAngularFactor(0, 0, 1) on every moving "
     "body: the solver, forces and integration leave z and the spin about x and y untouched, "
     "so each body stays at its z (0) and turns about z only";
+
+/// Bullet 3.24's cap on a step's turn: btDiscreteDynamicsWorld integrates each orientation
+/// with btTransformUtil::integrateTransform, which past ANGULAR_MOTION_THRESHOLD takes the
+/// angle as the threshold's but the axis part from the whole spin, so the orientation turns
+/// by 2 atan((w dt / (pi/4)) tan(pi/8)), less than w dt, and the angular velocity stays what it
+/// was (btRigidBody::integrateVelocities's MAX_ANGVEL belongs to btSimpleDynamicsWorld and is
+/// never called here).
+constexpr StepCap kAngularMotionThreshold{
+    "Bullet",
+    "slowed the turn of body",
+    "past its cap of",
+    double(ANGULAR_MOTION_THRESHOLD),
+    "pi/4 rad",
+    "rad/s",
+    "ANGULAR_MOTION_THRESHOLD, built into btTransformUtil::integrateTransform: past it a step "
+    "turns the orientation by 2 atan((w dt / (pi/4)) tan(pi/8)), less than w dt, and keeps the "
+    "angular velocity, so the orientation lags the spin"};
 
 /// The radius of the largest sphere inside a body: what CCD sweeps and its motion threshold.
 double inner_radius(const Body& b) {
@@ -98,9 +117,20 @@ class BulletSimulation : public Simulation {
         if (start_.torques()) bodies_[i]->applyTorque(to_bt(loads.torque[i]));
       }
     }
+    // Bullet's springs pull along their frames: aimed along the bodies' line at each step.
+    if (joints_) joints_->aim();
     // One fixed substep of exactly dt: no interpolation, no accumulator.
     world_.stepSimulation(btScalar(dt_), 1, btScalar(dt_));
+    ++steps_;
+    // A body spinning past the cap turns by less than its spin; the first one is reported.
+    if (!caps_.held())
+      for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!scene_.bodies[i].fixed)
+          caps_.check(kAngularMotionThreshold, i, double(bodies_[i]->getAngularVelocity().length()),
+                      steps_);
   }
+
+  std::vector<EngineIntervention> interventions() const override { return caps_.interventions(); }
 
   void read(State& out) const override {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -135,7 +165,11 @@ class BulletSimulation : public Simulation {
       s.push_back({"collision", std::string("none (btEmptyShape, collision mask 0)")});
     if (!scene_.impulses.empty()) s.push_back({"impulse", std::string(kImpulseMethod)});
     add_point_body_setting(scene_, s);
-    s.push_back({"max_angular_speed", std::string("pi/2 rad per step (built into btRigidBody)")});
+    s.push_back({"max_turn", std::string("pi/4 rad per step (ANGULAR_MOTION_THRESHOLD, built into "
+                                         "btTransformUtil::integrateTransform): a faster spin "
+                                         "keeps its angular velocity and turns the orientation "
+                                         "by 2 atan((w dt / (pi/4)) tan(pi/8)) a step, less than "
+                                         "w dt; a body past it is reported as a cap")});
     add_bullet_gyroscopic_setting(engines_, s);
     s.push_back({"plane_2d", std::string(scene_.dims == 2 ? kPlane2d : "none (3D scene)")});
     return s;
@@ -246,6 +280,9 @@ class BulletSimulation : public Simulation {
   std::unique_ptr<BulletHingeJoints> hinges_;       ///< the hinges as constraints, or none
   StepStart start_{scene_, dt_, {kSpringsByHand}};  ///< impulses due, the force model's loads
   State state_{scene_.bodies.size()};               ///< read before each step for the forces
+  long steps_ = 0;                                  ///< steps taken
+  /// The first body held at the cap, judged to the rounding of btScalar.
+  CapWatch caps_{scene_, dt_, sizeof(btScalar) == 8 ? DBL_EPSILON : double(FLT_EPSILON)};
 };
 
 class BulletBackend : public Backend {

@@ -82,6 +82,17 @@ BulletSpringJoints::BulletSpringJoints(const World& scene, const EngineTables& e
   }
 }
 
+void BulletSpringJoints::aim() {
+  for (const auto& joint : joints_) {
+    const btRigidBody& a = joint->getRigidBodyA();
+    const btRigidBody& b = joint->getRigidBodyB();
+    const btVector3 d = b.getCenterOfMassPosition() - a.getCenterOfMassPosition();
+    if (d.length2() == btScalar(0)) continue;
+    const btMatrix3x3 basis = basis_along(d.normalized());
+    joint->setFrames(frame_in(a, basis), frame_in(b, basis));
+  }
+}
+
 BulletSpringJoints::~BulletSpringJoints() {
   for (auto& joint : joints_) world_.removeConstraint(joint.get());
 }
@@ -90,15 +101,16 @@ void BulletSpringJoints::add_settings(Settings& out) const {
   using S = std::string;
   out.push_back(
       {"springs", S("btGeneric6DofSpring2Constraint per spring, frames at the two bodies' "
-                    "centres with x from a to b at the start; linear spring on x (stiffness k, "
-                    "damping c, equilibrium point = rest length); y, z and every angular axis "
-                    "free (lower limit above upper); collisions between the linked bodies "
-                    "disabled; anchored particles static (mass 0)")});
+                    "centres with x from a to b; linear spring on x (stiffness k, damping c, "
+                    "equilibrium point = rest length); y, z and every angular axis free (lower "
+                    "limit above upper); collisions between the linked bodies disabled; "
+                    "anchored particles static (mass 0)")});
   out.push_back(
-      {"spring_axis", S("the spring pulls along frame a's x axis, which turns only with body a; "
-                        "nothing turns a point body (the frames sit at the centres), so each "
-                        "spring keeps its starting direction and motion across it stretches "
-                        "nothing")});
+      {"spring_axis", S("the spring pulls along frame a's x axis, which turns only with body a: "
+                        "before each step both frames are aimed again along the line from a's "
+                        "centre to b's (setFrames), so the spring acts along the current line "
+                        "in every direction, that line held over the step as Bullet's solver "
+                        "holds every row")});
   out.push_back({"spring_limit_if_needed", limit_if_needed_});
   out.push_back(
       {"spring_stiffness_limit",

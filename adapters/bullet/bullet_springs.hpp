@@ -1,7 +1,12 @@
 // Springs in Bullet as its users build them: one btGeneric6DofSpring2Constraint per
 // [[spring]] between the two bodies, its linear x axis along the spring with Bullet's own
-// spring on it, every other axis free. What Bullet does to the stiffness it is given
-// (limitIfNeeded) is worked out here by the engine's own rule and written into the run.
+// spring on it, every other axis free. Bullet's spring acts along its frame's x axis, which
+// turns only with body a: set once, a spring would keep its starting direction and motion
+// across it would stretch nothing (a rope falls through its own springs). So before each
+// step the frames are aimed again along the line between the bodies' centres
+// (btGeneric6DofSpring2Constraint::setFrames), as Box2D's distance joint takes its axis from
+// the bodies at each step. What Bullet does to the stiffness it is given (limitIfNeeded) is
+// worked out here by the engine's own rule and written into the run.
 #pragma once
 
 #include <BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h>
@@ -39,6 +44,10 @@ class BulletSpringJoints {
   ~BulletSpringJoints();
   BulletSpringJoints(const BulletSpringJoints&) = delete;
   BulletSpringJoints& operator=(const BulletSpringJoints&) = delete;
+
+  /// Aims every spring's frames along the current line between its bodies' centres: called
+  /// before each step. A spring whose bodies sit at one point keeps its last direction.
+  void aim();
 
   /// How the springs are built and the stiffness and damping Bullet uses for them.
   void add_settings(Settings& out) const;

@@ -20,6 +20,7 @@
 #include "kept_model.hpp"
 #include "mujoco_engine.hpp"
 #include "mujoco_model.hpp"
+#include "mujoco_warnings.hpp"
 #include "physics/hinge_motion.hpp"
 #include "physics/step_start.hpp"
 #include "scene/contact_pairs.hpp"
@@ -118,6 +119,12 @@ class MujocoSimulation : public Simulation {
       for (int k = 0; k < 3; ++k) f[3 + k] = torque[k];
     }
     mj_step(model_, data_);
+    // A reset or a dropped contact shows in MuJoCo's warning counters, not in its state.
+    warnings_.after_step(model_, data_, ++steps_);
+  }
+
+  std::vector<EngineIntervention> interventions() const override {
+    return warnings_.interventions();
   }
 
   void read(State& out) const override {
@@ -184,6 +191,15 @@ class MujocoSimulation : public Simulation {
                                           "omega += I_world^-1 (r x J) (MuJoCo has no "
                                           "impulse call)")});
     add_point_body_setting(world_, s);
+    s.push_back({"bad_values",
+                 std::string("a position, velocity or acceleration NaN or beyond 1e10 (mjMAXVAL): "
+                             "MuJoCo warns (mjWARN_BADQPOS, BADQVEL, BADQACC) and resets its data "
+                             "to the initial state; read from its warning counters after each "
+                             "step and reported as a reset, the first one with its step")});
+    s.push_back({"buffers", std::string("nconmax 100 contacts and njmax 500 constraint rows "
+                                        "(MuJoCo 2.2.2's defaults): beyond them it drops what "
+                                        "does not fit (mjWARN_CONTACTFULL, CNSTRFULL), reported "
+                                        "as a cap")});
     return s;
   }
 
@@ -325,6 +341,8 @@ class MujocoSimulation : public Simulation {
   std::vector<int> qpos_, dof_;        ///< per body: its first qpos and dof, -1 when fixed
   std::vector<const Hinge*> hinges_;   ///< per body: its [[hinge]], or nullptr
   State state_{world_.bodies.size()};  ///< read before each step for the forces
+  long steps_ = 0;                     ///< steps taken
+  MujocoWarnings warnings_{world_};    ///< what MuJoCo did on its own, latched
 };
 
 class MujocoBackend : public Backend {

@@ -77,14 +77,17 @@ std::string claims_page(const std::vector<CaseResults>& all) {
       "dt >= X (only at the large ones, as a claim that a method goes wrong at a game's step "
       "should), holds at some dts only, or not measured (with why). Runs that diverged are named; "
       "where the claim says so, a divergence counts as evidence for it (a claim that "
-      "something explodes) or against it. The two numbers are those compared at report_dt, "
+      "something explodes) or against it. Runs that an engine held at a cap of its own (capped) "
+      "are named and not judged: their numbers are the cap's. The two numbers are those compared "
+      "at report_dt, "
       "and a known cause of a verdict other than holds is named. Computed by the program "
       "from the case files; nothing here is written by hand.\n\n";
   if (count == 0) return page + "No case of this suite has a claim yet.\n";
   page += fmt::format(
       "{} claims ({} from the course text, {} the cases' own); {} of them fail or hold only in "
       "part for some backend; of the others, {} have a backend that diverged at some dt "
-      "without bearing on the claim, or that could not be measured (neither holds nor fails "
+      "without bearing on the claim, was capped, or could not be measured (neither holds nor "
+      "fails "
       "there: counted apart).\n\n",
       count, count - own, own, failing, neither);
   return page + render_markdown(t);

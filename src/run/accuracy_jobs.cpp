@@ -73,7 +73,7 @@ RunRecord record_from(const ChildOutcome& outcome, const std::string& backend,
   RunRecord run;
   if (outcome.kind == ChildOutcome::Kind::Done) {
     run = wire::decode_run(outcome.payload);
-    if (run.status == RunStatus::Ok)
+    if (ran_to_end(run.status))
       run.messages = outcome.console;
     else if (!outcome.console.empty())
       run.reason += "; it printed: " + outcome.console;

@@ -5,6 +5,7 @@
 #include "observe/step_observer.hpp"
 #include "physics/energy.hpp"
 #include "run/divergence.hpp"
+#include "run/engine_interventions.hpp"
 #include "run/stability_watch.hpp"
 
 namespace bb {
@@ -65,6 +66,14 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
       const double t = static_cast<double>(record.steps) * dt;
       record.trajectory.times.push_back(t);
       record.trajectory.states.push_back(state);
+      // An engine that threw its state away has diverged, when it did (its own warning).
+      if (const auto reset =
+              intervention_of(sim->interventions(), EngineIntervention::Kind::Reset)) {
+        record.status = RunStatus::Diverged;
+        record.reason = intervention_reason(*reset, dt);
+        record.diverged_at = intervention_time(*reset, dt);
+        break;
+      }
       if (auto why = divergence(scene, bounds, state, initial_energy, energy(state))) {
         record.status = RunStatus::Diverged;
         record.reason = *why;
@@ -72,7 +81,17 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
         break;
       }
     }
-    if (watch) record.stability_trial = watch->verdict();
+    // A run its engine held at a cap of its own ran to the end, and says so.
+    const std::vector<EngineIntervention> interventions = sim->interventions();
+    const auto cap = intervention_of(interventions, EngineIntervention::Kind::Cap);
+    if (cap && record.status == RunStatus::Ok) {
+      record.status = RunStatus::Capped;
+      record.reason = intervention_reason(*cap, dt);
+    }
+    if (watch) {
+      const auto intervened = intervened_trial(interventions, dt);
+      record.stability_trial = intervened ? intervened : watch->verdict();
+    }
     if (auto internal = sim->internal_steps()) record.steps = *internal;
     // Settings as they stood at the end: the reference names a change of method there.
     record.engine_settings = sim->settings();

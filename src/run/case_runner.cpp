@@ -199,8 +199,7 @@ void measure_runs(const Scene& scene, const std::vector<double>& dts, CaseResult
     const RunRecord* against = !fallback             ? &out.reference_run
                                : own != finest.end() ? own->second
                                                      : nullptr;
-    if (run.status == RunStatus::Ok && against && against != &run &&
-        against->status == RunStatus::Ok)
+    if (ran_to_end(run.status) && against && against != &run && against->status == RunStatus::Ok)
       run.errors = compare(scene, run.trajectory, against->trajectory);
     add_observables(scene, run, against ? *against : out.reference_run);
     if (fallback) add_series(scene, run, nullptr);
@@ -222,8 +221,10 @@ void fit_orders(const Scene& scene, CaseResults& out) {
     const RunRecord* against = fallback && own != finest.end() ? own->second : &out.reference_run;
     if (against == &run) continue;
     out.order_saturation[run.backend] = kSaturationFraction * std::max(against->travel, size);
+    // A capped run's error is the cap's, not the step's: no point of the fit.
+    const bool fitted = run.errors && run.status != RunStatus::Capped;
     points[run.backend].push_back(
-        {*run.dt, run.errors ? run.errors->position_max : std::nan(""),
+        {*run.dt, fitted ? run.errors->position_max : std::nan(""),
          error_floor(against->position_scale, out.reference.self_check_position(), run.steps,
                      arithmetic_epsilon(run))});
   }

@@ -20,7 +20,9 @@ struct ClaimVerdict {
   /// "holds", "fails", "holds for dt <= <X> s", "holds for dt >= <X> s", "holds at dt
   /// <list> s only", or "not measured (<why>)"; with "; diverged at dt <list> s" where runs
   /// blew up and the claim does not say what that means (they have no numbers to judge),
-  /// or "; diverged at dt <list> s, counted as holding" ("as failing") where it does.
+  /// or "; diverged at dt <list> s, counted as holding" ("as failing") where it does; with
+  /// "; not judged where capped at dt <list> s: <reason>" where the engine held a run at a
+  /// cap of its own (its numbers are the cap's), or "not measured (capped at ...)".
   std::string verdict;
   VerdictKind kind = VerdictKind::NotMeasured;
   std::vector<double> diverged;  ///< the dts whose runs diverged, largest first
@@ -29,6 +31,8 @@ struct ClaimVerdict {
   /// backend's settings (claim_causes.hpp); empty when none is known.
   std::string cause;
   std::optional<double> left, right;  ///< the two numbers at report_dt (the reference: its own)
+  std::vector<double> capped;         ///< the dts whose runs were capped, largest first
+  std::string capped_reason;          ///< the first capped run's reason
 };
 
 struct ClaimResult {

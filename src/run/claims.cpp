@@ -79,6 +79,12 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
       if (claim.diverged == DivergedCounts::Fails) failing.push_back(run->dt.value_or(0.0));
       continue;
     }
+    if (run->status == RunStatus::Capped) {
+      // A run its engine held at a cap has the cap's numbers, not the scene's: not judged.
+      v.capped.push_back(run->dt.value_or(0.0));
+      if (v.capped.size() == 1) v.capped_reason = run->reason;
+      continue;
+    }
     const std::optional<double> l = side_value(results, claim, claim.left, backend, run->dt);
     const std::optional<double> r = side_value(results, claim, claim.right, backend, run->dt);
     if (report_row) v.left = l, v.right = r;
@@ -89,13 +95,17 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
   v.diverged_judged = claim.diverged != DivergedCounts::Nothing && !v.diverged.empty();
   const std::string blew_up =
       v.diverged.empty() ? "" : "diverged at dt " + listed(v.diverged) + " s";
+  const std::string capped =
+      v.capped.empty() ? "" : "capped at dt " + listed(v.capped) + " s: " + v.capped_reason;
   if (holding.empty() && failing.empty()) {
     v.kind = VerdictKind::NotMeasured;
     // A backend that cannot run the case says why (the features it lacks).
     const bool unsupported = at_report != nullptr && at_report->status == RunStatus::Unsupported;
-    const std::string why = !blew_up.empty() ? blew_up
-                            : unsupported    ? "unsupported: " + at_report->reason
-                                             : backend + " has no value for it";
+    const std::string why = !blew_up.empty() && !capped.empty() ? blew_up + "; " + capped
+                            : !blew_up.empty()                  ? blew_up
+                            : !capped.empty()                   ? capped
+                            : unsupported ? "unsupported: " + at_report->reason
+                                          : backend + " has no value for it";
     v.verdict = "not measured (" + why + ")";
   } else {
     std::tie(v.verdict, v.kind) = core_verdict(holding, failing);
@@ -104,6 +114,7 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
                    (claim.diverged == DivergedCounts::Holds   ? ", counted as holding"
                     : claim.diverged == DivergedCounts::Fails ? ", counted as failing"
                                                               : "");
+    if (!capped.empty()) v.verdict += "; not judged where " + capped;
   }
   if (v.kind != VerdictKind::Holds && at_report != nullptr)
     v.cause = known_cause(*results.scene, *at_report);
@@ -158,7 +169,7 @@ ClaimStanding claim_standing(const ClaimResult& claim) {
   for (const ClaimVerdict& v : claim.verdicts) {
     if (v.kind == VerdictKind::Fails || v.kind == VerdictKind::Partial) return ClaimStanding::Fails;
     neither = neither || v.kind == VerdictKind::NotMeasured ||
-              (!v.diverged.empty() && !v.diverged_judged);
+              (!v.diverged.empty() && !v.diverged_judged) || !v.capped.empty();
   }
   return neither ? ClaimStanding::Neither : ClaimStanding::Holds;
 }

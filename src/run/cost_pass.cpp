@@ -71,7 +71,7 @@ void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
                  std::vector<RunRecord*> runs, const RunOptions& options,
                  const std::function<void(const std::string&)>& progress) {
   std::erase_if(runs, [](const RunRecord* r) {
-    return r->status != RunStatus::Ok && r->status != RunStatus::Diverged;
+    return !ran_to_end(r->status) && r->status != RunStatus::Diverged;
   });
   if (runs.empty()) return;
   // The reference is stepped sample by sample; its cost per step is per internal step.

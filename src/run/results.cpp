@@ -41,6 +41,8 @@ std::string status_name(RunStatus status) {
       return "timeout";
     case RunStatus::Error:
       return "error";
+    case RunStatus::Capped:
+      return "capped";
   }
   return "?";
 }

@@ -15,9 +15,15 @@
 
 namespace bb {
 
-/// How a run ended. Anything but Ok carries a reason.
-enum class RunStatus { Ok, Diverged, Unsupported, Crashed, Timeout, Error };
+/// How a run ended. Anything but Ok carries a reason. Capped: it ran to the end, but its
+/// engine held a body at a limit of its own (Box2D's 2 m per step; the reason names the
+/// cap, the body and when): its numbers are measured and shown, and nothing trusts them.
+enum class RunStatus { Ok, Diverged, Unsupported, Crashed, Timeout, Error, Capped };
 std::string status_name(RunStatus status);
+/// Whether a run went to its end with a trajectory to measure: ok, or capped.
+inline bool ran_to_end(RunStatus status) {
+  return status == RunStatus::Ok || status == RunStatus::Capped;
+}
 
 /// Time spent in step() only, from a separate serial pass: the median over repeats, with the
 /// fastest and slowest repeat beside it.
@@ -38,12 +44,14 @@ struct ObservableResult {
 };
 
 /// One run at one step. Stable means bounded (energy_growth.hpp): no divergence, and an
-/// energy that neither compounds nor runs away; drift that adds is stable.
+/// energy that neither compounds nor runs away; drift that adds is stable. A run its engine
+/// reset, or held at a cap of its own, is not stable (engine_interventions.hpp).
 struct StabilityTrial {
   bool stable = false;
   std::string reason;  ///< what the energy did (a stable drift says so too), or why it failed
-  /// "bounded", "drift", "compounds", "runaway", "diverged", or "failed" (the run did not
-  /// finish: an exception, a crash, a timeout)
+  /// "bounded", "drift", "compounds", "runaway", "diverged" (a reset by the engine too),
+  /// "capped" (held at the engine's cap), or "failed" (the run did not finish: an
+  /// exception, a crash, a timeout)
   std::string growth;
 };
 

@@ -133,7 +133,7 @@ void RunCache::keep(const std::string& key, const std::string& bytes, bool repea
 }
 
 bool RunCache::repeatable(const RunRecord& run) {
-  return run.status == RunStatus::Ok || run.status == RunStatus::Diverged ||
+  return ran_to_end(run.status) || run.status == RunStatus::Diverged ||
          run.status == RunStatus::Unsupported;
 }
 

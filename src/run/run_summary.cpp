@@ -22,7 +22,8 @@ std::optional<double> measured_value(const RunRecord& run, const std::string& na
 void add_observables(const Scene& scene, RunRecord& run, const RunRecord& against) {
   for (const Observe& o : scene.observes) {
     ObservableResult r{o.name, {}, std::nullopt};
-    if (run.status == RunStatus::Ok)
+    // A capped run ran to the end: its values are shown (its status says whose they are).
+    if (ran_to_end(run.status))
       r.measured = measure(scene, o, run.trajectory, &against.trajectory.events);
     else
       r.measured.note = "run " + status_name(run.status);
@@ -90,7 +91,7 @@ void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& aga
       run.diverged_at = beyond->time;
     }
   // A run measured against itself (the fallback's finest) has no errors.
-  if (run.status == RunStatus::Ok && &against != &run)
+  if (ran_to_end(run.status) && &against != &run)
     run.errors = compare(scene, run.trajectory, against.trajectory);
   add_observables(scene, run, against);
   add_series(scene, run, &against.trajectory);

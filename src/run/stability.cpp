@@ -9,6 +9,7 @@
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
 #include "run/child_pool.hpp"
+#include "run/engine_interventions.hpp"
 #include "run/stability_watch.hpp"
 #include "run/wire.hpp"
 #include "scene/backend_names.hpp"
@@ -42,6 +43,8 @@ StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt, l
     StabilityWatch watch(scene, dt, state, steps);
     for (long n = 1; n <= watch.steps(); ++n) {
       sim->step();
+      // An engine that reset itself or held a body at its cap has its verdict already.
+      if (auto intervened = intervened_trial(sim->interventions(), dt)) return *intervened;
       sim->read(state);
       if (!watch.observe(n, state)) break;
     }

@@ -30,6 +30,29 @@ struct UnsupportedScene : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Something an engine did to a run that its state does not show, as the engine reports it:
+/// what it means for the run (a divergence, a row not to be trusted) is the runner's to say.
+struct EngineIntervention {
+  enum class Kind {
+    /// The engine threw its state away and started again (MuJoCo resets its data to the
+    /// initial state on a bad acceleration): what follows is not the scene's motion.
+    Reset,
+    /// The engine held something at a limit of its own that the scene does not have (Box2D
+    /// moves a body at most 2 m per step): the motion goes on, bounded by the engine.
+    Cap,
+  };
+  Kind kind = Kind::Reset;
+  /// Steps completed before the one in which the engine did it: it happened at t = step * dt
+  /// (seconds), and shows in the state after step + 1.
+  long step = 0;
+  /// What the engine did, with the body and the limit where there is one, in words that can
+  /// be followed by when ("MuJoCo reset its state", "Box2D held body 'wall' at its cap of
+  /// 2 m per step (40 m/s at dt 0.05 s)").
+  std::string what;
+  /// The engine's own reason, its warning or constant ("mjWARN_BADQACC: ..."); may be empty.
+  std::string cause;
+};
+
 /// One scene advancing at one fixed step.
 class Simulation {
  public:
@@ -45,6 +68,10 @@ class Simulation {
   virtual std::optional<EventTrace> exact_events() const { return std::nullopt; }
   /// Steps an adaptive solver took internally so far; nullopt for fixed-step backends.
   virtual std::optional<long> internal_steps() const { return std::nullopt; }
+  /// What the engine did that its state does not show, each kind latched at the first time
+  /// it happened (at most one Reset and one Cap, in the order they happened); empty for a
+  /// backend whose state tells everything. Cheap: the runner reads it at every sample.
+  virtual std::vector<EngineIntervention> interventions() const { return {}; }
 };
 
 /// What a backend is told besides the world, all from the case's study: the engines'

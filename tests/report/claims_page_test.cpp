@@ -97,7 +97,7 @@ TEST(ClaimsPage, QuotesMarksOwnClaimsAndCountsOnlyFailuresAsFailing) {
             std::string::npos)
       << page;
   EXPECT_NE(page.find("3 have a backend that diverged at some dt without bearing on the claim, "
-                      "or that could not be measured"),
+                      "was capped, or could not be measured"),
             std::string::npos)
       << page;
   // Faster than a vacuum allows: the first claim fails for explicit Euler, and only it counts.

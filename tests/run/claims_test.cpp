@@ -249,14 +249,19 @@ right = "course/explicit-euler:final_speed/ball"
 // part; one whose runs diverged without bearing on it, or could not be measured, is neither.
 TEST(Claims, StandingCountsOnlyFailuresAndPartialHoldsAsFailing) {
   ClaimResult c;
-  ClaimVerdict holds{"a", "holds", VerdictKind::Holds, {}, false, "", {}, {}};
-  ClaimVerdict diverged{
-      "b", "holds; diverged at dt 1/30 s", VerdictKind::Holds, {1.0 / 30}, false, "", {}, {}};
+  const auto verdict = [](const char* backend, const char* text, VerdictKind kind) {
+    ClaimVerdict v;
+    v.backend = backend, v.verdict = text, v.kind = kind;
+    return v;
+  };
+  const ClaimVerdict holds = verdict("a", "holds", VerdictKind::Holds);
+  ClaimVerdict diverged = verdict("b", "holds; diverged at dt 1/30 s", VerdictKind::Holds);
+  diverged.diverged = {1.0 / 30};
   ClaimVerdict counted = diverged;
   counted.diverged_judged = true;
-  ClaimVerdict unmeasured{
-      "c", "not measured (c has no value for it)", VerdictKind::NotMeasured, {}, false, "", {}, {}};
-  ClaimVerdict partial{"d", "holds for dt <= 1/60 s", VerdictKind::Partial, {}, false, "", {}, {}};
+  const ClaimVerdict unmeasured =
+      verdict("c", "not measured (c has no value for it)", VerdictKind::NotMeasured);
+  const ClaimVerdict partial = verdict("d", "holds for dt <= 1/60 s", VerdictKind::Partial);
   c.verdicts = {holds, counted};
   EXPECT_EQ(claim_standing(c), ClaimStanding::Holds);
   c.verdicts = {holds, diverged};
