@@ -243,21 +243,36 @@ void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
   }
   Ground& g = *scene.ground;
   const auto [up, across] = tilt_frame(g);
-  const Vec3 normal = std::cos(value * kDegree) * up + std::sin(value * kDegree) * across;
-  // The turn that takes the case's ground to the swept one, about the ground's point.
-  const Quat turn = Quat::FromTwoVectors(g.normal, normal);
-  const auto turned = [&](const Vec3& x) -> Vec3 { return g.point + turn * (x - g.point); };
+  // The turn from the case's tilt to the swept one, written as a case is by hand: the
+  // ground's normal from the angle's cosine and sine (unit length as the loader makes it),
+  // each body's parts along `up` and `across` turned by the angle's difference, the part
+  // across the tilt's plane left exactly as it is, and each orientation turned by the
+  // loader's own angle-to-turn (a 2D body's `angle`). A quaternion turn from one normal to
+  // the other left rounding along the new normal: a crate sliding on the slope then started
+  // 1e-17 m/s off it, which a case written by hand does not.
+  const double turn_degrees = value - sweep_parameter_value(scene, path);
+  const double c = std::cos(turn_degrees * std::numbers::pi / 180.0);
+  const double s = std::sin(turn_degrees * std::numbers::pi / 180.0);
+  const auto turned_vector = [&](const Vec3& v) -> Vec3 {
+    const double along = v.dot(across), height = v.dot(up);
+    const Vec3 rest = v - along * across - height * up;
+    return rest + (c * along + s * height) * across + (c * height - s * along) * up;
+  };
+  const auto turned = [&](const Vec3& x) -> Vec3 { return g.point + turned_vector(x - g.point); };
+  const Quat turn =
+      quat_from_axis_angle(across.cross(up).normalized(), -turn_degrees * std::numbers::pi / 180.0);
   for (Body& b : scene.bodies) {
     b.position = turned(b.position);
-    b.velocity = turn * b.velocity;
-    b.angular_velocity = turn * b.angular_velocity;
-    b.orientation = (turn * b.orientation).normalized();
+    b.velocity = turned_vector(b.velocity);
+    b.angular_velocity = turned_vector(b.angular_velocity);
+    b.orientation = turn * b.orientation;
   }
   for (Hinge& h : scene.hinges) {
     h.anchor = turned(h.anchor);
-    h.axis = (turn * h.axis).normalized();
+    h.axis = turned_vector(h.axis).normalized();
   }
-  g.normal = normal;
+  const double tilt = value * std::numbers::pi / 180.0;
+  g.normal = (std::cos(tilt) * up + std::sin(tilt) * across).normalized();
 }
 
 std::vector<double> sweep_range(double from, double to, int count) {
