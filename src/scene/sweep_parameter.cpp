@@ -7,6 +7,7 @@
 
 #include "scene/text.hpp"
 #include "scene/vector_limits.hpp"
+#include "scene/wave_limits.hpp"
 
 namespace bb {
 
@@ -30,6 +31,15 @@ int component(const std::string& axis) {
   if (axis == "y") return 1;
   if (axis == "z") return 2;
   return -1;
+}
+
+/// The number of a [waves] that `name` names (null for none).
+template <class W>
+auto wave_field(W& waves, const std::string& name) -> decltype(&waves.amplitude) {
+  if (name == "amplitude") return &waves.amplitude;
+  if (name == "wavenumber") return &waves.wavenumber;
+  if (name == "speed") return &waves.speed;
+  return nullptr;
 }
 
 /// Where a path points: the number it names in `scene` (null when it names nothing).
@@ -88,11 +98,7 @@ std::conditional_t<std::is_const_v<S>, const double*, double*> target(
   }
   if (p[0] == "gravity" && p.size() == 2 && component(p[1]) >= 0)
     return &scene.gravity[component(p[1])];
-  if (p[0] == "waves" && p.size() == 2 && scene.waves) {
-    if (p[1] == "amplitude") return &scene.waves->amplitude;
-    if (p[1] == "wavenumber") return &scene.waves->wavenumber;
-    if (p[1] == "speed") return &scene.waves->speed;
-  }
+  if (p[0] == "waves" && p.size() == 2 && scene.waves) return wave_field(*scene.waves, p[1]);
   return nullptr;
 }
 
@@ -197,6 +203,13 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
     return at + " must not be negative";
   if (p[0] == "waves" && field == "wavenumber" && value <= 0.0)
     return at + " must be greater than 0";
+  // The surface at this value, as the loader would check it in [waves].
+  if (p[0] == "waves") {
+    Waves w = *scene.waves;
+    *wave_field(w, p[1]) = value;
+    if (const WaveProblem problem = wave_problem(w); !problem.key.empty())
+      return at + " " + problem.problem;
+  }
   if (field == "angle" && (value < 0.0 || value > 90.0))
     return at + " is the sail's angle from the heading and must lie between 0 and 90 degrees";
   if (field == "restitution" && (value < 0.0 || value > 1.0))
