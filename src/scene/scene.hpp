@@ -23,7 +23,7 @@ struct Sail {
   double area = 0.0;            ///< square metres
   double coefficient = 1.0;     ///< C_s, dimensionless
   double angle = 0.0;           ///< degrees from the heading; the boom swings out to leeward
-  double heel_stiffness = 0.0;  ///< N per radian of heel; 0: the boat stays upright
+  double heel_stiffness = 0.0;  ///< N per radian of heel, > 0; 0: none given, the boat stays upright
 };
 
 /// How the wind pushes a flat plate along its normal n (seed section 8, "Wind").

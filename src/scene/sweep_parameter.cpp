@@ -198,7 +198,10 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
     return at + " must not be negative";
   if ((field == "area" || field == "coefficient" || field == "k") && value <= 0.0)
     return at + " must be greater than 0";
-  if (field == "heel_stiffness" && value < 0.0) return at + " must not be negative";
+  if (field == "heel_stiffness" && !(value > 0.0))
+    return at +
+           " must be greater than 0 (the boat heels by F_across / heel_stiffness, flat on "
+           "the water as it falls to 0; an upright boat leaves the key out)";
   if (p[0] == "waves" && (field == "amplitude" || field == "speed") && value < 0.0)
     return at + " must not be negative";
   if (p[0] == "waves" && field == "wavenumber" && value <= 0.0)
