@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <thread>
 
@@ -170,9 +171,16 @@ int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) 
   return bb::cli::kExitBadInput;
 }
 
+/// Says `text` on stderr, never throwing: stderr may be a pipe whose reader went away
+/// (`beachball list 2>&1 | head`), and what cannot be said then is lost, not a second error
+/// (a throw from a handler below aborted the program, exit 134).
+void say(const std::string& text) {
+  std::fputs(text.c_str(), stderr);
+}
+
 /// A signal's stop: 128 + the signal, as a shell reports it.
 int interrupted(const char* what) {
-  fmt::print(stderr, "\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(), what);
+  say(fmt::format("\nbeachball: interrupted by signal {}: {}\n", bb::interrupt_signal(), what));
   return 128 + bb::interrupt_signal();
 }
 
@@ -208,16 +216,20 @@ int main(int argc, char** argv) {
                  cache->folder(), cache->reused() > 0 ? " (--fresh runs them all again)" : "");
       if (!shard_folder) cache->prune();
     }
+    // What is still buffered goes out now: a reader that went away is a stop by SIGPIPE,
+    // not a silent success.
+    if (std::fflush(stdout) != 0 && bb::interrupt_signal() != 0)
+      return interrupted("standard output's reader went away; what was printed is cut short");
     return code;
   } catch (const bb::Interrupted& e) {
     return interrupted(e.what());
   } catch (const bb::CaseError& e) {
-    fmt::print(stderr, "beachball: {}\n", e.what());
+    say(fmt::format("beachball: {}\n", e.what()));
     return bb::cli::kExitBadInput;
   } catch (const std::exception& e) {
     // Printing to a reader that went away fails after SIGPIPE: that is the signal's stop.
     if (bb::interrupt_signal() != 0) return interrupted(e.what());
-    fmt::print(stderr, "beachball: error: {}\n", e.what());
+    say(fmt::format("beachball: error: {}\n", e.what()));
     return bb::cli::kExitBadInput;
   }
 }
