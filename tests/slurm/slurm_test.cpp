@@ -2,7 +2,8 @@
 // localhost, started here in a temporary folder (its own munged, slurmctld and slurmd, on
 // free ports, nothing system-wide touched), runs scripts/slurm/submit: the array of shards
 // (scripts/slurm/report.sbatch) and the merge that depends on it; the merged report is the
-// report run whole, byte for byte. Skipped, with the reason, where Slurm is not installed
+// report run whole, byte for byte; and the by-hand example of the same section, its two
+// sbatch lines run as written. Skipped, with the reason, where Slurm is not installed
 // (Debian's slurm-wlm); a cluster that fails to start is a failure, with the daemons' logs.
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -22,6 +23,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <thread>
 #include <vector>
@@ -216,70 +219,93 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
   return conf;
 }
 
-TEST(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
-  std::map<std::string, std::string> programs;
-  std::string missing;
-  for (const char* name : {"munged", "slurmctld", "slurmd", "sbatch", "sinfo", "scancel"}) {
-    programs[name] = find_program(name);
-    if (programs[name].empty()) missing += std::string(" ") + name;
-  }
-  if (!missing.empty())
-    GTEST_SKIP() << "no" << missing << " in PATH or /usr/sbin: install Debian's slurm-wlm";
+/// A one-node cluster of its own for each test, up before the test's body runs; the test is
+/// skipped, saying why, where Slurm is not installed.
+class Slurm : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string missing;
+    for (const char* name :
+         {"munged", "slurmctld", "slurmd", "sbatch", "sinfo", "scancel", "scontrol"}) {
+      programs_[name] = find_program(name);
+      if (programs_[name].empty()) missing += std::string(" ") + name;
+    }
+    if (!missing.empty())
+      GTEST_SKIP() << "no" << missing << " in PATH or /usr/sbin: install Debian's slurm-wlm";
 
-  // A folder of our own: mkdtemp makes it 0700, but munged wants every folder above its
-  // socket open to all (execute), and none writable by others.
-  std::string dir = (fs::path(::testing::TempDir()) / "beachball_slurm_XXXXXX").string();
-  ASSERT_NE(mkdtemp(dir.data()), nullptr) << dir;
-  chmod(dir.c_str(), 0755);
-  for (const char* sub : {"munge", "state", "spool", "work"})
-    fs::create_directories(dir + "/" + sub);
-  Cluster cluster(dir);
+    // A folder of our own: mkdtemp makes it 0700, but munged wants every folder above its
+    // socket open to all (execute), and none writable by others.
+    dir_ = (fs::path(::testing::TempDir()) / "beachball_slurm_XXXXXX").string();
+    ASSERT_NE(mkdtemp(dir_.data()), nullptr) << dir_;
+    chmod(dir_.c_str(), 0755);
+    for (const char* sub : {"munge", "state", "spool", "work"})
+      fs::create_directories(dir_ + "/" + sub);
+    cluster_ = std::make_unique<Cluster>(dir_);
+    Cluster& cluster = *cluster_;
+    const std::string& dir = dir_;
+    std::map<std::string, std::string>& programs = programs_;
 
-  // munged with its own key (1 KiB of random bytes, readable by its owner only), socket,
-  // pid and seed files, in the foreground so that it stays our child and logs to our file.
-  // --force: munged refuses some folders (a world-writable one above ours) that are fine
-  // for a test.
-  const std::string munge = dir + "/munge", socket = munge + "/socket";
-  {
-    std::random_device random;
-    std::ofstream key(munge + "/munge.key", std::ios::binary);
-    for (int i = 0; i < 1024; ++i) key.put(static_cast<char>(random() & 0xff));
-  }
-  chmod((munge + "/munge.key").c_str(), 0400);
-  cluster.start("munged",
-                {programs["munged"], "--foreground", "--force", "--socket=" + socket,
-                 "--key-file=" + munge + "/munge.key", "--pid-file=" + munge + "/munged.pid",
-                 "--seed-file=" + munge + "/munged.seed"});
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (!fs::exists(socket) && cluster.ended().empty() &&
-         std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(100ms);
-  ASSERT_TRUE(fs::exists(socket)) << "munged did not start: " << cluster.ended() << cluster.logs();
+    // munged with its own key (1 KiB of random bytes, readable by its owner only), socket,
+    // pid and seed files, in the foreground so that it stays our child and logs to our file.
+    // --force: munged refuses some folders (a world-writable one above ours) that are fine
+    // for a test.
+    const std::string munge = dir + "/munge", socket = munge + "/socket";
+    {
+      std::random_device random;
+      std::ofstream key(munge + "/munge.key", std::ios::binary);
+      for (int i = 0; i < 1024; ++i) key.put(static_cast<char>(random() & 0xff));
+    }
+    chmod((munge + "/munge.key").c_str(), 0400);
+    cluster.start("munged",
+                  {programs["munged"], "--foreground", "--force", "--socket=" + socket,
+                   "--key-file=" + munge + "/munge.key", "--pid-file=" + munge + "/munged.pid",
+                   "--seed-file=" + munge + "/munged.seed"});
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while (!fs::exists(socket) && cluster.ended().empty() &&
+           std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(100ms);
+    ASSERT_TRUE(fs::exists(socket))
+        << "munged did not start: " << cluster.ended() << cluster.logs();
 
-  // Every Slurm command here and in the jobs (sbatch passes the environment on) reads this
-  // cluster's slurm.conf, and nothing else from a cluster the tests may be running in (a
-  // user's SBATCH_PARTITION, say, or the job's own SLURM_JOB_ID).
-  std::vector<std::string> inherited;
-  for (char** e = environ; *e; ++e) {
-    const std::string name = std::string(*e).substr(0, std::string(*e).find('='));
-    if (name.rfind("SLURM_", 0) == 0 || name.rfind("SBATCH_", 0) == 0) inherited.push_back(name);
-  }
-  for (const std::string& name : inherited) unsetenv(name.c_str());
-  const std::vector<int> ports = free_ports(2);
-  test::write_case(dir, "slurm.conf", slurm_conf(dir, socket, ports[0], ports[1]));
-  setenv("SLURM_CONF", (dir + "/slurm.conf").c_str(), 1);
-  cluster.start("slurmctld", {programs["slurmctld"], "-D"});
-  cluster.start("slurmd", {programs["slurmd"], "-D", "-N", "localhost"});
+    // Every Slurm command here and in the jobs (sbatch passes the environment on) reads this
+    // cluster's slurm.conf, and nothing else from a cluster the tests may be running in (a
+    // user's SBATCH_PARTITION, say, or the job's own SLURM_JOB_ID).
+    std::vector<std::string> inherited;
+    for (char** e = environ; *e; ++e) {
+      const std::string name = std::string(*e).substr(0, std::string(*e).find('='));
+      if (name.rfind("SLURM_", 0) == 0 || name.rfind("SBATCH_", 0) == 0) inherited.push_back(name);
+    }
+    for (const std::string& name : inherited) unsetenv(name.c_str());
+    const std::vector<int> ports = free_ports(2);
+    test::write_case(dir, "slurm.conf", slurm_conf(dir, socket, ports[0], ports[1]));
+    setenv("SLURM_CONF", (dir + "/slurm.conf").c_str(), 1);
+    cluster.start("slurmctld", {programs["slurmctld"], "-D"});
+    cluster.start("slurmd", {programs["slurmd"], "-D", "-N", "localhost"});
 
-  // Up when sinfo says the node is idle; a daemon that ends, or 60 s, is a failure.
-  std::string state, ended;
-  while ((ended = cluster.ended()).empty() && std::chrono::steady_clock::now() < deadline) {
-    state = test::shell(programs["sinfo"] + " --noheader --Node --format=%T").out;
-    if (state == "idle\n") break;
-    std::this_thread::sleep_for(250ms);
+    // Up when sinfo says the node is idle; a daemon that ends, or 60 s, is a failure.
+    std::string state, ended;
+    while ((ended = cluster.ended()).empty() && std::chrono::steady_clock::now() < deadline) {
+      state = test::shell(programs["sinfo"] + " --noheader --Node --format=%T").out;
+      if (state == "idle\n") break;
+      std::this_thread::sleep_for(250ms);
+    }
+    ASSERT_EQ(state, "idle\n") << "the cluster did not start: " << ended << cluster.logs();
+    cluster.jobs_may_run();
   }
-  ASSERT_EQ(state, "idle\n") << "the cluster did not start: " << ended << cluster.logs();
-  cluster.jobs_may_run();
+
+  void TearDown() override { cluster_.reset(); }
+
+  /// Every daemon's log, for a failure's message.
+  std::string logs() const { return cluster_ ? cluster_->logs() : ""; }
+
+  std::string dir_;
+  std::map<std::string, std::string> programs_;
+  std::unique_ptr<Cluster> cluster_;
+};
+
+TEST_F(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
+  const std::string& dir = dir_;
+  Cluster& cluster = *cluster_;
 
   // Two cases, three shards, each a task of the array the committed scripts submit; the
   // merge is the job depending on it, waited for (bounded: a stuck job is a failure, with
@@ -310,6 +336,113 @@ TEST(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
   for (int i = 1; i <= 3; ++i)
     EXPECT_TRUE(fs::exists(work + "/merged.shards/" + std::to_string(i) + "/beachball-shard.txt"))
         << i;
+}
+
+/// The fenced block of docs/design.md that follows `after`, as the shell would run it.
+std::string doc_example(const std::string& after) {
+  const std::string doc = test::bytes(test::source_path("docs/design.md"));
+  const std::size_t at = doc.find(after);
+  if (at == std::string::npos) return "";
+  const std::size_t open = doc.find("```", at);
+  const std::size_t first = doc.find('\n', open) + 1;
+  return doc.substr(first, doc.find("```", first) - first);
+}
+
+/// PATH without the folders that hold a `beachball`: the example must find the build itself.
+std::string path_without_beachball() {
+  const char* env = std::getenv("PATH");
+  const std::string dirs = env ? env : "";
+  std::string kept;
+  for (std::size_t start = 0; start <= dirs.size();) {
+    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+    const std::string dir = dirs.substr(start, end - start);
+    std::error_code unreadable;
+    if (!dir.empty() && !fs::exists(fs::path(dir) / "beachball", unreadable))
+      kept += (kept.empty() ? "" : ":") + dir;
+    start = end + 1;
+  }
+  return kept;
+}
+
+/// A job's state as scontrol shows it ("COMPLETED", "PENDING", ...; "" once forgotten).
+std::string job_state(const std::string& scontrol, const std::string& id) {
+  const std::string shown = test::shell(scontrol + " show job " + id + " 2>/dev/null").out;
+  const std::size_t at = shown.find("JobState=");
+  if (at == std::string::npos) return "";
+  return shown.substr(at + 9, shown.find_first_of(" \n", at) - at - 9);
+}
+
+// The by-hand example of docs/design.md, run as written from a folder laid out as the
+// repository's root (the script, a build in build/bin and a cases/ folder of two small cases,
+// not the bundled suite), with no beachball in PATH: every shard runs, the merge runs after
+// them, and the report has every case's page and results. It failed as written: every task
+// said "exec: beachball: not found" and the merge pended for ever on a dependency that could
+// no longer be met.
+TEST_F(Slurm, TheByHandExampleOfTheDesignRunsAsWritten) {
+  const std::string example = doc_example("Or by hand");
+  ASSERT_NE(example.find("sbatch"), std::string::npos) << "no example found:\n" << example;
+  const std::string work = dir_ + "/work";
+  fs::create_directories(work + "/scripts/slurm");
+  fs::create_directories(work + "/build/bin");
+  fs::create_symlink(test::source_path("scripts/slurm/report.sbatch"),
+                     work + "/scripts/slurm/report.sbatch");
+  fs::create_symlink(BEACHBALL_PROGRAM, work + "/build/bin/beachball");
+  test::write_case(work + "/cases", "a.toml", test::minimal_case("a"));
+  test::write_case(work + "/cases", "stack.toml", test::kStackedBalls);
+  test::write_case(work, "example.sh", example);
+
+  const test::Outcome submitted = test::shell(
+      "cd " + work + " && PATH=" + path_without_beachball() + " timeout 60 bash -eu example.sh");
+  const auto job_logs = [&] {
+    std::string out = "\n--- example:\n" + example + "\n--- it printed:\n" + submitted.out +
+                      "\n--- queue:\n" + test::shell("squeue").out;
+    for (const auto& entry : fs::directory_iterator(work))
+      if (entry.path().filename().string().rfind("slurm-", 0) == 0)
+        out += "\n--- " + entry.path().filename().string() + ":\n" + test::bytes(entry.path());
+    return out + logs();
+  };
+  ASSERT_EQ(submitted.exit_code, 0) << job_logs();
+  // The merge's id: the last job submitted.
+  const std::string said = "Submitted batch job ";
+  const std::size_t at = submitted.out.rfind(said);
+  ASSERT_NE(at, std::string::npos) << job_logs();
+  const std::string merge =
+      submitted.out.substr(at + said.size(), submitted.out.find('\n', at) - at - said.size());
+
+  // Waited for until it ends (bounded: a merge that pends for ever is a failure, with the
+  // queue as it was). Its record is kept 5 s after it ends (MinJobAge).
+  const auto deadline = std::chrono::steady_clock::now() + 400s;
+  std::string state = job_state(programs_["scontrol"], merge), last = state;
+  while (std::chrono::steady_clock::now() < deadline &&
+         (state == "PENDING" || state == "RUNNING" || state == "CONFIGURING" ||
+          state == "COMPLETING")) {
+    std::this_thread::sleep_for(500ms);
+    last = state;
+    state = job_state(programs_["scontrol"], merge);
+  }
+  if (state.empty()) state = last;
+  EXPECT_EQ(state, "COMPLETED") << "the merge, job " << merge << job_logs();
+
+  // The report the example merged: the same files as the report run whole, and the same
+  // results but for the costs (each timed by its own run).
+  const test::Outcome whole = test::shell("cd " + work + " && " + BEACHBALL_PROGRAM +
+                                          " report cases/ --cache off --out whole");
+  ASSERT_EQ(whole.exit_code, 0) << whole.out;
+  ASSERT_TRUE(fs::exists(work + "/reports")) << job_logs();
+  const auto merged = test::snapshot(work + "/reports"), unsplit = test::snapshot(work + "/whole");
+  std::vector<std::string> merged_files, unsplit_files;
+  for (const auto& [name, bytes] : merged) merged_files.push_back(name);
+  for (const auto& [name, bytes] : unsplit) unsplit_files.push_back(name);
+  EXPECT_EQ(merged_files, unsplit_files) << job_logs();
+  for (const char* name : {"a.json", "stack.json"}) {
+    auto rows = [](const std::string& text) {
+      nlohmann::json runs = nlohmann::json::parse(text)["runs"];
+      for (auto& row : runs) row.erase("cost");
+      return runs.dump();
+    };
+    ASSERT_TRUE(merged.count(name) && unsplit.count(name)) << name;
+    EXPECT_EQ(rows(merged.at(name)), rows(unsplit.at(name))) << name;
+  }
 }
 
 }  // namespace
