@@ -54,6 +54,15 @@ constexpr const char* kOdeGyroscopicOn =
     "towards its major axis: spinning_box at 1/60 s starts to turn over, then spins about "
     "its major axis (|L| +5%, energy -10%) and never flips; at 1/960 s it flips 10 times to "
     "the reference's 4";
+/// ODE's own default CFM in this build, read from a new world (dWorldGetCFM): 1e-10 in double
+/// precision, 1e-5 in single. The case's `cfm` (beachball's default 1e-5) replaces it.
+double ode_own_cfm() {
+  const dWorldID world = dWorldCreate();
+  const double cfm = dWorldGetCFM(world);
+  dWorldDestroy(world);
+  return cfm;
+}
+
 constexpr const char* kOdeGyroscopicOff =
     "dBodySetGyroscopicMode(body, 0) on every moving body (gyroscopic_term = false): no "
     "gyroscopic torque, a free body keeps its world angular velocity and never flips";
@@ -188,6 +197,8 @@ class OdeSimulation : public Simulation {
   Settings settings() const override {
     Settings s = engine_key_settings(engines_, ode_description());
     s.push_back({"precision", std::string(sizeof(dReal) == 8 ? "double" : "float")});
+    // The world's cfm above is beachball's choice; ODE's own, for comparison.
+    s.push_back({"cfm_ode_default", ode_own_cfm()});
     s.push_back({"auto_disable", false});
     s.push_back({"gyroscopic", std::string(gyroscopic_ ? kOdeGyroscopicOn : kOdeGyroscopicOff)});
     if (!contacts_) {

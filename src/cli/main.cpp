@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <thread>
 
@@ -170,9 +171,16 @@ int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) 
   return bb::cli::kExitBadInput;
 }
 
+/// Says `text` on stderr, never throwing: stderr may be a pipe whose reader went away
+/// (`beachball list 2>&1 | head`), and what cannot be said then is lost, not a second error
+/// (a throw from a handler below aborted the program, exit 134).
+void say(const std::string& text) {
+  std::fputs(text.c_str(), stderr);
+}
+
 /// A signal's stop: 128 + the signal, as a shell reports it.
 int interrupted(const char* what) {
-  fmt::print(stderr, "\nbeachball: {}: {}\n", bb::interrupt_description(), what);
+  say(fmt::format("\nbeachball: {}: {}\n", bb::interrupt_description(), what));
   return 128 + bb::interrupt_signal();
 }
 
@@ -205,11 +213,11 @@ int main(int argc, char** argv) {
       cache.emplace(values.cache, values.fresh);
       // A folder that cannot be used is said, not skipped in silence.
       if (const std::string problem = cache->store().problem(); !problem.empty()) {
-        fmt::print(stderr,
-                   "note: no results are kept or reused: the folder of kept results {} "
-                   "cannot be used: {} (--cache DIR names another; --cache off keeps "
-                   "nothing without this note)\n",
-                   values.cache, problem);
+        say(
+            fmt::format("note: no results are kept or reused: the folder of kept results {} "
+                        "cannot be used: {} (--cache DIR names another; --cache off keeps "
+                        "nothing without this note)\n",
+                        values.cache, problem));
         cache.reset();
       } else {
         options.cache = &*cache;
@@ -222,18 +230,22 @@ int main(int argc, char** argv) {
                  cache->folder(), cache->reused() > 0 ? " (--fresh runs them all again)" : "");
       if (!shard_folder) cache->prune();
     }
+    // What is still buffered goes out now: a reader that went away is a stop by SIGPIPE,
+    // not a silent success.
+    if (std::fflush(stdout) != 0 && bb::interrupt_signal() != 0)
+      return interrupted("standard output's reader went away; what was printed is cut short");
     return code;
   } catch (const bb::Interrupted& e) {
     return interrupted(e.what());
   } catch (const bb::CaseError& e) {
     // A write that failed because a signal arrived (a file past `ulimit -f`) is its stop.
     if (bb::interrupt_signal() != 0) return interrupted(e.what());
-    fmt::print(stderr, "beachball: {}\n", e.what());
+    say(fmt::format("beachball: {}\n", e.what()));
     return bb::cli::kExitBadInput;
   } catch (const std::exception& e) {
     // Printing to a reader that went away fails after SIGPIPE: that is the signal's stop.
     if (bb::interrupt_signal() != 0) return interrupted(e.what());
-    fmt::print(stderr, "beachball: error: {}\n", e.what());
+    say(fmt::format("beachball: error: {}\n", e.what()));
     return bb::cli::kExitBadInput;
   }
 }

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cstdio>
+
 namespace bb::cli {
 
 Progress::Progress(int total)
@@ -12,7 +14,8 @@ Progress::Progress(int total)
 
 Progress::~Progress() {
   // Clear the line so that what follows starts clean.
-  if (enabled_ && done_ > 0) fmt::print(stderr, "\r\033[K");
+  // fputs, not fmt::print: a destructor must not throw when the terminal went away.
+  if (enabled_ && done_ > 0) std::fputs("\r\033[K", stderr);
 }
 
 void Progress::advance(const std::string& what) {

@@ -97,7 +97,7 @@ SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
     const bool pressed = -scene.gravity.dot(n) > 0.0;
     if (hinge_[pair.a]) continue;  // a hinged body is held by its hinge, below
     if (pressed && std::abs(proximity(pair, y.data()).gap) <= kSimultaneousGap &&
-        std::abs(velocity(y.data(), pair.a).dot(n)) <= 1e-12)
+        std::abs(velocity(y.data(), pair.a).dot(n)) <= kRestingNormalSpeed)
       resting_[pair.a] = true;
   }
   // A hinged body on the ground that its forces turn into it stays where it is.

@@ -89,7 +89,7 @@ std::string box_slide_reason(const World& scene, int index) {
     return name +
            "does not start flat on a face on the ground: falling and landing boxes have "
            "no event model in the reference";
-  if (std::abs(box.velocity.dot(n)) > 0.0 || box.angular_velocity.norm() > 0.0)
+  if (std::abs(box.velocity.dot(n)) > kRestingNormalSpeed || box.angular_velocity.norm() > 0.0)
     return name +
            "starts moving off the ground or spinning: the reference slides boxes flat "
            "on the ground only";

@@ -13,6 +13,11 @@
 
 namespace bb {
 
+/// m/s: a speed along the ground's normal this small is rounding, not motion (a velocity
+/// along a slope written to 17 digits is 1e-17 off it): a body touching the ground with no
+/// more starts at rest on it.
+inline constexpr double kRestingNormalSpeed = 1e-12;
+
 enum class SlideMode {
   Free,     ///< not resting on a ground with friction
   Stuck,    ///< static friction holds it: no tangential acceleration
@@ -40,7 +45,8 @@ SlideDecision decide_slide(double mu_static, const Eigen::Vector3d& n, const Eig
 std::string tipping_reason(const World& scene, const Body& box);
 
 /// Why the reference cannot follow moving box `box` of `scene` exactly ("" when it can): it
-/// must start flat on a face on the ground, at rest along the normal and without spin,
+/// must start flat on a face on the ground, at rest along the normal (within
+/// kRestingNormalSpeed) and without spin,
 /// touch nothing else, hang on no spring, be pushed only through its centre along the
 /// ground, and not tip (tipping_reason).
 std::string box_slide_reason(const World& scene, int box);

@@ -47,19 +47,83 @@ std::string terminal(int height) {
 
 namespace {
 
+/// What `gnuplot --version` gave: what it printed when it ran, else why it did not (not
+/// found, or found and failed to start, with how it ended and what it said).
+struct GnuplotProbe {
+  std::optional<std::string> version;
+  std::string problem;
+};
+
+/// Ends `text` at its last printing character.
+std::string trimmed(std::string text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text;
+}
+
+/// Runs `gnuplot --version` without a shell, its stdout and stderr read back; a second pipe,
+/// closed by a successful exec, brings back exec's errno when there is no gnuplot to run.
+GnuplotProbe probe_gnuplot() {
+  int output[2], exec_error[2];
+  if (pipe(output) != 0)
+    return {std::nullopt, std::string("cannot start gnuplot: ") + std::strerror(errno)};
+  if (pipe2(exec_error, O_CLOEXEC) != 0) {
+    close(output[0]), close(output[1]);
+    return {std::nullopt, std::string("cannot start gnuplot: ") + std::strerror(errno)};
+  }
+  std::fflush(nullptr);
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    dup2(output[1], STDOUT_FILENO);
+    dup2(output[1], STDERR_FILENO);
+    execlp("gnuplot", "gnuplot", "--version", static_cast<char*>(nullptr));
+    const int error = errno;
+    if (write(exec_error[1], &error, sizeof error) < 0) _exit(127);
+    _exit(127);
+  }
+  close(output[1]), close(exec_error[1]);
+  if (pid < 0) {
+    close(output[0]), close(exec_error[0]);
+    return {std::nullopt, std::string("cannot start gnuplot: ") + std::strerror(errno)};
+  }
+  std::string said;
+  char buffer[256];
+  for (ssize_t n; (n = read(output[0], buffer, sizeof buffer)) != 0;)
+    if (n > 0)
+      said.append(buffer, static_cast<std::size_t>(n));
+    else if (errno != EINTR)
+      break;
+  int error = 0;
+  const bool exec_failed = read(exec_error[0], &error, sizeof error) == sizeof error;
+  close(output[0]), close(exec_error[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (exec_failed)
+    return {std::nullopt, error == ENOENT
+                              ? "gnuplot was not found (install gnuplot-nox)"
+                              : std::string("gnuplot could not be run: ") + std::strerror(error)};
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {said, ""};
+  const std::string ended = WIFEXITED(status)
+                                ? "exit " + std::to_string(WEXITSTATUS(status))
+                                : "killed by signal " + std::to_string(WTERMSIG(status));
+  said = trimmed(said);
+  return {std::nullopt, "gnuplot failed to start (gnuplot --version: " + ended + ")" +
+                            (said.empty() ? "" : ": " + said)};
+}
+
+/// The probe, made once: a kept drawing's key holds the version.
+const GnuplotProbe& gnuplot_probe() {
+  static const GnuplotProbe probe = probe_gnuplot();
+  return probe;
+}
+
 /// What `gnuplot --version` prints, or nullopt when it cannot run: part of a kept drawing's
 /// key.
 const std::optional<std::string>& gnuplot_version() {
-  static const std::optional<std::string> version = []() -> std::optional<std::string> {
-    FILE* pipe = popen("gnuplot --version 2>/dev/null", "r");
-    if (!pipe) return std::nullopt;
-    std::string out;
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
-    if (pclose(pipe) != 0) return std::nullopt;
-    return out;
-  }();
-  return version;
+  return gnuplot_probe().version;
 }
 
 /// The cache draw() keeps its drawings in, while a KeptDrawings lives.
@@ -79,6 +143,10 @@ KeptDrawings::~KeptDrawings() {
 
 bool gnuplot_available() {
   return gnuplot_version().has_value();
+}
+
+std::string gnuplot_problem() {
+  return gnuplot_probe().problem;
 }
 
 namespace {
@@ -150,8 +218,7 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
   stop_if_interrupted(name);
   if (!ended.empty() || !complete_svg(output)) {
     std::ifstream log(temp / "log.txt");
-    std::string said(std::istreambuf_iterator<char>(log), {});
-    while (!said.empty() && std::isspace(static_cast<unsigned char>(said.back()))) said.pop_back();
+    const std::string said = trimmed(std::string(std::istreambuf_iterator<char>(log), {}));
     std::remove(output.c_str());
     throw WriteError(batch.folder() + "/" + name,
                      !ended.empty()

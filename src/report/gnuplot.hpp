@@ -21,6 +21,9 @@ inline constexpr std::size_t kMaxPlotPoints = 2000;
 std::string quote(const std::string& s);
 /// Whether gnuplot can be run.
 bool gnuplot_available();
+/// Why gnuplot cannot be run ("" when it can): not found, or found and failed to start
+/// (how it ended, and what it said).
+std::string gnuplot_problem();
 /// While one lives, draw() keeps each SVG in `cache` under a digest of what decides it (the
 /// script, the data, the size and gnuplot's version) and, with `reuse`, takes a kept one
 /// instead of running gnuplot again: an unchanged report redraws nothing.

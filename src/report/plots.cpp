@@ -152,8 +152,8 @@ PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
   PlotFiles files;
   write_motion(results, batch, files);
   if (!gnuplot_available()) {
-    files.note += std::string(files.note.empty() ? "" : "; ") +
-                  "plots skipped: gnuplot was not found (install gnuplot-nox)";
+    files.note +=
+        std::string(files.note.empty() ? "" : "; ") + "plots skipped: " + gnuplot_problem();
     return files;
   }
   const Scene& scene = *results.scene;

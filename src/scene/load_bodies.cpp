@@ -153,8 +153,17 @@ void read_sail(TomlReader& r, const Scene& scene, Body& b) {
   require_range(s, "coefficient", sail.coefficient, 0.0, 0.0, false);
   sail.angle = s.number("angle");
   require_range(s, "angle", sail.angle, 0.0, 90.0);
-  sail.heel_stiffness = s.number_or("heel_stiffness", 0.0);
-  require_range(s, "heel_stiffness", sail.heel_stiffness, 0.0, 0.0);
+  // Heel tends to flat on the water as the stiffness falls to 0: an upright boat (infinitely
+  // stiff) leaves the key out, so that 0 cannot mean upright beside 1e-300 meaning flat.
+  if (s.has("heel_stiffness")) {
+    sail.heel_stiffness = s.number("heel_stiffness");
+    if (!(sail.heel_stiffness > 0.0))
+      s.fail(s.line_of("heel_stiffness"),
+             "'heel_stiffness' in " + s.where() + " must be greater than 0, not " +
+                 show(sail.heel_stiffness) +
+                 ": the boat heels by F_across / heel_stiffness, flat on the water as it falls "
+                 "to 0; leave the key out for a boat that stays upright");
+  }
   s.finish();
   b.sail = sail;
 }

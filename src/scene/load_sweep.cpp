@@ -1,5 +1,6 @@
 // [[sweep]] of a case file: one parameter, its values (a list or a range), and what the
 // page says beside it.
+#include <algorithm>
 #include <cmath>
 
 #include "scene/case_limits.hpp"
@@ -87,6 +88,13 @@ void read_sweep(TomlReader& root, Scene& scene) {
     r.fail(r.line_of("parameter"), "[[sweep]] 'parameter' " + problem);
   s.values = read_values(r);
   const std::string key = r.has("values") ? "values" : "range";
+  // Each value is a run of the whole case and a row of the page: one value twice is the
+  // same point twice (a range's steps below a double's resolution make such twins too).
+  std::vector<double> sorted = s.values;
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twin = std::adjacent_find(sorted.begin(), sorted.end()); twin != sorted.end())
+    r.fail(r.line_of(key), "[[sweep]] '" + key + "' gives the value " + short_number(*twin) +
+                               " twice; each value is one point of the sweep");
   for (double v : s.values)
     if (const std::string problem = sweep_value_problem(scene, s.parameter, v); !problem.empty())
       r.fail(r.line_of(key), "[[sweep]] " + problem);

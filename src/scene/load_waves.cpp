@@ -3,15 +3,9 @@
 #include <cmath>
 
 #include "scene/load_parts.hpp"
+#include "scene/wave_limits.hpp"
 
 namespace bb::load {
-
-namespace {
-
-/// The most surface points a [waves] may ask for: a profile, not a mesh.
-constexpr double kMaxWavePoints = 10000;
-
-}  // namespace
 
 void read_waves(TomlReader& root, Scene& scene, bool has_grid) {
   const toml::table* t = root.table("waves");
@@ -40,6 +34,8 @@ void read_waves(TomlReader& root, Scene& scene, bool has_grid) {
   require_vector_range(r, "to", {w.to, 0.0, 0.0}, VectorKind::Position);
   w.level = r.number_or("level", 0.0);
   require_vector_range(r, "level", {0.0, w.level, 0.0}, VectorKind::Position);
+  if (const WaveProblem p = wave_problem(w); !p.key.empty())
+    r.fail(r.line_of(p.key), "'" + p.key + "' in [waves] " + p.problem);
   r.finish();
   w.first_body = static_cast<int>(scene.bodies.size());
   for (int i = 0; i < w.points; ++i) scene.bodies.push_back(wave_point(w, i));

@@ -20,10 +20,11 @@ enum class Shape { Sphere, Box, Point };
 /// A boat's sail (seed section 9, "Boat 1"): planar and friction-free, so the apparent wind
 /// pushes it only along its normal, by the drag formula on its area.
 struct Sail {
-  double area = 0.0;            ///< square metres
-  double coefficient = 1.0;     ///< C_s, dimensionless
-  double angle = 0.0;           ///< degrees from the heading; the boom swings out to leeward
-  double heel_stiffness = 0.0;  ///< N per radian of heel; 0: the boat stays upright
+  double area = 0.0;         ///< square metres
+  double coefficient = 1.0;  ///< C_s, dimensionless
+  double angle = 0.0;        ///< degrees from the heading; the boom swings out to leeward
+  /// N per radian of heel, > 0 when given; 0: not given, the boat stays upright.
+  double heel_stiffness = 0.0;
 };
 
 /// How the wind pushes a flat plate along its normal n (seed section 8, "Wind").

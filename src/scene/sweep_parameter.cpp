@@ -7,6 +7,7 @@
 
 #include "scene/text.hpp"
 #include "scene/vector_limits.hpp"
+#include "scene/wave_limits.hpp"
 
 namespace bb {
 
@@ -30,6 +31,15 @@ int component(const std::string& axis) {
   if (axis == "y") return 1;
   if (axis == "z") return 2;
   return -1;
+}
+
+/// The number of a [waves] that `name` names (null for none).
+template <class W>
+auto wave_field(W& waves, const std::string& name) -> decltype(&waves.amplitude) {
+  if (name == "amplitude") return &waves.amplitude;
+  if (name == "wavenumber") return &waves.wavenumber;
+  if (name == "speed") return &waves.speed;
+  return nullptr;
 }
 
 /// Where a path points: the number it names in `scene` (null when it names nothing).
@@ -88,11 +98,7 @@ std::conditional_t<std::is_const_v<S>, const double*, double*> target(
   }
   if (p[0] == "gravity" && p.size() == 2 && component(p[1]) >= 0)
     return &scene.gravity[component(p[1])];
-  if (p[0] == "waves" && p.size() == 2 && scene.waves) {
-    if (p[1] == "amplitude") return &scene.waves->amplitude;
-    if (p[1] == "wavenumber") return &scene.waves->wavenumber;
-    if (p[1] == "speed") return &scene.waves->speed;
-  }
+  if (p[0] == "waves" && p.size() == 2 && scene.waves) return wave_field(*scene.waves, p[1]);
   return nullptr;
 }
 
@@ -192,11 +198,21 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
     return at + " must not be negative";
   if ((field == "area" || field == "coefficient" || field == "k") && value <= 0.0)
     return at + " must be greater than 0";
-  if (field == "heel_stiffness" && value < 0.0) return at + " must not be negative";
+  if (field == "heel_stiffness" && !(value > 0.0))
+    return at +
+           " must be greater than 0 (the boat heels by F_across / heel_stiffness, flat on "
+           "the water as it falls to 0; an upright boat leaves the key out)";
   if (p[0] == "waves" && (field == "amplitude" || field == "speed") && value < 0.0)
     return at + " must not be negative";
   if (p[0] == "waves" && field == "wavenumber" && value <= 0.0)
     return at + " must be greater than 0";
+  // The surface at this value, as the loader would check it in [waves].
+  if (p[0] == "waves") {
+    Waves w = *scene.waves;
+    *wave_field(w, p[1]) = value;
+    if (const WaveProblem problem = wave_problem(w); !problem.key.empty())
+      return at + " " + problem.problem;
+  }
   if (field == "angle" && (value < 0.0 || value > 90.0))
     return at + " is the sail's angle from the heading and must lie between 0 and 90 degrees";
   if (field == "restitution" && (value < 0.0 || value > 1.0))
@@ -243,21 +259,36 @@ void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
   }
   Ground& g = *scene.ground;
   const auto [up, across] = tilt_frame(g);
-  const Vec3 normal = std::cos(value * kDegree) * up + std::sin(value * kDegree) * across;
-  // The turn that takes the case's ground to the swept one, about the ground's point.
-  const Quat turn = Quat::FromTwoVectors(g.normal, normal);
-  const auto turned = [&](const Vec3& x) -> Vec3 { return g.point + turn * (x - g.point); };
+  // The turn from the case's tilt to the swept one, written as a case is by hand: the
+  // ground's normal from the angle's cosine and sine (unit length as the loader makes it),
+  // each body's parts along `up` and `across` turned by the angle's difference, the part
+  // across the tilt's plane left exactly as it is, and each orientation turned by the
+  // loader's own angle-to-turn (a 2D body's `angle`). A quaternion turn from one normal to
+  // the other left rounding along the new normal: a crate sliding on the slope then started
+  // 1e-17 m/s off it, which a case written by hand does not.
+  const double turn_degrees = value - sweep_parameter_value(scene, path);
+  const double c = std::cos(turn_degrees * std::numbers::pi / 180.0);
+  const double s = std::sin(turn_degrees * std::numbers::pi / 180.0);
+  const auto turned_vector = [&](const Vec3& v) -> Vec3 {
+    const double along = v.dot(across), height = v.dot(up);
+    const Vec3 rest = v - along * across - height * up;
+    return rest + (c * along + s * height) * across + (c * height - s * along) * up;
+  };
+  const auto turned = [&](const Vec3& x) -> Vec3 { return g.point + turned_vector(x - g.point); };
+  const Quat turn =
+      quat_from_axis_angle(across.cross(up).normalized(), -turn_degrees * std::numbers::pi / 180.0);
   for (Body& b : scene.bodies) {
     b.position = turned(b.position);
-    b.velocity = turn * b.velocity;
-    b.angular_velocity = turn * b.angular_velocity;
-    b.orientation = (turn * b.orientation).normalized();
+    b.velocity = turned_vector(b.velocity);
+    b.angular_velocity = turned_vector(b.angular_velocity);
+    b.orientation = turn * b.orientation;
   }
   for (Hinge& h : scene.hinges) {
     h.anchor = turned(h.anchor);
-    h.axis = (turn * h.axis).normalized();
+    h.axis = turned_vector(h.axis).normalized();
   }
-  g.normal = normal;
+  const double tilt = value * std::numbers::pi / 180.0;
+  g.normal = (std::cos(tilt) * up + std::sin(tilt) * across).normalized();
 }
 
 std::vector<double> sweep_range(double from, double to, int count) {

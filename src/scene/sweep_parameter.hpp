@@ -29,7 +29,9 @@ double sweep_parameter_value(const Scene& scene, const std::string& path);
 /// `scene` with `value` at `path`. "ground.normal" tilts the ground by `value` degrees from
 /// level, in the direction the case tilts it (towards +x when the case's ground is level),
 /// about the ground's point, and turns the bodies and hinges with it, as a table tilted
-/// with what stands on it; gravity, the air and the wind stay.
+/// with what stands on it; gravity, the air and the wind stay. From a level case the scene
+/// is, to the bit, the case written by hand at that tilt (normal [sin, cos], positions and
+/// velocities turned by cos and sin of degrees pi / 180, each 2D `angle` less the tilt).
 void set_sweep_parameter(Scene& scene, const std::string& path, double value);
 
 /// The values `[from, to, count]` of a range: count points, evenly spaced, both ends in.

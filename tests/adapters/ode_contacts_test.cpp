@@ -129,6 +129,38 @@ TEST_F(OdeContacts, RunsWithContactsNameTheirRulesAndThresholds) {
   EXPECT_GT(std::get<double>(*setting(s, "contacts_made")), 0.0);
 }
 
+/// `x` as the docs write a number: %g, without an exponent's leading zero (1e-5, not 1e-05).
+std::string doc_number(double x) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g", x);
+  std::string out = text;
+  for (const char* zero : {"e-0", "e+0"})
+    if (const std::size_t at = out.find(zero); at != std::string::npos) out.erase(at + 2, 1);
+  return out;
+}
+
+// The world's cfm is beachball's choice: each run names ODE's own default beside it
+// (cfm_ode_default, read from a new world), and where the two differ the docs' row of the
+// key says both, the one as beachball's. It read "constraint force mixing | 1e-5", which a
+// reader took for ODE's default; ODE 0.16 in double precision starts a world at 1e-10.
+TEST_F(OdeContacts, TheWorldsCfmIsBeachballsChoiceNamedBesideOdesOwn) {
+  const Scene scene = load_case(test::source_path("cases/double_bounce.toml"));
+  const RunRecord run = run_accuracy(ode(), scene, scene.report_dt);
+  const double used = test::number_setting(run.engine_settings, "cfm");
+  const double own = test::number_setting(run.engine_settings, "cfm_ode_default");
+  ASSERT_TRUE(std::isfinite(own)) << "the run does not name ODE's own cfm";
+  ASSERT_TRUE(std::isfinite(used));
+  if (used == own) GTEST_SKIP() << "beachball's cfm is this ODE's own: nothing to tell apart";
+  const std::string doc = test::bytes(test::source_path("docs/case-format.md"));
+  const std::size_t section = doc.find("### `[engines.ode]`");
+  ASSERT_NE(section, std::string::npos);
+  const std::size_t row = doc.find("| `cfm` |", section);
+  ASSERT_NE(row, std::string::npos);
+  const std::string line = doc.substr(row, doc.find('\n', row) - row);
+  EXPECT_NE(line.find(doc_number(used) + ": beachball's choice"), std::string::npos) << line;
+  EXPECT_NE(line.find("ODE's own default is " + doc_number(own)), std::string::npos) << line;
+}
+
 // (e) Only the pairs the case lists collide; the same scene with the pair listed does.
 TEST_F(OdeContacts, APairTheCaseDoesNotListPassesThrough) {
   const Scene apart = test::scene_from(three_in_a_row(R"(["a", "c"])"));

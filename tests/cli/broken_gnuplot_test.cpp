@@ -65,5 +65,40 @@ TEST(BrokenGnuplot, ACutOffSvgIsAnError) {
       "gnuplot left an incomplete SVG");
 }
 
+/// The note a report's page gives for its plots when `path` is the whole PATH the program
+/// sees (beachball itself needs none).
+std::string plots_note_with_path(const std::string& name, const std::string& path) {
+  const std::string dir = test::fresh_dir(name);
+  const std::string kept = test::write_case(dir, "kept.toml", test::minimal_case("kept"));
+  const test::Outcome o = test::beachball(
+      "run " + kept + " --no-cost --cache off --backends reference --out " + dir + "/out",
+      "export PATH=" + path + ";");
+  EXPECT_EQ(o.exit_code, 0) << o.out;
+  const std::string page = test::file_bytes(dir + "/out/kept.md");
+  const std::size_t at = page.find("plots skipped");
+  return at == std::string::npos ? "" : page.substr(at, page.find('\n', at) - at);
+}
+
+// A gnuplot that is there but cannot start (a library missing: the loader's exit 127) is
+// named as such, with what it said; only a gnuplot that is nowhere is "not found". The page
+// said "not found (install gnuplot-nox)" for both.
+TEST(BrokenGnuplot, AGnuplotThatFailsToStartIsNotCalledMissing) {
+  const std::string dir = test::fresh_dir("gnuplot_will_not_start");
+  const std::string program = test::write_case(
+      dir, "gnuplot",
+      "#!/bin/sh\necho 'gnuplot: error while loading shared libraries: libwx.so' >&2\nexit 127\n");
+  chmod(program.c_str(), 0755);
+  const std::string failing = plots_note_with_path("gnuplot_will_not_start_report", dir);
+  EXPECT_NE(failing.find("gnuplot failed to start (gnuplot --version: exit 127): gnuplot: error "
+                         "while loading shared libraries: libwx.so"),
+            std::string::npos)
+      << failing;
+  EXPECT_EQ(failing.find("not found"), std::string::npos) << failing;
+  const std::string missing =
+      plots_note_with_path("gnuplot_nowhere_report", test::fresh_dir("gnuplot_nowhere"));
+  EXPECT_NE(missing.find("gnuplot was not found (install gnuplot-nox)"), std::string::npos)
+      << missing;
+}
+
 }  // namespace
 }  // namespace bb

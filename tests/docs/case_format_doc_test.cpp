@@ -7,6 +7,7 @@
 // and whose rows give the key in backticks in the first cell.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -15,6 +16,7 @@
 #include "run/engine_catalogue.hpp"
 #include "scene/case_error.hpp"
 #include "scene/engine_keys.hpp"
+#include "scene/features.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace bb {
@@ -176,6 +178,47 @@ TEST(CaseFormatDoc, TheLoaderTellsOfKeysACaseLeavesOut) {
                                                         {"[course]", "integrators"},
                                                         {"[course]", "spin"}})
     EXPECT_TRUE(asked_keys().count({table, key})) << table << " " << key;
+}
+
+/// The prose under the heading `[engines.<engine>]` of the doc, up to its key table.
+std::string engine_section_prose(const std::string& doc, const std::string& engine) {
+  const std::size_t heading = doc.find("### `[engines." + engine + "]`");
+  if (heading == std::string::npos) return "";
+  const std::size_t start = doc.find('\n', heading) + 1;
+  const std::size_t table = doc.find("\n|", start);
+  return doc.substr(start, table == std::string::npos ? std::string::npos : table - start);
+}
+
+// Each engine's settings table says which backends read it, and calls no feature
+// unsupported that every one of them supports: `[engines.mujoco]` named only `mujoco` and
+// still said that body contacts, friction, springs and hinges were unsupported, long after
+// the adapter had them.
+TEST(CaseFormatDoc, EachEngineTableNamesItsBackendsAndNoSupportedFeatureAsMissing) {
+  const std::string doc = test::bytes(test::source_path(kCaseFormatDoc));
+  for (const EngineDescription& e : engine_catalogue()) {
+    if (!e.has_adapter) continue;
+    SCOPED_TRACE(e.engine);
+    const std::string prose = engine_section_prose(doc, e.engine);
+    ASSERT_FALSE(prose.empty()) << "no section `[engines." << e.engine << "]`";
+    for (const std::string& backend : e.backends)
+      EXPECT_NE(prose.find("`" + backend + "`"), std::string::npos)
+          << "the section does not name backend `" << backend << "`";
+    // A paragraph that calls something unsupported may name only features that some backend
+    // of the engine lacks ("body-contact" written "body contact").
+    std::string words = prose;
+    std::replace(words.begin(), words.end(), '\n', ' ');
+    if (words.find("unsupported") == std::string::npos) continue;
+    for (Feature f : all_features()) {
+      std::string name = feature_name(f);
+      std::replace(name.begin(), name.end(), '-', ' ');
+      bool all_support = true;
+      for (const std::string& backend : e.backends)
+        all_support = all_support && e.supports.count(backend) && e.supports.at(backend).has(f);
+      EXPECT_FALSE(all_support && words.find(name) != std::string::npos)
+          << "the section calls '" << name << "' unsupported, and every backend of " << e.engine
+          << " supports it";
+    }
+  }
 }
 
 }  // namespace

@@ -272,8 +272,9 @@ angle = -30.0
 }
 
 /// A 1 m box on a ground tilted by `degrees` (towards +x), sent along the slope at `speed`
-/// (positive: uphill), with mu_s 0.6 and mu_k 0.5.
-Scene block_sent_along_a_slope(double degrees, double speed) {
+/// (positive: uphill), with mu_s 0.6 and mu_k 0.5; its velocity written to `digits`
+/// significant digits (17: exactly along the slope, as far as doubles go).
+Scene block_sent_along_a_slope(double degrees, double speed, int digits = 17) {
   const double a = degrees * M_PI / 180.0, c = std::cos(a), s = std::sin(a);
   // Uphill is towards -x on a ground whose normal leans towards +x.
   const double ux = -c, uy = s;
@@ -295,9 +296,9 @@ half_extents = [0.5, 0.5, 0.5]
 mass = 1.0
 position = [%.17g, %.17g, 0.0]
 angle = %.17g
-velocity = [%.17g, %.17g, 0.0]
+velocity = [%.*g, %.*g, 0.0]
 )",
-                s, c, 0.5 * s, 0.5 * c, -degrees, speed * ux, speed * uy);
+                s, c, 0.5 * s, 0.5 * c, -degrees, digits, speed * ux, digits, speed * uy);
   return test::scene_from(text);
 }
 
@@ -322,6 +323,27 @@ TEST(FrictionReference, ABlockThatStopsOnASlopeBelowTheThresholdStaysThere) {
     EXPECT_NEAR((run.trajectory.states.back()[0].position - e.stop_position).norm(), 0.0,
                 kClosedForm)
         << degrees << " " << speed << ": it did not stay";
+  }
+}
+
+// A velocity along the slope written by hand to 14 digits is off the slope by rounding
+// (about 1e-15 m/s): the block still starts at rest on the ground, as the reference's own
+// resting rule says, and gets the closed form. It used to be "starts moving off the ground"
+// (any normal speed but exactly 0), so that a [[sweep]] over ground.normal, whose turned
+// velocities carry such rounding, lost the reference at some angles and not others.
+TEST(FrictionReference, AVelocityAlongTheSlopeOffItByRoundingStillSlidesFlat) {
+  const double g = 9.81;
+  for (const double degrees : {10.0, 11.0, 12.0, 25.0}) {
+    const Scene scene = block_sent_along_a_slope(degrees, 3.0, 14);
+    const double off = scene.bodies[0].velocity.dot(scene.ground->normal);
+    ASSERT_NE(off, 0.0) << degrees << ": the velocity is along the slope to the last bit";
+    ASSERT_LT(std::abs(off), 1e-13) << degrees;
+    const RunRecord run = run_accuracy(ReferenceBackend(), scene, scene.report_dt);
+    ASSERT_EQ(run.status, RunStatus::Ok) << degrees << ": " << run.reason;
+    const double a = degrees * M_PI / 180.0;
+    const BodyEvents& e = run.trajectory.events.bodies[0];
+    ASSERT_TRUE(e.stop_time) << degrees;
+    EXPECT_NEAR(*e.stop_time, 3.0 / (g * (std::sin(a) + 0.5 * std::cos(a))), 1e-9) << degrees;
   }
 }
 

@@ -1,31 +1,21 @@
 // The Slurm job array of docs/design.md (Shards), run for real: a one-node cluster on
 // localhost, started here in a temporary folder (its own munged, slurmctld and slurmd, on
-// free ports, nothing system-wide touched), runs scripts/slurm/submit: the array of shards
-// (scripts/slurm/report.sbatch) and the merge that depends on it; the merged report is the
-// report run whole, byte for byte. Skipped, with the reason, where Slurm is not installed
-// (Debian's slurm-wlm); a cluster that fails to start is a failure, with the daemons' logs.
-#include <fcntl.h>
+// free ports, nothing system-wide touched: slurm_cluster.hpp), runs scripts/slurm/submit: the array
+// of shards (scripts/slurm/report.sbatch) and the merge that depends on it; the merged report is
+// the report run whole, byte for byte; and the by-hand example of the same section, its two sbatch
+// lines run as written. Skipped, with the reason, where Slurm is not installed (Debian's
+// slurm-wlm); a cluster that fails to start is a failure, with the daemons' logs.
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <pwd.h>
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/socket.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <random>
+#include <nlohmann/json.hpp>
+#include <string>
 #include <thread>
 #include <vector>
 
+#include "slurm/slurm_cluster.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 
@@ -35,251 +25,12 @@ namespace {
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-/// `name` in PATH or in the sbin folders (Debian installs the daemons there, often outside a
-/// user's PATH); "" when absent.
-std::string find_program(const std::string& name) {
-  const char* env = std::getenv("PATH");
-  std::string dirs = std::string(env ? env : "") + ":/usr/sbin:/sbin:/usr/local/sbin";
-  for (std::size_t start = 0; start <= dirs.size();) {
-    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-    const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
-    std::error_code unreadable;  // a folder in PATH we may not look into is skipped
-    if (end > start && fs::is_regular_file(candidate, unreadable) &&
-        access(candidate.c_str(), X_OK) == 0)
-      return candidate.string();
-    start = end + 1;
-  }
-  return "";
-}
+/// The cluster, up before each test's body runs.
+class Slurm : public test::SlurmCluster {};
 
-/// `count` distinct TCP ports on localhost free now: each bound to port 0 (the kernel picks),
-/// all held until every one is read, then released for the daemons. Another program could
-/// take one in between; the window is the few milliseconds before the daemons start.
-std::vector<int> free_ports(int count) {
-  std::vector<int> sockets, ports;
-  for (int i = 0; i < count; ++i) {
-    const int s = socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    if (s < 0 || bind(s, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
-        getsockname(s, reinterpret_cast<sockaddr*>(&address), &length) != 0)
-      ADD_FAILURE() << "no free port on localhost";
-    sockets.push_back(s);
-    ports.push_back(ntohs(address.sin_port));
-  }
-  for (int s : sockets) close(s);
-  return ports;
-}
-
-/// The daemons this test started, stopped whatever way the test ends: the jobs still queued
-/// are cancelled first, then each daemon, the last started first, gets SIGTERM and, if it has
-/// not ended after 10 s, SIGKILL. Only these processes are signalled, by their pids. The
-/// folder goes too, unless the test failed (its logs and state are then left to read).
-class Cluster {
- public:
-  explicit Cluster(std::string dir) : dir_(std::move(dir)) {}
-  Cluster(const Cluster&) = delete;
-  Cluster& operator=(const Cluster&) = delete;
-
-  ~Cluster() {
-    if (scancel_ready_) test::shell("timeout 20 scancel --quiet --user=" + user());
-    for (auto it = daemons_.rbegin(); it != daemons_.rend(); ++it) stop(it->pid);
-    if (!::testing::Test::HasFailure()) {
-      std::error_code ignored;
-      fs::remove_all(dir_, ignored);
-    }
-  }
-
-  /// Starts `argv` in the background, its output to DIR/<name>.log; it gets SIGTERM if this
-  /// test program dies without stopping it (a killed ctest leaves no daemon behind).
-  void start(const std::string& name, const std::vector<std::string>& argv) {
-    const std::string log = dir_ + "/" + name + ".log";
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    const pid_t pid = fork();
-    if (pid == 0) {
-      prctl(PR_SET_PDEATHSIG, SIGTERM);
-      const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      dup2(fd, STDOUT_FILENO);
-      dup2(fd, STDERR_FILENO);
-      execv(args[0], args.data());
-      _exit(127);
-    }
-    daemons_.push_back({name, log, pid});
-  }
-
-  /// The first daemon that has ended, "" while all run.
-  std::string ended() {
-    for (Daemon& d : daemons_) {
-      int status = 0;
-      if (d.pid > 0 && waitpid(d.pid, &status, WNOHANG) == d.pid) {
-        d.pid = -1;
-        return d.name + (WIFEXITED(status)
-                             ? " ended with exit code " + std::to_string(WEXITSTATUS(status))
-                             : " ended by signal " + std::to_string(WTERMSIG(status)));
-      }
-      if (d.pid < 0) return d.name + " ended";
-    }
-    return "";
-  }
-
-  /// Every daemon's log, for a failure's message.
-  std::string logs() const {
-    std::string out;
-    for (const Daemon& d : daemons_) out += "\n--- " + d.log + ":\n" + test::bytes(d.log);
-    return out;
-  }
-
-  /// The cluster is up: jobs may be queued, to cancel at the end.
-  void jobs_may_run() { scancel_ready_ = true; }
-
-  static std::string user() {
-    const passwd* pw = getpwuid(getuid());
-    return pw ? pw->pw_name : std::to_string(getuid());
-  }
-
- private:
-  struct Daemon {
-    std::string name, log;
-    pid_t pid;
-  };
-
-  static void stop(pid_t pid) {
-    if (pid <= 0) return;
-    kill(pid, SIGTERM);
-    const auto deadline = std::chrono::steady_clock::now() + 10s;
-    while (std::chrono::steady_clock::now() < deadline) {
-      if (waitpid(pid, nullptr, WNOHANG) == pid) return;
-      std::this_thread::sleep_for(50ms);
-    }
-    kill(pid, SIGKILL);
-    waitpid(pid, nullptr, 0);
-  }
-
-  std::string dir_;
-  std::vector<Daemon> daemons_;
-  bool scancel_ready_ = false;
-};
-
-/// The slurm.conf of a one-node cluster in `dir`: no cgroups, no accounting, no MPI, the
-/// current user as SlurmUser and SlurmdUser (root or not), munge on its own socket.
-///  - config_overrides: report.sbatch asks 2 CPUs a task; a machine with fewer is configured
-///    with 2 anyway (slurmd believes slurm.conf, not the hardware).
-///  - MinJobAge=5: a finished job's record is kept 5 s (not 300), so `sbatch --wait` asks
-///    every 2 s instead of after 2, 10 and 42 s.
-///  - batch_sched_delay=0: a batch job is scheduled at once, not up to 3 s later, so a task
-///    starts as the one before it ends.
-std::string slurm_conf(const std::string& dir, const std::string& socket, int ctld_port,
-                       int slurmd_port) {
-  std::string conf = R"(ClusterName=beachball
-SlurmctldHost=localhost(127.0.0.1)
-SlurmctldPort=@ctld_port@
-SlurmdPort=@slurmd_port@
-SlurmUser=@user@
-SlurmdUser=@user@
-AuthType=auth/munge
-CredType=cred/munge
-AuthInfo=socket=@socket@
-StateSaveLocation=@dir@/state
-SlurmdSpoolDir=@dir@/spool
-SlurmctldPidFile=@dir@/slurmctld.pid
-SlurmdPidFile=@dir@/slurmd.pid
-ProctrackType=proctrack/linuxproc
-TaskPlugin=task/none
-JobAcctGatherType=jobacct_gather/none
-AccountingStorageType=accounting_storage/none
-SwitchType=switch/none
-MpiDefault=none
-MailProg=/bin/true
-ReturnToService=2
-SelectType=select/cons_tres
-SelectTypeParameters=CR_CPU
-SlurmdParameters=config_overrides
-MinJobAge=5
-SchedulerParameters=batch_sched_delay=0
-NodeName=localhost NodeAddr=127.0.0.1 CPUs=@cpus@ State=UNKNOWN
-PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
-)";
-  const std::pair<std::string, std::string> values[] = {
-      {"@ctld_port@", std::to_string(ctld_port)},
-      {"@slurmd_port@", std::to_string(slurmd_port)},
-      {"@user@", Cluster::user()},
-      {"@socket@", socket},
-      {"@dir@", dir},
-      {"@cpus@", std::to_string(std::max(2u, std::thread::hardware_concurrency()))}};
-  for (const auto& [key, value] : values)
-    for (std::size_t at; (at = conf.find(key)) != std::string::npos;)
-      conf.replace(at, key.size(), value);
-  return conf;
-}
-
-TEST(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
-  std::map<std::string, std::string> programs;
-  std::string missing;
-  for (const char* name : {"munged", "slurmctld", "slurmd", "sbatch", "sinfo", "scancel"}) {
-    programs[name] = find_program(name);
-    if (programs[name].empty()) missing += std::string(" ") + name;
-  }
-  if (!missing.empty())
-    GTEST_SKIP() << "no" << missing << " in PATH or /usr/sbin: install Debian's slurm-wlm";
-
-  // A folder of our own: mkdtemp makes it 0700, but munged wants every folder above its
-  // socket open to all (execute), and none writable by others.
-  std::string dir = (fs::path(::testing::TempDir()) / "beachball_slurm_XXXXXX").string();
-  ASSERT_NE(mkdtemp(dir.data()), nullptr) << dir;
-  chmod(dir.c_str(), 0755);
-  for (const char* sub : {"munge", "state", "spool", "work"})
-    fs::create_directories(dir + "/" + sub);
-  Cluster cluster(dir);
-
-  // munged with its own key (1 KiB of random bytes, readable by its owner only), socket,
-  // pid and seed files, in the foreground so that it stays our child and logs to our file.
-  // --force: munged refuses some folders (a world-writable one above ours) that are fine
-  // for a test.
-  const std::string munge = dir + "/munge", socket = munge + "/socket";
-  {
-    std::random_device random;
-    std::ofstream key(munge + "/munge.key", std::ios::binary);
-    for (int i = 0; i < 1024; ++i) key.put(static_cast<char>(random() & 0xff));
-  }
-  chmod((munge + "/munge.key").c_str(), 0400);
-  cluster.start("munged",
-                {programs["munged"], "--foreground", "--force", "--socket=" + socket,
-                 "--key-file=" + munge + "/munge.key", "--pid-file=" + munge + "/munged.pid",
-                 "--seed-file=" + munge + "/munged.seed"});
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (!fs::exists(socket) && cluster.ended().empty() &&
-         std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(100ms);
-  ASSERT_TRUE(fs::exists(socket)) << "munged did not start: " << cluster.ended() << cluster.logs();
-
-  // Every Slurm command here and in the jobs (sbatch passes the environment on) reads this
-  // cluster's slurm.conf, and nothing else from a cluster the tests may be running in (a
-  // user's SBATCH_PARTITION, say, or the job's own SLURM_JOB_ID).
-  std::vector<std::string> inherited;
-  for (char** e = environ; *e; ++e) {
-    const std::string name = std::string(*e).substr(0, std::string(*e).find('='));
-    if (name.rfind("SLURM_", 0) == 0 || name.rfind("SBATCH_", 0) == 0) inherited.push_back(name);
-  }
-  for (const std::string& name : inherited) unsetenv(name.c_str());
-  const std::vector<int> ports = free_ports(2);
-  test::write_case(dir, "slurm.conf", slurm_conf(dir, socket, ports[0], ports[1]));
-  setenv("SLURM_CONF", (dir + "/slurm.conf").c_str(), 1);
-  cluster.start("slurmctld", {programs["slurmctld"], "-D"});
-  cluster.start("slurmd", {programs["slurmd"], "-D", "-N", "localhost"});
-
-  // Up when sinfo says the node is idle; a daemon that ends, or 60 s, is a failure.
-  std::string state, ended;
-  while ((ended = cluster.ended()).empty() && std::chrono::steady_clock::now() < deadline) {
-    state = test::shell(programs["sinfo"] + " --noheader --Node --format=%T").out;
-    if (state == "idle\n") break;
-    std::this_thread::sleep_for(250ms);
-  }
-  ASSERT_EQ(state, "idle\n") << "the cluster did not start: " << ended << cluster.logs();
-  cluster.jobs_may_run();
+TEST_F(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
+  const std::string& dir = dir_;
+  test::Cluster& cluster = *cluster_;
 
   // Two cases, three shards, each a task of the array the committed scripts submit; the
   // merge is the job depending on it, waited for (bounded: a stuck job is a failure, with
@@ -310,6 +61,113 @@ TEST(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
   for (int i = 1; i <= 3; ++i)
     EXPECT_TRUE(fs::exists(work + "/merged.shards/" + std::to_string(i) + "/beachball-shard.txt"))
         << i;
+}
+
+/// The fenced block of docs/design.md that follows `after`, as the shell would run it.
+std::string doc_example(const std::string& after) {
+  const std::string doc = test::bytes(test::source_path("docs/design.md"));
+  const std::size_t at = doc.find(after);
+  if (at == std::string::npos) return "";
+  const std::size_t open = doc.find("```", at);
+  const std::size_t first = doc.find('\n', open) + 1;
+  return doc.substr(first, doc.find("```", first) - first);
+}
+
+/// PATH without the folders that hold a `beachball`: the example must find the build itself.
+std::string path_without_beachball() {
+  const char* env = std::getenv("PATH");
+  const std::string dirs = env ? env : "";
+  std::string kept;
+  for (std::size_t start = 0; start <= dirs.size();) {
+    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+    const std::string dir = dirs.substr(start, end - start);
+    std::error_code unreadable;
+    if (!dir.empty() && !fs::exists(fs::path(dir) / "beachball", unreadable))
+      kept += (kept.empty() ? "" : ":") + dir;
+    start = end + 1;
+  }
+  return kept;
+}
+
+/// A job's state as scontrol shows it ("COMPLETED", "PENDING", ...; "" once forgotten).
+std::string job_state(const std::string& scontrol, const std::string& id) {
+  const std::string shown = test::shell(scontrol + " show job " + id + " 2>/dev/null").out;
+  const std::size_t at = shown.find("JobState=");
+  if (at == std::string::npos) return "";
+  return shown.substr(at + 9, shown.find_first_of(" \n", at) - at - 9);
+}
+
+// The by-hand example of docs/design.md, run as written from a folder laid out as the
+// repository's root (the script, a build in build/bin and a cases/ folder of two small cases,
+// not the bundled suite), with no beachball in PATH: every shard runs, the merge runs after
+// them, and the report has every case's page and results. It failed as written: every task
+// said "exec: beachball: not found" and the merge pended for ever on a dependency that could
+// no longer be met.
+TEST_F(Slurm, TheByHandExampleOfTheDesignRunsAsWritten) {
+  const std::string example = doc_example("Or by hand");
+  ASSERT_NE(example.find("sbatch"), std::string::npos) << "no example found:\n" << example;
+  const std::string work = dir_ + "/work";
+  fs::create_directories(work + "/scripts/slurm");
+  fs::create_directories(work + "/build/bin");
+  fs::create_symlink(test::source_path("scripts/slurm/report.sbatch"),
+                     work + "/scripts/slurm/report.sbatch");
+  fs::create_symlink(BEACHBALL_PROGRAM, work + "/build/bin/beachball");
+  test::write_case(work + "/cases", "a.toml", test::minimal_case("a"));
+  test::write_case(work + "/cases", "stack.toml", test::kStackedBalls);
+  test::write_case(work, "example.sh", example);
+
+  const test::Outcome submitted = test::shell(
+      "cd " + work + " && PATH=" + path_without_beachball() + " timeout 60 bash -eu example.sh");
+  const auto job_logs = [&] {
+    std::string out = "\n--- example:\n" + example + "\n--- it printed:\n" + submitted.out +
+                      "\n--- queue:\n" + test::shell("squeue").out;
+    for (const auto& entry : fs::directory_iterator(work))
+      if (entry.path().filename().string().rfind("slurm-", 0) == 0)
+        out += "\n--- " + entry.path().filename().string() + ":\n" + test::bytes(entry.path());
+    return out + logs();
+  };
+  ASSERT_EQ(submitted.exit_code, 0) << job_logs();
+  // The merge's id: the last job submitted.
+  const std::string said = "Submitted batch job ";
+  const std::size_t at = submitted.out.rfind(said);
+  ASSERT_NE(at, std::string::npos) << job_logs();
+  const std::string merge =
+      submitted.out.substr(at + said.size(), submitted.out.find('\n', at) - at - said.size());
+
+  // Waited for until it ends (bounded: a merge that pends for ever is a failure, with the
+  // queue as it was). Its record is kept 5 s after it ends (MinJobAge).
+  const auto deadline = std::chrono::steady_clock::now() + 400s;
+  std::string state = job_state(programs_["scontrol"], merge), last = state;
+  while (std::chrono::steady_clock::now() < deadline &&
+         (state == "PENDING" || state == "RUNNING" || state == "CONFIGURING" ||
+          state == "COMPLETING")) {
+    std::this_thread::sleep_for(500ms);
+    last = state;
+    state = job_state(programs_["scontrol"], merge);
+  }
+  if (state.empty()) state = last;
+  EXPECT_EQ(state, "COMPLETED") << "the merge, job " << merge << job_logs();
+
+  // The report the example merged: the same files as the report run whole, and the same
+  // results but for the costs (each timed by its own run).
+  const test::Outcome whole = test::shell("cd " + work + " && " + BEACHBALL_PROGRAM +
+                                          " report cases/ --cache off --out whole");
+  ASSERT_EQ(whole.exit_code, 0) << whole.out;
+  ASSERT_TRUE(fs::exists(work + "/reports")) << job_logs();
+  const auto merged = test::snapshot(work + "/reports"), unsplit = test::snapshot(work + "/whole");
+  std::vector<std::string> merged_files, unsplit_files;
+  for (const auto& [name, bytes] : merged) merged_files.push_back(name);
+  for (const auto& [name, bytes] : unsplit) unsplit_files.push_back(name);
+  EXPECT_EQ(merged_files, unsplit_files) << job_logs();
+  for (const char* name : {"a.json", "stack.json"}) {
+    auto rows = [](const std::string& text) {
+      nlohmann::json runs = nlohmann::json::parse(text)["runs"];
+      for (auto& row : runs) row.erase("cost");
+      return runs.dump();
+    };
+    ASSERT_TRUE(merged.count(name) && unsplit.count(name)) << name;
+    EXPECT_EQ(rows(merged.at(name)), rows(unsplit.at(name))) << name;
+  }
 }
 
 }  // namespace
