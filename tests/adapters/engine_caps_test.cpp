@@ -101,8 +101,7 @@ TEST(Box2dCaps, ABodySpinningPastAQuarterTurnAStepIsCappedThere) {
 
 // Issue 36, item 2: on the rope, box2d/force read "stable at every dt tried" up to 0.25 s,
 // its springs' explosion held level by the cap. A trial at a step where Box2D holds a body at
-// its cap is not stable, and says which cap; the accuracy run at the search's largest step
-// judges its trial the same way.
+// its cap is not stable, and says which cap; the accuracy run at that step is not ok.
 TEST(Box2dCaps, AStabilityTrialHeldAtTheCapIsNotStable) {
   const Backend* force = engine("box2d/force");
   if (force == nullptr) GTEST_SKIP() << "box2d/force was not built";
@@ -113,11 +112,10 @@ TEST(Box2dCaps, AStabilityTrialHeldAtTheCapIsNotStable) {
   EXPECT_EQ(trial.growth, "capped");
   EXPECT_NE(trial.reason.find("at its cap of 2 m per step (8 m/s at dt 1/4 s)"), std::string::npos)
       << trial.reason;
+  // The accuracy run there is not ok: held at the cap, or (its energy far past the rope's)
+  // diverged, which comes first.
   const RunRecord run = run_accuracy(*force, scene, 0.25, true);
-  EXPECT_EQ(run.status, RunStatus::Capped) << run.reason;
-  ASSERT_TRUE(run.stability_trial);
-  EXPECT_EQ(run.stability_trial->growth, "capped");
-  EXPECT_EQ(run.stability_trial->reason, trial.reason);
+  EXPECT_TRUE(run.status == RunStatus::Capped || run.status == RunStatus::Diverged) << run.reason;
   // At a game's step its springs are far from the cap.
   EXPECT_NE(try_step(*force, scene, 1.0 / 60.0).growth, "capped");
 }

@@ -63,10 +63,14 @@ class InterveningBackend : public Backend {
   std::string name_;
 };
 
-/// kMinimalCase, whose stability search begins at dt 0.05 s.
+/// kMinimalCase, whose stability search begins at dt 0.05 s, run for 50 s: a stability trial's
+/// kMinTrialSteps (1000) steps, so that the accuracy run at that step judges the trial too.
 const Scene& scene() {
-  static const Scene s =
-      test::scene_from(std::string(test::kMinimalCase) + "\n[stability]\ndt_min = 0.05\n");
+  static const Scene s = [] {
+    std::string text = std::string(test::kMinimalCase) + "\n[stability]\ndt_min = 0.05\n";
+    text.replace(text.find("duration = 1.0"), 14, "duration = 50.0");
+    return test::scene_from(text);
+  }();
   return s;
 }
 
