@@ -9,6 +9,13 @@
 
 namespace bb {
 
+/// "not measured: ...": why the contact observables of `body` have no value where it made no
+/// contact the observer can time but one it saw only as a push (BodyEvents::
+/// unresolved_contact): what was seen, the overlap and the slowing. nullopt where there was
+/// no such push, or `with_moving` and it was not with a moving body.
+std::optional<std::string> unmeasured_contact(const Scene& scene, int body,
+                                              const BodyEvents& events, bool with_moving);
+
 /// contact_time (s): the n-th contact of the body.
 ObservableValue measure_contact_time(const Scene&, const Observe&, const Trajectory&,
                                      const EventTrace*);
@@ -26,8 +33,29 @@ ObservableValue measure_post_normal_velocity(const Scene&, const Observe&, const
 /// max_penetration (m): the deepest overlap of the body's contacts.
 ObservableValue measure_max_penetration(const Scene&, const Observe&, const Trajectory&,
                                         const EventTrace*);
-/// period (s): the mean time between upward zero crossings of the velocity along the axis
-/// it crosses zero most often on.
+/// A coordinate swinging less than this share of the widest swing of a body's centre (the
+/// largest way between two turns in a row: a fall or a drift is no swing) is not where its
+/// cycle is read (a wobble, an engine's rounding).
+inline constexpr double kSwingShare = 0.1;
+
+/// A coordinate's turn back by less than this share of its swing from the turn before is a
+/// wobble on the swing (a stiff spring's, a float engine's rounding), not a turn of its own.
+inline constexpr double kTurnShare = 1e-3;
+
+/// A lowest point within this share of a coordinate's swing of one a cycle before is the
+/// same point of the swing come back (lower or higher as the swing grows or dies); farther,
+/// it is another point of a longer cycle (a pendulum past 90 degrees swings across to -1,
+/// back to -1 and to sin(theta0) in one cycle).
+inline constexpr double kPlaceShare = 0.5;
+
+/// period (s): the motion's own cycle. For a hinged body, the mean time between upward zero
+/// crossings of its spin about the hinge's axis (its angle's cycle). Otherwise, per axis
+/// whose coordinate swings at least kSwingShare as wide as the widest,
+/// the cycle of its lowest points (its velocity rising through zero; wobbles smaller than
+/// kTurnShare of its swing left out): the mean span of the least number of them after which
+/// the swing comes back to the same point; the longest of these. A pendulum's height goes
+/// through two cycles in each of its swing's, and past 90 degrees its swing across has three
+/// lowest points in one: neither is its period.
 ObservableValue measure_period(const Scene&, const Observe&, const Trajectory&, const EventTrace*);
 /// fall_time (s): the first time the centre came within kFallAllowance of lying flat.
 ObservableValue measure_fall_time(const Scene&, const Observe&, const Trajectory&,

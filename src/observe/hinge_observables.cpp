@@ -16,6 +16,12 @@ constexpr double kTurn = std::numbers::pi / 4.0;
 
 }  // namespace
 
+const Hinge* hinge_of(const World& scene, int body) {
+  for (const Hinge& h : scene.hinges)
+    if (h.body == body) return &h;
+  return nullptr;
+}
+
 Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& s, const Vec3& force) {
   const Body& body = scene.bodies[hinge.body];
   const Vec3 applied = body.mass * scene.gravity + force;
@@ -26,9 +32,8 @@ Vec3 hinge_force(const Scene& scene, const Hinge& hinge, const BodyState& s, con
 
 ObservableValue measure_hinge_force(const Scene& scene, const Observe& observe,
                                     const Trajectory& trajectory, const EventTrace*) {
-  const auto h = std::find_if(scene.hinges.begin(), scene.hinges.end(),
-                              [&](const Hinge& x) { return x.body == observe.body; });
-  if (h == scene.hinges.end()) return {std::nullopt, "the body is on no hinge"};
+  const Hinge* h = hinge_of(scene, observe.body);
+  if (h == nullptr) return {std::nullopt, "the body is on no hinge"};
   const Quat start = scene.bodies[observe.body].orientation;
   // The turn from the start, radians, and the hinge force, at each sample in order.
   double turn_before = 0.0, force_before = 0.0;

@@ -10,6 +10,9 @@
 
 namespace bb {
 
+/// The hinge `body` turns on, or nullptr for a body on no hinge.
+const Hinge* hinge_of(const World& scene, int body);
+
 /// The force (N) hinge `hinge` exerts on its body in `state`: m a - F with F gravity plus
 /// `force` (the force model's, at its centre), a = alpha x r + omega x (omega x r) from the
 /// torque of F about the axis. Exact for a body turning free of anything else.

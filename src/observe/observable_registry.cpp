@@ -27,22 +27,23 @@ ObservableValue measure_surface_fold(const Scene&, const Observe&, const Traject
                                      const EventTrace*);
 
 const std::vector<ObservableKind>& observable_kind_table() {
-  // name, measure, scene-wide, counted, needs, formula
+  // name, measure, scene-wide, counted, needs, formula, rest_speed, axis
   static const std::vector<ObservableKind> kinds = {
       {"final_speed", measure_final_speed},
       {"max_speed", measure_max_speed},
       {"terminal_velocity", measure_terminal_velocity, false, false, kNeedsNothing,
        terminal_velocity_formula},
       {"terminal_time", measure_terminal_time},
-      {"stop_time", measure_stop_time, false, false, kWatchesStops},
-      {"stop_distance", measure_stop_distance, false, false, kWatchesStops},
-      {"rest_creep", measure_rest_creep, false, false, kWatchesStops},
+      {"stop_time", measure_stop_time, false, false, kWatchesStops, nullptr, true},
+      {"stop_distance", measure_stop_distance, false, false, kWatchesStops, nullptr, true},
+      {"rest_creep", measure_rest_creep, false, false, kWatchesStops, nullptr, true},
       {"final_velocity", measure_final_velocity},
       {"bounce_apex", measure_bounce_apex, false, true},
       {"contact_time", measure_contact_time, false, true},
       {"post_velocity", measure_post_velocity},
       {"post_normal_velocity", measure_post_normal_velocity},
-      {"post_angular_velocity", measure_post_angular_velocity, false, false, kDrawsRotation},
+      {"post_angular_velocity", measure_post_angular_velocity, false, false, kDrawsRotation,
+       nullptr, false, true},
       {"period", measure_period, false, false, kWatchesSwings},
       {"max_penetration", measure_max_penetration, false, false, kWatchesOverlap},
       {"final_angle", measure_final_angle, false, false, kDrawsRotation},
@@ -57,7 +58,7 @@ const std::vector<ObservableKind>& observable_kind_table() {
       {"final_height", measure_final_height},
       {"final_shear", measure_final_shear, true},
       {"forward_speed", measure_forward_speed},
-      {"drift_angle", measure_drift_angle},
+      {"drift_angle", measure_drift_angle, false, false, kNeedsNothing, nullptr, true},
       {"made_good_upwind", measure_made_good_upwind},
       {"downwind_distance", measure_downwind_distance},
       {"wobble_period", measure_wobble_period},
@@ -87,7 +88,7 @@ bool observable_needs(const std::string& kind, unsigned need) {
 CaseVocabulary case_vocabulary() {
   CaseVocabulary vocabulary;
   for (const ObservableKind& k : observable_kind_table())
-    vocabulary.observables.push_back({k.name, k.scene_wide, k.counted});
+    vocabulary.observables.push_back({k.name, k.scene_wide, k.counted, k.rest_speed, k.axis});
   return vocabulary;
 }
 

@@ -18,7 +18,7 @@ namespace bb {
 /// and the report draws a panel for it. Flags, combined with |.
 enum ObservableNeed : unsigned {
   kNeedsNothing = 0,
-  kWatchesSwings = 1u << 0,   ///< the velocity's upward zero crossings (a period)
+  kWatchesSwings = 1u << 0,   ///< the turns of a swing (a period): its velocity through zero
   kWatchesStops = 1u << 1,    ///< the end of each motion along the ground
   kWatchesFalls = 1u << 2,    ///< the centre reaching the fallen height above the ground
   kWatchesStretch = 1u << 3,  ///< every spring's largest stretch, between the steps too
@@ -34,6 +34,8 @@ struct ObservableKind {
   bool counted = false;     ///< takes an `n` (the n-th bounce)
   unsigned needs = kNeedsNothing;
   FormulaFn formula = nullptr;  ///< null: compared with the reference's own measurement
+  bool rest_speed = false;      ///< takes a `rest_speed`: below it the body is at rest
+  bool axis = false;            ///< signed about an `axis` (z in 2D)
 };
 
 /// Every observable kind, in the order of docs/observables.md.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numbers>
 
+#include "observe/event_observables.hpp"
 #include "scene/text.hpp"
 
 namespace bb {
@@ -23,17 +24,19 @@ ObservableValue final_angle(const Scene& scene, int body, const Trajectory& t) {
   return {turned * 180.0 / std::numbers::pi, ""};
 }
 
-/// The spin (rad/s) at the first sample after the body's first push or contact.
-ObservableValue post_spin(const Scene& scene, int body, const Trajectory& t) {
+/// The spin (rad/s) about `axis` at the first sample after the body's first push or contact.
+ObservableValue post_spin(const Scene& scene, int body, const Vec3& axis, const Trajectory& t) {
   std::optional<double> hit;
   for (const Impulse& i : scene.impulses)
     if (i.body == body) hit = std::min(hit.value_or(i.time), i.time);
   const BodyEvents& e = t.events.bodies[body];
   if (!e.contact_times.empty())
     hit = std::min(hit.value_or(e.contact_times[0]), e.contact_times[0]);
+  if (!hit && e.unresolved_contact)
+    return {std::nullopt, *unmeasured_contact(scene, body, e, false)};
   if (!hit) return {std::nullopt, "the body was neither pushed nor touched anything"};
   for (std::size_t j = 0; j < t.times.size(); ++j)
-    if (t.times[j] > *hit) return {t.states[j][body].angular_velocity.norm(), ""};
+    if (t.times[j] > *hit) return {t.states[j][body].angular_velocity.dot(axis), ""};
   return {std::nullopt, "no sample after the first hit"};
 }
 
@@ -46,7 +49,7 @@ ObservableValue measure_final_angle(const Scene& scene, const Observe& observe,
 
 ObservableValue measure_post_angular_velocity(const Scene& scene, const Observe& observe,
                                               const Trajectory& trajectory, const EventTrace*) {
-  return post_spin(scene, observe.body, trajectory);
+  return post_spin(scene, observe.body, observe.axis, trajectory);
 }
 
 ObservableValue measure_flips(const Scene& scene, const Observe& observe,

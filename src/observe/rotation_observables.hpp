@@ -11,7 +11,8 @@ namespace bb {
 ObservableValue measure_final_angle(const Scene&, const Observe&, const Trajectory&,
                                     const EventTrace*);
 /// post_angular_velocity (rad/s): the spin at the first sample after the body's first push
-/// or contact.
+/// or contact, signed about the observe's axis (+z in 2D unless it says -z): positive for a
+/// turn counterclockwise seen from the axis's tip.
 ObservableValue measure_post_angular_velocity(const Scene&, const Observe&, const Trajectory&,
                                               const EventTrace*);
 /// flips: how many times the body turned over about its middle principal axis (the

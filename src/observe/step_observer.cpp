@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "observe/hinge_observables.hpp"
 #include "observe/observable_registry.hpp"
+#include "observe/stop_observables.hpp"
 #include "scene/motion.hpp"
 
 namespace bb {
@@ -36,7 +38,10 @@ StepObserver::StepObserver(const Scene& scene)
       post_owner_(scene.bodies.size(), -1) {
   trace_.bodies.resize(scene.bodies.size());
   for (const Observe& o : scene.observes) {
-    if (observable_needs(o.kind, kWatchesSwings)) swinging_.push_back(o.body);
+    if (observable_needs(o.kind, kWatchesSwings)) {
+      swinging_.push_back(o.body);
+      swing_hinge_.push_back(hinge_of(scene, o.body));
+    }
     if (observable_needs(o.kind, kWatchesStretch)) watch_stretch_ = true;
     if (observable_needs(o.kind, kWatchesFalls) && scene.ground) falling_.push_back(o.body);
     if (observable_needs(o.kind, kWatchesStops) &&
@@ -44,6 +49,7 @@ StepObserver::StepObserver(const Scene& scene)
       stopping_.push_back(o.body);
   }
   fastest_.assign(stopping_.size(), 0.0);
+  for (int body : stopping_) rest_speeds_.push_back(stated_rest_speed(scene, body));
   watches_.assign(stopping_.size(), StopWatch{});
   if (watch_stretch_) {
     trace_.max_stretch = 0.0;
@@ -79,16 +85,34 @@ void StepObserver::write_turns(State& state) const {
 
 void StepObserver::observe_swings(double t, const State& s) {
   const double h = t - previous_t_;
-  for (int i : swinging_) {
+  // Upwards through zero: negative at the last step, not at this one. Linear
+  // interpolation: a sine is straight near its zero, so the crossing is placed to third
+  // order in the step, whatever the integrator staggers.
+  const auto upward = [&](double before, double now, std::vector<double>& crossings) {
+    if (before < 0.0 && now >= 0.0) crossings.push_back(previous_t_ + h * before / (before - now));
+  };
+  // A coordinate's turn: its velocity through zero either way, placed as above; the
+  // coordinate there on the straight line between the steps.
+  const auto turn = [&](int i, int axis, std::vector<Turn>& turns) {
+    const double before = previous_[i].velocity[axis], now = s[i].velocity[axis];
+    const bool lowest = before < 0.0 && now >= 0.0;
+    if (!lowest && !(before > 0.0 && now <= 0.0)) return;
+    const double f = before / (before - now);
+    turns.push_back(
+        {previous_t_ + f * h,
+         previous_[i].position[axis] + f * (s[i].position[axis] - previous_[i].position[axis]),
+         lowest});
+  };
+  for (std::size_t k = 0; k < swinging_.size(); ++k) {
+    const int i = swinging_[k];
     BodyEvents& e = trace_.bodies[i];
-    const Vec3 v0 = previous_[i].velocity, v1 = s[i].velocity;
-    for (int axis = 0; axis < 3; ++axis) {
-      // Upwards through zero: negative at the last step, not at this one.
-      // Linear interpolation: a sine is straight near its zero, so the crossing is placed
-      // to third order in the step, whatever the integrator staggers.
-      if (v0[axis] < 0.0 && v1[axis] >= 0.0)
-        e.upward_crossings[axis].push_back(previous_t_ + h * v0[axis] / (v0[axis] - v1[axis]));
+    if (const Hinge* hinge = swing_hinge_[k]) {
+      // A hinged body's cycle is its angle's: the spin about the axis.
+      upward(previous_[i].angular_velocity.dot(hinge->axis), s[i].angular_velocity.dot(hinge->axis),
+             e.hinge_crossings);
+      continue;
     }
+    for (int axis = 0; axis < 3; ++axis) turn(i, axis, e.turns[axis]);
   }
 }
 
@@ -104,13 +128,11 @@ void StepObserver::observe_stops(double t, const State& s) {
       continue;
     }
     const Vec3 before = along_ground(scene_, previous_[i].velocity);
-    const double rest = 1e-6 * std::max(fastest_[k], g_step);
+    const double rest = rest_speeds_[k].value_or(kRestShare * std::max(fastest_[k], g_step));
     const bool was_at_rest = before.norm() <= rest, at_rest = now.norm() <= rest;
-    // Below this a body at rest only wobbles (an engine's rounding), it does not set off.
-    const double quiet = kSignificantMotion * std::max(w.largest, g_step);
     // The start, judged with the first step's levels: at rest there (stopped at t = 0, a
     // rest as long as any), or in a motion from there.
-    if (previous_t_ == 0.0 && before.norm() <= quiet) {
+    if (previous_t_ == 0.0 && was_at_rest) {
       w.resting = 2;
       e.stop_time = 0.0, e.stop_position = e.motion_start = previous_[i].position;
     } else if (previous_t_ == 0.0) {
@@ -118,13 +140,13 @@ void StepObserver::observe_stops(double t, const State& s) {
       w.begin = previous_[i].position;
       w.largest = before.norm();
     }
-    // At rest: setting off after two quiet observations or more begins a motion there, and
-    // the body has not stopped until it ends; so does setting off faster than any motion
-    // so far (a push right after a float engine's jitter came to rest), where a crawl after
-    // a stop does not.
+    // At rest: setting off after two observations at rest or more begins a motion there,
+    // and the body has not stopped until it ends; so does setting off faster than any
+    // motion so far (a push right after a float engine's jitter came to rest), where a
+    // crawl after a stop does not.
     bool set_off = false;
     if (!w.moving) {
-      if (now.norm() <= quiet) {
+      if (at_rest) {
         ++w.resting;
       } else if (w.resting >= 2 || now.norm() > w.largest) {
         w.moving = true;
@@ -137,22 +159,18 @@ void StepObserver::observe_stops(double t, const State& s) {
     }
     if (w.moving) {
       w.largest = std::max(w.largest, now.norm());
-      std::optional<double> end;
-      Vec3 where;
-      if (!was_at_rest && at_rest) {
-        end = t, where = s[i].position;
-      } else if (!was_at_rest && !set_off && now.dot(before) < 0.0) {
-        // Turned back: the speed along the old direction crossed zero within the step (not
-        // a step that set off against a jitter's direction).
-        const double back = now.dot(before) / before.norm();
-        const double f = before.norm() / (before.norm() - back);
-        end = previous_t_ + f * h;
-        where = previous_[i].position + f * (s[i].position - previous_[i].position);
-      }
-      if (end) {
+      // Came to rest, or turned back (not a step that set off against a jitter's
+      // direction): the stop is where the speed along the old direction reaches zero on
+      // the line through the two steps, within the step for a turn, at most a step past it
+      // for a body still creeping at rest.
+      if (!was_at_rest && !set_off && (at_rest || now.dot(before) < 0.0)) {
+        const double along = now.dot(before) / before.norm();
+        const double f = std::min(2.0, before.norm() / (before.norm() - along));
         w.moving = false;
-        w.resting = now.norm() <= quiet ? 1 : 0;
-        e.stop_time = end, e.stop_position = where, e.motion_start = w.begin;
+        w.resting = at_rest ? 1 : 0;
+        e.stop_time = previous_t_ + f * h;
+        e.stop_position = previous_[i].position + f * (s[i].position - previous_[i].position);
+        e.motion_start = w.begin;
       }
     }
     fastest_[k] = std::max(fastest_[k], now.norm());
@@ -184,17 +202,6 @@ void StepObserver::observe_stretch(double h, const State& s) {
     if (!first_ && before.rate > 0.0 && now.rate < 0.0)
       largest = std::max(largest, hermite_peak(before.value, before.rate, now.value, now.rate, h));
     last_stretch_[k] = now;
-  }
-}
-
-void StepObserver::observe_swing_ranges(const State& s) {
-  for (std::size_t k = 0; k < swinging_.size(); ++k) {
-    // The swing of each component, to choose the axis the body oscillates along.
-    const Vec3& v = s[swinging_[k]].velocity;
-    if (first_) low_.push_back(v), high_.push_back(v);
-    low_[k] = low_[k].cwiseMin(v);
-    high_[k] = high_[k].cwiseMax(v);
-    trace_.bodies[swinging_[k]].velocity_range = high_[k] - low_[k];
   }
 }
 
@@ -250,7 +257,6 @@ void StepObserver::observe(double t, const State& s) {
   if (!first_ && !falling_.empty()) observe_falls(t, s);
   if (!first_ && !swinging_.empty()) observe_swings(t, s);
   if (!stopping_.empty()) observe_stops(t, s);
-  if (!swinging_.empty()) observe_swing_ranges(s);
   if (watch_stretch_) observe_stretch(dt, s);
   if (!pairs_.empty()) observe_contacts(t, dt, s);
   if (scene_.ground) observe_apexes(dt, s);

@@ -35,9 +35,9 @@ double spin_turn(const BodyState& before, const BodyState& now, double h,
 /// the angle of `now` plus the whole turns that bring it nearest to turn + spun.
 double next_turn(double turn, double spun, const BodyState& now);
 
-/// A body at rest that moves along the ground slower than this fraction of the fastest it
-/// has moved (or of |g| dt) only wobbles (an engine's rounding at rest): it has not set off.
-inline constexpr double kSignificantMotion = 1e-3;
+/// A step that takes this share of a pair's approach away at once pushes the pair apart as
+/// a hit does, even before they overlap (an engine's contact begins within its margin).
+inline constexpr double kHardPush = 0.1;
 
 class StepObserver {
  public:
@@ -63,37 +63,36 @@ class StepObserver {
   std::vector<Eigen::Vector3d> normals_;  ///< per pair: the contact normal at the last step
   std::vector<bool> rising_;   ///< per body: moving away from the ground at the last step
   std::vector<bool> bounced_;  ///< per body: a contact happened since its last apex
-  /// Zero crossings of the velocity of the bodies whose period is observed.
+  /// Upward zero crossings of the velocity of the bodies whose period is observed, or, for
+  /// a body on a hinge, of its spin about the hinge's axis.
   void observe_swings(double t, const State& s);
-  std::vector<int> swinging_;     ///< bodies with a period observable
-  std::vector<Vec3> low_, high_;  ///< per swinging body: smallest and largest velocity seen
+  std::vector<int> swinging_;              ///< bodies with a period observable
+  std::vector<const Hinge*> swing_hinge_;  ///< per swinging body: its hinge, or nullptr
   /// The stop of each body whose stop is observed: the end of its last motion along the
   /// ground (stop_observables.hpp). A motion begins at the start of the run when the body
-  /// moves there, or where it sets off after two or more quiet observations (the start
-  /// counts as two): quiet is slower than kSignificantMotion of the fastest it has moved
-  /// (or of |g| dt), so an engine's wobble at rest is no motion. It ends at the first step
-  /// where its velocity along the ground reaches rest (within a millionth of the fastest it
-  /// slid, or of |g| dt) or turns back (the crossing placed by linear interpolation). A
-  /// body at rest throughout stopped at t = 0.
+  /// moves there, or where it sets off after two or more observations at rest (the start
+  /// counts as two): at rest is slower than its rest speed (kRestShare), so an engine's
+  /// wobble or creep at rest is no motion. It ends at the first step where its velocity
+  /// along the ground comes to rest or turns back: where the speed along its direction
+  /// reaches zero on the line through the two steps (at most a step past the later one, for
+  /// a body that came to rest still creeping). A body at rest throughout stopped at t = 0.
   void observe_stops(double t, const State& s);
   /// Where a watched body is in its motions.
   struct StopWatch {
     bool moving = false;   ///< in a motion along the ground
-    int resting = 0;       ///< quiet observations in a row
+    int resting = 0;       ///< observations at rest in a row
     double largest = 0.0;  ///< m/s, the fastest in any motion
     Vec3 begin;            ///< where the current motion began
   };
-  std::vector<int> stopping_;       ///< bodies with stop_time, stop_distance or rest_creep
-  std::vector<double> fastest_;     ///< per stopping body: m/s, fastest along the ground yet
-  std::vector<StopWatch> watches_;  ///< per stopping body
+  std::vector<int> stopping_;    ///< bodies with stop_time, stop_distance or rest_creep
+  std::vector<double> fastest_;  ///< per stopping body: m/s, fastest along the ground yet
+  std::vector<std::optional<double>> rest_speeds_;  ///< per stopping body: the case's
+  std::vector<StopWatch> watches_;                  ///< per stopping body
   /// The first time each body whose fall is observed has its centre below fallen_height()
   /// above the ground, placed by linear interpolation between the two steps.
   void observe_falls(double t, const State& s);
   std::vector<int> falling_;    ///< bodies with fall_time
   bool watch_stretch_ = false;  ///< a max_stretch observable is asked for
-  /// The range of each component of the velocity of each swinging body, to choose the axis
-  /// it oscillates along.
-  void observe_swing_ranges(const State& s);
   /// Contacts between each pair that can touch (a step where they are close and stop
   /// approaching), their penetration, and the first collision's balance of momentum and
   /// energy.
@@ -121,6 +120,10 @@ class StepObserver {
   /// Writes episode k's values (post velocities, the balance) from the state at time t.
   void write_episode(std::size_t k, double t, const State& s);
   void close_episode(std::size_t k);
+  /// Pair k, overlapping or pushed hard (kHardPush) at time t, slowed its approach to
+  /// `closing` (m/s) without stopping: a contact seen only as a push
+  /// (BodyEvents::unresolved_contact).
+  void note_unresolved(std::size_t k, double t, double closing);
   /// Gravity's angular impulse (N m s) about the origin on bodies a and b over the step of
   /// dt seconds that ended in `s`, at the mid positions.
   Vec3 gravity_turn(const State& s, int a, int b, double dt) const;

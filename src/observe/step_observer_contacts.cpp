@@ -103,6 +103,14 @@ void StepObserver::observe_contacts(double t, double dt, const State& s) {
     const bool pushed =
         hit || (!first_ && p.gap < near && closing_[k] - closing_before_normal > rounding);
     Episode& ep = episodes_[k];
+    // Pushed without a hit, outside a contact that began with one: while overlapping, or
+    // hard (a tenth of the approach gone in one step), not as a force across the gap eases
+    // an approach; and from an approach faster than gravity gives in a step, not a body
+    // resting on another, which its contact holds there against gravity.
+    const bool hard = closing_[k] - closing_before_normal > kHardPush * closing_[k];
+    const bool approaching = closing_[k] > scene_.gravity.norm() * dt;
+    if (!first_ && pushed && !hit && !ep.open && approaching && (p.gap < 0.0 || hard))
+      note_unresolved(k, t, closing);
     if (!first_ && episode_watched(pair)) {
       if (ep.open && pushed && !hit) {
         // A contact that lasts (a soft one) is read at the last step that still pushes; a
@@ -140,6 +148,23 @@ void StepObserver::observe_contacts(double t, double dt, const State& s) {
     }
     closing_[k] = closing;
     normals_[k] = p.normal;
+  }
+}
+
+void StepObserver::note_unresolved(std::size_t k, double t, double closing) {
+  const ContactPair& pair = pairs_[k];
+  const bool b_moves = !pair.ground() && !scene_.bodies[pair.b].fixed;
+  for (int body : {pair.a, b_moves ? pair.b : -1}) {
+    if (body < 0) continue;
+    const int other = body == pair.a ? (pair.ground() ? -1 : pair.b) : pair.a;
+    const bool other_moves = other >= 0 && !scene_.bodies[other].fixed;
+    std::optional<UnresolvedContact>& u = trace_.bodies[body].unresolved_contact;
+    const bool by_moving = u && u->other >= 0 && !scene_.bodies[u->other].fixed;
+    // The first such push of the body; one with a moving body before one with the ground.
+    if (!u || (other_moves && !by_moving))
+      u = UnresolvedContact{other, t, closing_[k], closing};
+    else if (u->other == other)
+      u->approach_least = std::min(u->approach_least, closing);
   }
 }
 

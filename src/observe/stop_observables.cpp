@@ -1,6 +1,7 @@
 #include "observe/stop_observables.hpp"
 
 #include "observe/step_observer.hpp"
+#include "scene/text.hpp"
 
 namespace bb {
 
@@ -43,6 +44,12 @@ ObservableValue creep(const Scene& scene, int body, const Trajectory& run,
 
 }  // namespace
 
+std::optional<double> stated_rest_speed(const Scene& scene, int body) {
+  for (const Observe& o : scene.observes)
+    if (o.body == body && o.rest_speed) return o.rest_speed;
+  return std::nullopt;
+}
+
 Vec3 sliding_direction(const Scene& scene, int body) {
   const Vec3 pushed = along_ground(scene, scene.bodies[body].velocity);
   if (pushed.norm() > 0.0) return pushed.normalized();
@@ -69,25 +76,32 @@ ObservableValue measure_rest_creep(const Scene& scene, const Observe& observe,
 namespace {
 
 /// The observed body's last stop, or the note saying why there is none.
-std::optional<ObservableValue> no_stop(const Observe& observe, const Trajectory& trajectory) {
+std::optional<ObservableValue> no_stop(const Scene& scene, const Observe& observe,
+                                       const Trajectory& trajectory) {
   if (static_cast<std::size_t>(observe.body) >= trajectory.events.bodies.size())
     return ObservableValue{std::nullopt, "the run has no event trace"};
-  if (!trajectory.events.bodies[observe.body].stop_time)
-    return ObservableValue{std::nullopt, "never stops in the run"};
-  return std::nullopt;
+  if (trajectory.events.bodies[observe.body].stop_time) return std::nullopt;
+  const std::optional<double> rest = stated_rest_speed(scene, observe.body);
+  return ObservableValue{
+      std::nullopt,
+      "never stops in the run: its last motion along the ground did not slow to its rest "
+      "speed (" +
+          (rest ? short_number(*rest) + " m/s, the case's 'rest_speed'"
+                : std::string("a thousandth of the fastest it moved along the ground")) +
+          ") or turn back"};
 }
 
 }  // namespace
 
-ObservableValue measure_stop_time(const Scene&, const Observe& observe,
+ObservableValue measure_stop_time(const Scene& scene, const Observe& observe,
                                   const Trajectory& trajectory, const EventTrace*) {
-  if (auto none = no_stop(observe, trajectory)) return *none;
+  if (auto none = no_stop(scene, observe, trajectory)) return *none;
   return {*trajectory.events.bodies[observe.body].stop_time, ""};
 }
 
 ObservableValue measure_stop_distance(const Scene& scene, const Observe& observe,
                                       const Trajectory& trajectory, const EventTrace*) {
-  if (auto none = no_stop(observe, trajectory)) return *none;
+  if (auto none = no_stop(scene, observe, trajectory)) return *none;
   const BodyEvents& e = trajectory.events.bodies[observe.body];
   return {along_ground(scene, e.stop_position - e.motion_start).norm(), ""};
 }

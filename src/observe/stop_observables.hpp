@@ -29,6 +29,18 @@ ObservableValue measure_rest_creep(const Scene&, const Observe&, const Trajector
 ObservableValue measure_final_velocity(const Scene&, const Observe&, const Trajectory&,
                                        const EventTrace*);
 
+/// A body whose stop is observed is at rest while it moves along the ground slower than its
+/// rest speed: the case's `rest_speed`, else this share of the fastest it has moved along
+/// the ground (or of |g| dt, for a body that has not moved). Slower than that, a body only
+/// wobbles or creeps (an engine's rounding, its friction's slow give): it has not set off,
+/// and what it moves is its rest_creep. A boat slower than its rest speed (the same share of
+/// the wind's speed or of its own fastest) has no drift angle.
+inline constexpr double kRestShare = 1e-3;
+
+/// The rest speed (m/s) a case gives `body` on one of its [[observe]] (`rest_speed`): below
+/// it the body is at rest; nullopt where none gives one (each kind's default applies).
+std::optional<double> stated_rest_speed(const Scene& scene, int body);
+
 /// The unit direction final_velocity is measured along for `body`: its initial velocity
 /// along the ground, else its first impulse's, else downhill along the ground, else +x.
 Vec3 sliding_direction(const Scene& scene, int body);

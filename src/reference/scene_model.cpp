@@ -84,10 +84,17 @@ SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
   for (const Observe& o : settings.observed())
     if (observable_needs(o.kind, kWatchesFalls) && scene.ground)
       sources_.push_back({false, -1, o.body, {}, false, true});
-  // Swings are timed exactly, as every backend's are from its steps.
+  // Swings are timed exactly, as every backend's are from its steps: a hinged body's by its
+  // spin about the axis, any other's by each component of its velocity.
   for (const Observe& o : settings.observed())
-    if (observable_needs(o.kind, kWatchesSwings))
-      for (int axis = 0; axis < 3; ++axis) sources_.push_back({false, axis, o.body, {}});
+    if (observable_needs(o.kind, kWatchesSwings)) {
+      if (hinge_[o.body] != nullptr)
+        sources_.push_back({false, kHingeSwing, o.body, {}});
+      else
+        for (int axis = 0; axis < 3; ++axis)
+          for (const bool down : {false, true})
+            sources_.push_back({false, axis, o.body, {}, false, false, down});
+    }
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it
   // down, starts at rest there (a gap of exactly zero is no crossing, so no event would).
   const std::vector<double> y = initial_state();

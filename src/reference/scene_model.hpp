@@ -70,16 +70,20 @@ class SceneModel : public HybridModel {
   static std::string beyond_exact_answer(const World& scene);
 
  private:
-  /// What one event function watches: a contact pair's gap, a body's apex, the upward
-  /// zero crossing of one velocity component of a body whose period is observed, or a
-  /// sliding body's speed along its direction of sliding reaching zero (a stop).
+  /// What one event function watches: a contact pair's gap, a body's apex, a zero crossing
+  /// of one velocity component of a body whose period is observed (upwards, or downwards
+  /// with swing_down) or of a hinged one's spin about its axis (upwards), or a sliding
+  /// body's speed along its direction of sliding reaching zero (a stop).
+  /// Source::swing_axis of a hinged body's swing: its spin about the hinge's axis.
+  static constexpr int kHingeSwing = 3;
   struct Source {
     bool apex = false;
-    int swing_axis = -1;  ///< 0, 1, 2 for a swing
+    int swing_axis = -1;  ///< 0, 1, 2 for a swing along x, y, z; kHingeSwing about a hinge
     int body = -1;        ///< the apex's, swing's, stop's or fall's body
     ContactPair pair;     ///< a contact's pair
     bool stop = false;
-    bool fall = false;  ///< the centre reaching fallen_height() above the ground
+    bool fall = false;        ///< the centre reaching fallen_height() above the ground
+    bool swing_down = false;  ///< a swing's velocity falling through zero (a maximum)
     bool contact() const { return !apex && swing_axis < 0 && !stop && !fall; }
   };
   /// Whether body i turns on a hinge and may land on the ground (a falling wall).

@@ -30,9 +30,14 @@ contact::Proximity SceneModel::proximity(const ContactPair& pair, const double* 
 void SceneModel::events(double, const double* y, double* g) {
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const Source& s = sources_[k];
-    if (s.swing_axis >= 0) {
-      // Falls through zero when the velocity component rises through zero.
-      g[k] = -velocity(y, s.body)[s.swing_axis];
+    if (s.swing_axis == kHingeSwing) {
+      // Falls through zero when the spin about the hinge's axis rises through zero.
+      g[k] = -spin(y, s.body).dot(hinge_[s.body]->axis);
+    } else if (s.swing_axis >= 0) {
+      // Falls through zero when the velocity component rises through zero (or, watching it
+      // go down, falls through zero).
+      const double v = velocity(y, s.body)[s.swing_axis];
+      g[k] = s.swing_down ? v : -v;
     } else if (s.stop) {
       // The speed along the direction of sliding falls through zero at the stop.
       const SlideDecision& slide = slides_[s.body];
@@ -322,11 +327,18 @@ void SceneModel::apply_impulse(const Impulse& impulse, double t, double* y) {
 
 void SceneModel::apply(std::size_t k, double t, double* y) {
   const Source& s = sources_[k];
-  if (s.swing_axis >= 0) {
-    // A crossing applied with another event at the same instant may show up again just
-    // after it, when its velocity was still a hair below zero: it is one crossing.
-    std::vector<double>& crossings = trace_.bodies[s.body].upward_crossings[s.swing_axis];
+  // A crossing applied with another event at the same instant may show up again just after
+  // it, when its velocity was still a hair below zero: it is one crossing.
+  if (s.swing_axis == kHingeSwing) {
+    std::vector<double>& crossings = trace_.bodies[s.body].hinge_crossings;
     if (crossings.empty() || t - crossings.back() > 1e-9) crossings.push_back(t);
+    return;
+  }
+  if (s.swing_axis >= 0) {
+    std::vector<Turn>& turns = trace_.bodies[s.body].turns[s.swing_axis];
+    const bool lowest = !s.swing_down;
+    if (turns.empty() || turns.back().lowest != lowest || t - turns.back().time > 1e-9)
+      turns.push_back({t, position(y, s.body)[s.swing_axis], lowest});
     return;
   }
   if (s.stop) return stop(s.body, y, t);

@@ -75,7 +75,9 @@ std::string claims_page(const std::vector<CaseResults>& all) {
       "text does not make is marked as the case's own. For each backend the verdict over its "
       "whole dt sweep: holds, fails, holds for dt <= X (only at the small steps), holds for "
       "dt >= X (only at the large ones, as a claim that a method goes wrong at a game's step "
-      "should), holds at some dts only, or not measured (with why). Runs that diverged are named; "
+      "should), holds at some dts only, or not measured (with why); a verdict names the dts it "
+      "could not judge (not measured at dt ..., where a run has no value for the claim: the "
+      "case page says why). Runs that diverged are named; "
       "where the claim says so, a divergence counts as evidence for it (a claim that "
       "something explodes) or against it. Runs that an engine held at a cap of its own (capped) "
       "are named and not judged: their numbers are the cap's. The two numbers are those compared "
@@ -86,8 +88,8 @@ std::string claims_page(const std::vector<CaseResults>& all) {
   page += fmt::format(
       "{} claims ({} from the course text, {} the cases' own); {} of them fail or hold only in "
       "part for some backend; of the others, {} have a backend that diverged at some dt "
-      "without bearing on the claim, was capped, or could not be measured (neither holds nor "
-      "fails "
+      "without bearing on the claim, was capped, or could not be measured at some dt or at all "
+      "(neither holds nor fails "
       "there: counted apart).\n\n",
       count, count - own, own, failing, neither);
   return page + render_markdown(t);

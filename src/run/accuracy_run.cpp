@@ -96,15 +96,13 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
     // Settings as they stood at the end: the reference names a change of method there.
     record.engine_settings = sim->settings();
     record.trajectory.events = sim->exact_events().value_or(observer.trace());
-    // The axis a body swings along comes from the reference's samples (its swings
-    // themselves are timed as events; its peaks are found between its own steps).
+    // Whether a body's whole turns could be counted comes from the reference's samples
+    // (its events themselves are located exactly; its peaks between its own steps).
     if (observer.active() && sim->exact_events()) {
       EventTrace& events = record.trajectory.events;
       const EventTrace& seen = observer.trace();
-      for (std::size_t i = 0; i < events.bodies.size(); ++i) {
-        events.bodies[i].velocity_range = seen.bodies[i].velocity_range;
+      for (std::size_t i = 0; i < events.bodies.size(); ++i)
         events.bodies[i].turn_unclear = seen.bodies[i].turn_unclear;
-      }
     }
   } catch (const UnsupportedScene& e) {
     // A scene past what the backend answers (the reference's exact answer) is unsupported,

@@ -18,11 +18,13 @@ enum class VerdictKind { Holds, Partial, Fails, NotMeasured };
 struct ClaimVerdict {
   std::string backend;
   /// "holds", "fails", "holds for dt <= <X> s", "holds for dt >= <X> s", "holds at dt
-  /// <list> s only", or "not measured (<why>)"; with "; diverged at dt <list> s" where runs
-  /// blew up and the claim does not say what that means (they have no numbers to judge),
-  /// or "; diverged at dt <list> s, counted as holding" ("as failing") where it does; with
-  /// "; not judged where capped at dt <list> s: <reason>" where the engine held a run at a
-  /// cap of its own (its numbers are the cap's), or "not measured (capped at ...)".
+  /// <list> s only", or "not measured (<why>)"; with "; not measured at dt <list> s" where
+  /// some runs have no value to judge (a note instead: a hit the backend resolved by pushing
+  /// the bodies apart, say), "; diverged at dt <list> s" where runs blew up and the claim
+  /// does not say what that means (they have no numbers to judge), or "; diverged at dt
+  /// <list> s, counted as holding" ("as failing") where it does; with "; not judged where
+  /// capped at dt <list> s: <reason>" where the engine held a run at a cap of its own (its
+  /// numbers are the cap's), or "not measured (capped at ...)".
   std::string verdict;
   VerdictKind kind = VerdictKind::NotMeasured;
   std::vector<double> diverged;  ///< the dts whose runs diverged, largest first
@@ -33,6 +35,8 @@ struct ClaimVerdict {
   std::optional<double> left, right;  ///< the two numbers at report_dt (the reference: its own)
   std::vector<double> capped;         ///< the dts whose runs were capped, largest first
   std::string capped_reason;          ///< the first capped run's reason
+  /// The dts whose runs had no value for it, largest first.
+  std::vector<double> unmeasured = {};
 };
 
 struct ClaimResult {

@@ -88,7 +88,10 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
     const std::optional<double> l = side_value(results, claim, claim.left, backend, run->dt);
     const std::optional<double> r = side_value(results, claim, claim.right, backend, run->dt);
     if (report_row) v.left = l, v.right = r;
-    if (!l || !r) continue;
+    if (!l || !r) {
+      v.unmeasured.push_back(run->dt.value_or(0.0));
+      continue;
+    }
     (claim_holds(claim.op, *l, *r, claim.tolerance) ? holding : failing)
         .push_back(run->dt.value_or(0.0));
   }
@@ -109,6 +112,8 @@ ClaimVerdict judge(const CaseResults& results, const Claim& claim, const std::st
     v.verdict = "not measured (" + why + ")";
   } else {
     std::tie(v.verdict, v.kind) = core_verdict(holding, failing);
+    // The steps it could not judge are named: a verdict from some dts is not one from all.
+    if (!v.unmeasured.empty()) v.verdict += "; not measured at dt " + listed(v.unmeasured) + " s";
     if (!blew_up.empty())
       v.verdict += "; " + blew_up +
                    (claim.diverged == DivergedCounts::Holds   ? ", counted as holding"
@@ -168,7 +173,7 @@ ClaimStanding claim_standing(const ClaimResult& claim) {
   bool neither = false;
   for (const ClaimVerdict& v : claim.verdicts) {
     if (v.kind == VerdictKind::Fails || v.kind == VerdictKind::Partial) return ClaimStanding::Fails;
-    neither = neither || v.kind == VerdictKind::NotMeasured ||
+    neither = neither || v.kind == VerdictKind::NotMeasured || !v.unmeasured.empty() ||
               (!v.diverged.empty() && !v.diverged_judged) || !v.capped.empty();
   }
   return neither ? ClaimStanding::Neither : ClaimStanding::Holds;

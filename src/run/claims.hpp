@@ -29,7 +29,8 @@ bool claim_holds(const std::string& op, double left, double right, double tolera
 enum class ClaimStanding {
   Holds,    ///< holds for every backend, at every dt judged
   Fails,    ///< fails, or holds only in part, for some backend
-  Neither,  ///< no fail, but some backend not measured, or with runs diverged unjudged or capped
+  Neither,  ///< no fail, but some backend not measured (at some dt or all), or with runs
+            ///< diverged unjudged or capped
 };
 ClaimStanding claim_standing(const ClaimResult& claim);
 

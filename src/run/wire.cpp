@@ -82,8 +82,14 @@ void put(Writer& w, const EventTrace& events) {
     w.raw<char>(b.post_velocity.has_value());
     if (b.post_velocity) put(w, *b.post_velocity), put(w, b.post_normal.value_or(Vec3::Zero()));
     w.raw(b.max_penetration);
-    for (const auto& crossings : b.upward_crossings) put(w, crossings);
-    put(w, b.velocity_range);
+    w.raw<char>(b.unresolved_contact.has_value());
+    if (const auto& u = b.unresolved_contact)
+      w.raw(u->other), w.raw(u->time), w.raw(u->approach_before), w.raw(u->approach_least);
+    for (const std::vector<Turn>& turns : b.turns) {
+      w.raw<std::uint64_t>(turns.size());
+      for (const Turn& turn : turns) w.raw(turn.time), w.raw(turn.position), w.raw(turn.lowest);
+    }
+    put(w, b.hinge_crossings);
     w.raw<char>(b.stop_time.has_value());
     if (b.stop_time) w.raw(*b.stop_time), put(w, b.stop_position), put(w, b.motion_start);
     w.raw<char>(b.fall_time.has_value());
@@ -107,8 +113,18 @@ EventTrace get_events(Reader& r) {
     b.contact_times = get_values(r), b.apex_heights = get_values(r);
     if (r.raw<char>()) b.post_velocity = get_vec(r), b.post_normal = get_vec(r);
     b.max_penetration = r.raw<double>();
-    for (auto& crossings : b.upward_crossings) crossings = get_values(r);
-    b.velocity_range = get_vec(r);
+    if (r.raw<char>()) {
+      UnresolvedContact u;
+      u.other = r.raw<int>(), u.time = r.raw<double>();
+      u.approach_before = r.raw<double>(), u.approach_least = r.raw<double>();
+      b.unresolved_contact = u;
+    }
+    for (std::vector<Turn>& turns : b.turns) {
+      turns.resize(r.raw<std::uint64_t>());
+      for (Turn& turn : turns)
+        turn.time = r.raw<double>(), turn.position = r.raw<double>(), turn.lowest = r.raw<bool>();
+    }
+    b.hinge_crossings = get_values(r);
     if (r.raw<char>())
       b.stop_time = r.raw<double>(), b.stop_position = get_vec(r), b.motion_start = get_vec(r);
     if (r.raw<char>()) b.fall_time = r.raw<double>();

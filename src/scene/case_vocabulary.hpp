@@ -17,6 +17,8 @@ struct ObservableWord {
   std::string name;
   bool scene_wide = false;  ///< describes the whole scene: takes no `body`
   bool counted = false;     ///< counts events: takes an `n` (the n-th bounce)
+  bool rest_speed = false;  ///< takes a `rest_speed`: below it the body is at rest
+  bool axis = false;        ///< signed about an `axis`: required in 3D, +z by default in 2D
 };
 
 struct CaseVocabulary {

@@ -12,6 +12,25 @@
 
 namespace bb {
 
+/// A contact the per-step observer saw only as a push: at some step the two, overlapping or
+/// within an engine's margin, slowed their approach, but at no step did they stop approaching (an
+/// engine that resolves a hit by pushing the bodies apart over many steps, or leaves one inside the
+/// other). No contact time, velocity after the contact or balance of the collision can be read off
+/// it.
+struct UnresolvedContact {
+  int other = -1;                ///< the other body, -1 for the ground
+  double time = 0.0;             ///< s, the first step at which the pair pushed
+  double approach_before = 0.0;  ///< m/s, the speed of approach at the step before that
+  double approach_least = 0.0;   ///< m/s, the least speed of approach since (still above 0)
+};
+
+/// Where a body's velocity along one axis crossed zero: a turn of that coordinate.
+struct Turn {
+  double time = 0.0;      ///< s
+  double position = 0.0;  ///< m, the coordinate there
+  bool lowest = false;    ///< a minimum (the velocity rose through zero), else a maximum
+};
+
 struct BodyEvents {
   std::vector<double> contact_times;  ///< seconds, every contact of the body, in order
   /// Height of the centre above the ground at each apex after a contact, metres.
@@ -22,10 +41,15 @@ struct BodyEvents {
   /// bounced back or was pushed off.
   std::optional<Vec3> post_normal;
   double max_penetration = 0.0;  ///< metres: the deepest overlap seen (0: none)
-  /// Per axis x, y, z: the times (s) the velocity component crossed zero upwards, for a
-  /// body whose period is observed.
-  std::array<std::vector<double>, 3> upward_crossings;
-  Vec3 velocity_range;  ///< m/s per axis: largest minus smallest component seen
+  /// The first contact of the body seen only as a push (one with a moving body rather than
+  /// the ground or a fixed body, where there are both); the reference has none.
+  std::optional<UnresolvedContact> unresolved_contact;
+  /// Per axis x, y, z, in time order: every turn of the coordinate (its velocity through
+  /// zero either way), for a body whose period is observed.
+  std::array<std::vector<Turn>, 3> turns;
+  /// The times (s) the spin about the body's hinge axis crossed zero upwards (its angle at
+  /// one end of its swing), for a hinged body whose period is observed.
+  std::vector<double> hinge_crossings;
   /// Seconds from the start of the run: the end of the body's last motion along the ground,
   /// where its velocity along the ground reached zero or turned back; 0 for a body at rest
   /// throughout; none while its last motion goes on. A motion begins at the start or where

@@ -8,6 +8,7 @@
 #include "scene/load_parts.hpp"
 #include "scene/metric_names.hpp"
 #include "scene/text.hpp"
+#include "scene/vector_limits.hpp"
 
 namespace bb::load {
 
@@ -92,6 +93,35 @@ std::string known_kinds(const CaseVocabulary& vocabulary) {
   return joined(names);
 }
 
+/// An [[observe]]'s `rest_speed` and `axis`, for the kinds that take them: a body has one rest
+/// speed, so two of its [[observe]] may not give two; a spin is signed about z in 2D and
+/// about a given axis in 3D.
+void read_observe_thresholds(TomlReader& r, const Scene& scene, const ObservableWord& word,
+                             Observe& o) {
+  if (r.has("rest_speed") && !word.rest_speed)
+    r.fail(r.line_of("rest_speed"), "kind '" + o.kind + "' does not take 'rest_speed'");
+  if (r.has("rest_speed")) {
+    o.rest_speed = r.number("rest_speed");
+    require_range(r, "rest_speed", *o.rest_speed, 0.0, vector_limit(VectorKind::Velocity).most);
+    for (const Observe& other : scene.observes)
+      if (other.body == o.body && other.rest_speed && *other.rest_speed != *o.rest_speed)
+        r.fail(r.line_of("rest_speed"), "'rest_speed' " + show(*o.rest_speed) +
+                                            " differs from the " + show(*other.rest_speed) +
+                                            " line " + std::to_string(other.line) +
+                                            " gives the same body: a body has one rest speed");
+  }
+  if (r.has("axis") && !word.axis)
+    r.fail(r.line_of("axis"), "kind '" + o.kind + "' does not take 'axis'");
+  if (!word.axis) return;
+  if (scene.dims == 3 && !r.has("axis"))
+    r.fail(o.line, "kind '" + o.kind + "' in a 3D case needs 'axis': the spin is signed about it");
+  const Vec3 axis = r.vec3_or("axis", o.axis);
+  if (scene.dims == 2 && (axis.x() != 0.0 || axis.y() != 0.0))
+    r.fail(r.line_of("axis"),
+           "in a 2D case a spin is about z: 'axis' must be [0, 0, 1] or [0, 0, -1]");
+  o.axis = unit_vector(r, "axis", axis);
+}
+
 void read_observes(TomlReader& root, Scene& scene, const BodyNames& names,
                    const CaseVocabulary& vocabulary) {
   for (const toml::table* t : root.tables("observe")) {
@@ -121,6 +151,7 @@ void read_observes(TomlReader& root, Scene& scene, const BodyNames& names,
     } else if (r.has("n")) {
       r.fail(r.line_of("n"), "'n' counts events; kind '" + o.kind + "' does not take it");
     }
+    read_observe_thresholds(r, scene, *word, o);
     r.finish();
     scene.observes.push_back(o);
   }

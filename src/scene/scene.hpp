@@ -214,6 +214,12 @@ struct Observe {
   int line = 0;
   /// `<kind>/<body>` or `<kind>/<body>/<n>`, as results name it.
   std::string name;
+  /// m/s: the body counts as at rest below this speed (its stops, its drift angle), for the
+  /// kinds that take it; none: the kind's default, scaled from the run (observables.md).
+  std::optional<double> rest_speed = std::nullopt;
+  /// The unit axis a signed spin is read about (post_angular_velocity): +z unless given in
+  /// 2D, given in 3D.
+  Vec3 axis{0.0, 0.0, 1.0};
 };
 
 /// A CI accuracy gate, checked at report_dt.

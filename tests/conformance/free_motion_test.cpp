@@ -9,60 +9,27 @@
 #include <numbers>
 
 #include "observe/observables.hpp"
-#include "run/accuracy_run.hpp"
-#include "run/engine_catalogue.hpp"
-#include "scene/backend_names.hpp"
 #include "scene/motion.hpp"
-#include "support/engine_support.hpp"
+#include "support/conformance_support.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
-/// Every course integrator, so that each is a variant of the scenes below.
-const char* kCourse = R"(
-[course]
-integrators = ["explicit-euler", "semi-implicit-euler", "velocity-verlet", "rk4"]
-)";
-
-/// The reference, the four course integrators and every engine backend the catalogue holds.
-std::vector<std::string> every_backend() {
-  std::vector<std::string> names = {"reference", "course/explicit-euler",
-                                    "course/semi-implicit-euler", "course/velocity-verlet",
-                                    "course/rk4"};
-  for (const std::string& name : engine_backend_names(engine_catalogue())) names.push_back(name);
-  return names;
-}
+const char* const kCourse = test::kEveryIntegrator;
 
 class Conformance : public ::testing::TestWithParam<std::string> {
  protected:
   /// The run of this backend on `scene` at its finest step, or a skip that says why not.
   /// Empty when skipped.
   std::optional<RunRecord> run(const Scene& scene) {
-    const std::string& name = GetParam();
-    const std::string why = why_backend_cannot_run(scene, name, engine_catalogue());
-    if (!why.empty()) {
-      skipped_ = name + " cannot run this scene: " + why;
-      return std::nullopt;
-    }
-    if (name == "reference") return run_accuracy(test::registry().reference(), scene, scene.sample);
-    set_ = backends_for(scene, test::registry());
-    const auto found = std::find_if(set_.all.begin(), set_.all.end(),
-                                    [&](const Backend* b) { return b->name() == name; });
-    if (found == set_.all.end()) {
-      skipped_ = name + " was not built on this machine";
-      return std::nullopt;
-    }
-    return run_accuracy(**found, scene, scene.dt.back());
+    return test::run_backend(GetParam(), scene, scene.dt.back(), skipped_);
   }
 
   /// Rounding allowed, relative: the float engines' own, else a double's over a run.
   double tolerance() const { return test::single_precision(GetParam()) ? 2e-5 : 1e-9; }
 
   std::string skipped_;
-
- private:
-  BackendSet set_;
 };
 
 /// The final velocity of body `body` of `record`.
@@ -195,7 +162,7 @@ body = "light"
   EXPECT_NEAR(*period, closed, 0.1 * closed);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryBackend, Conformance, ::testing::ValuesIn(every_backend()),
+INSTANTIATE_TEST_SUITE_P(EveryBackend, Conformance, ::testing::ValuesIn(test::every_backend()),
                          test::param_test_name);
 
 }  // namespace

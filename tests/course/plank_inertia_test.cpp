@@ -42,7 +42,8 @@ TEST(PlankInertia, TheSeedsFormulaIsTwiceTheTruthAtTheCentreAndRightAtAnEnd) {
 }
 
 // The course on plank_axis turns each plank with the seed's J: its spin after the hit is
-// the impulse's moment over 1/3 m d1^2 + 1/3 m d2^2, half the true spin at the centre.
+// the impulse's moment about z over 1/3 m d1^2 + 1/3 m d2^2, half the true spin at the
+// centre, turning the way the moment does.
 TEST(PlankInertia, TheCourseSpinsEachPlankWithTheSeedsInertia) {
   const Scene scene = load_case(test::source_path("cases/plank_axis.toml"));
   const CourseBackend backend(
@@ -53,7 +54,7 @@ TEST(PlankInertia, TheCourseSpinsEachPlankWithTheSeedsInertia) {
     const Body& b = scene.bodies[h.body];
     const double a = (h.anchor - b.position).x();
     const Impulse& hit = scene.impulses[h.body];
-    const double moment = std::abs((*hit.point - h.anchor).cross(hit.impulse).z());
+    const double moment = (*hit.point - h.anchor).cross(hit.impulse).z();
     const Observe spin{"post_angular_velocity", h.body, 0, 0, ""};
     const ObservableValue measured = measure(scene, spin, run.trajectory, nullptr);
     ASSERT_TRUE(measured.value) << measured.note;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "course/course_backend.hpp"
+#include "observe/observables.hpp"
 #include "reference/scene_model.hpp"
 #include "support/test_support.hpp"
 
@@ -267,6 +268,50 @@ body = "against"
   EXPECT_NEAR(*e.bodies[6].stop_time, 0.7, 1e-15);
 }
 
+// An engine's creep after its stop is no motion: a slide that slows by 1 m/s^2 and, where
+// it would stop at 0.4 s, creeps on at 1e-5 m/s (ODE's friction gives way about that slowly)
+// stops where the slide's speed reaches zero, 0.4 s, and the creep is its rest_creep. A
+// case that sets the rest speed below the creep (1e-6 m/s) counts the creep as motion: the
+// body never stops then, and the note says at which rest speed.
+TEST(StepObserver, AnEnginesCreepAfterItsStopIsNotMotion) {
+  const Scene scene =
+      test::scene_from(test::level_ground_case("creep", "friction_static = 0.5\n") +
+                       test::resting_box("creeps", 0.0) + test::resting_box("strict", 5.0) +
+                       R"([[observe]]
+kind = "stop_time"
+body = "creeps"
+[[observe]]
+kind = "stop_time"
+body = "strict"
+rest_speed = 1e-6
+)");
+  StepObserver observer(scene);
+  State s(2);
+  for (std::size_t i = 0; i < 2; ++i) s[i].position = scene.bodies[i].position;
+  // Velocities along x at t = 0, 0.1, ..., 1.0 s: the slide, then the creep.
+  for (int k = 0; k <= 10; ++k) {
+    const double v = k < 4 ? 0.4 - 0.1 * k : 1e-5;
+    for (BodyState& b : s) {
+      if (k > 0) b.position.x() += 0.05 * (b.velocity.x() + v);
+      b.velocity = {v, 0.0, 0.0};
+    }
+    observer.observe(0.1 * k, s);
+  }
+  const EventTrace& e = observer.trace();
+  ASSERT_TRUE(e.bodies[0].stop_time) << "the creep was counted as motion";
+  // Where the line through the last two steps (0.1 m/s, then 1e-5) reaches zero.
+  EXPECT_NEAR(*e.bodies[0].stop_time, 0.4, 2e-5);
+  EXPECT_FALSE(e.bodies[1].stop_time);
+  Trajectory run;
+  run.times = {0.0, 1.0};
+  run.states = {s, s};
+  run.events = e;
+  const ObservableValue strict = measure(scene, scene.observes[1], run, nullptr);
+  EXPECT_FALSE(strict.value);
+  EXPECT_NE(strict.note.find("rest speed (1e-06 m/s, the case's 'rest_speed')"), std::string::npos)
+      << strict.note;
+}
+
 // Two equal balls meet head on and touch softly, as MuJoCo's contact does: a spring pushes
 // them apart over many steps, so they stop approaching (both at rest) half-way through the
 // contact. The contact is read where it ends, when the spring stops pushing: the post
@@ -326,6 +371,80 @@ restitution = 1.0
   // The hit itself is where they stopped approaching: half-way through the contact.
   const double half = 0.1 + 0.5 * std::numbers::pi / std::sqrt(2.0 * k);
   EXPECT_NEAR(trace.bodies[0].contact_times[0], half, 2e-3);
+}
+
+// A hit a backend resolves by pushing the bodies apart over its steps without ever stopping
+// their approach (Bullet's ball and plank at 1/120 s: the ball's speed fell from 2 to 0.42
+// m/s and it ended inside the plank) has no step where a contact can be timed: every
+// contact observable says "not measured:" with what was seen, the overlap and the slowing,
+// rather than that nothing touched or no two moving bodies collided.
+TEST(StepObserver, AHitSeenOnlyAsAPushIsNotMeasuredAndSaysWhy) {
+  const Scene scene = test::scene_from(R"(name = "pushed_apart"
+dims = 2
+duration = 1.0
+sample = 0.01
+dt = [0.01]
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "left"
+radius = 0.5
+mass = 1.0
+position = [-1.5, 0.0, 0.0]
+velocity = [2.0, 0.0, 0.0]
+[[body]]
+name = "right"
+radius = 0.5
+mass = 1.0
+[[contact]]
+bodies = ["left", "right"]
+restitution = 1.0
+[[observe]]
+kind = "momentum_change"
+body = "left"
+[[observe]]
+kind = "post_velocity"
+body = "right"
+[[observe]]
+kind = "contact_time"
+body = "left"
+)");
+  // Overlapping, each step takes a fifth of the approach above 0.05 m/s: it slows towards
+  // 0.05 m/s and never stops, the momentum kept.
+  const double dt = 0.01;
+  StepObserver observer(scene);
+  State s(2);
+  for (int i = 0; i < 2; ++i)
+    s[i].position = scene.bodies[i].position, s[i].velocity = scene.bodies[i].velocity;
+  observer.observe(0.0, s);
+  for (int n = 1; n <= 100; ++n) {
+    const double closing = s[0].velocity.x() - s[1].velocity.x();
+    if (s[1].position.x() - s[0].position.x() < 1.0) {
+      const double dv = 0.2 * (closing - 0.05);
+      s[0].velocity.x() -= 0.5 * dv, s[1].velocity.x() += 0.5 * dv;
+    }
+    for (int i = 0; i < 2; ++i) s[i].position += s[i].velocity * dt;
+    observer.observe(n * dt, s);
+  }
+  Trajectory run;
+  run.times = {0.0, 1.0};
+  run.states = {s, s};
+  run.events = observer.trace();
+  ASSERT_TRUE(run.events.bodies[0].contact_times.empty()) << "a hit was found";
+  ASSERT_TRUE(run.events.bodies[0].unresolved_contact);
+  EXPECT_EQ(run.events.bodies[0].unresolved_contact->other, 1);
+  EXPECT_NEAR(run.events.bodies[0].unresolved_contact->approach_before, 2.0, 1e-12);
+  EXPECT_GT(run.events.bodies[0].unresolved_contact->approach_least, 0.05);
+  EXPECT_LT(run.events.bodies[0].unresolved_contact->approach_least, 0.06);
+  for (const Observe& o : scene.observes) {
+    const ObservableValue v = measure(scene, o, run, nullptr);
+    EXPECT_FALSE(v.value) << o.name;
+    EXPECT_EQ(v.note.rfind("not measured: from t = ", 0), 0u) << o.name << ": " << v.note;
+    EXPECT_NE(v.note.find("of 'left' and 'right' (overlapping by up to") == std::string::npos &&
+                  v.note.find("of 'right' and 'left' (overlapping by up to") == std::string::npos,
+              true)
+        << v.note;
+    EXPECT_NE(v.note.find("slowed from 2 to 0.05"), std::string::npos) << v.note;
+  }
 }
 
 }  // namespace

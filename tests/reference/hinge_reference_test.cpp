@@ -21,7 +21,7 @@ TEST(HingeReference, APlankOnAnAxisSpinsByTheParallelAxisTheoremAndKeepsItsAncho
     const double l = 2.0 * b.half_extents.x(), t = 2.0 * b.half_extents.y();
     const double a = (h.anchor - b.position).norm();
     const Impulse& hit = scene.impulses[h.body];
-    const double moment = std::abs((*hit.point - h.anchor).cross(hit.impulse).z());
+    const double moment = (*hit.point - h.anchor).cross(hit.impulse).z();
     const double expected = moment / (b.mass * (l * l + t * t) / 12.0 + b.mass * a * a);
     const Observe spin{"post_angular_velocity", h.body, 0, 0, ""};
     const ObservableValue measured = measure(scene, spin, run.trajectory, nullptr);

@@ -184,6 +184,34 @@ right = 5.0
   EXPECT_EQ(v.kind, VerdictKind::Partial);
 }
 
+// A verdict from some dts names those it could not judge: runs whose value is a note (a hit
+// the backend resolved by pushing the bodies apart: "not measured: ..."), not a number. The
+// ledger counts it apart from a claim that holds everywhere.
+TEST(Claims, AVerdictNamesTheStepsItCouldNotJudge) {
+  static Scene scene;
+  scene = test::scene_from(fall_case() + R"(
+[[claim]]
+text = "explicit Euler keeps the speed"
+own = true
+left = "course/explicit-euler:final_speed/ball"
+op = "~"
+right = 3.0
+tolerance = 0.5
+)");
+  CaseResults results = made_up(scene, "course/explicit-euler", {9.0, 7.0, 4.0, 3.0}, 3.0);
+  for (RunRecord& run : results.runs)
+    if (*run.dt < 0.03) run.observables[0].measured = {std::nullopt, "not measured: pushed apart"};
+  ClaimResult claim = judge_claims(results)[0];
+  EXPECT_EQ(claim.verdicts[0].verdict, "fails; not measured at dt 1/40, 1/80 s");
+  EXPECT_EQ(claim.verdicts[0].kind, VerdictKind::Fails);
+  // Holding where it was judged, it is not a claim that holds at every dt.
+  for (RunRecord& run : results.runs)
+    if (*run.dt > 0.03) run.observables[0].measured.value = 3.0;
+  claim = judge_claims(results)[0];
+  EXPECT_EQ(claim.verdicts[0].verdict, "holds; not measured at dt 1/40, 1/80 s");
+  EXPECT_EQ(claim_standing(claim), ClaimStanding::Neither);
+}
+
 // `diverged = "holds"`: a run that blew up is evidence for a claim that something explodes;
 // a backend that diverges at every step holds it instead of going unmeasured. `"fails"`:
 // evidence against a claim that something stays bounded.

@@ -32,6 +32,9 @@ TEST(Wire, ARunRecordComesBackWhole) {
   run.trajectory.events.bodies[1].stop_position = {2.5, 0.5, -1.0};
   run.trajectory.events.bodies[1].motion_start = {1.0, 0.5, -1.0};
   run.trajectory.events.max_stretch = 0.1;
+  run.trajectory.events.bodies[0].turns[1] = {{0.5, -1.0, true}, {0.75, 1.0, false}};
+  run.trajectory.events.bodies[0].hinge_crossings = {0.25, 1.5};
+  run.trajectory.events.bodies[1].unresolved_contact = UnresolvedContact{0, 0.5, 2.0, 0.03};
 
   const RunRecord back = wire::decode_run(wire::encode(run));
   EXPECT_EQ(back.backend, run.backend);
@@ -68,6 +71,16 @@ TEST(Wire, ARunRecordComesBackWhole) {
   EXPECT_EQ(back.trajectory.events.bodies.at(1).stop_position, Vec3(2.5, 0.5, -1.0));
   EXPECT_EQ(back.trajectory.events.bodies.at(1).motion_start, Vec3(1.0, 0.5, -1.0));
   EXPECT_EQ(back.trajectory.events.max_stretch, 0.1);
+  const std::vector<Turn>& turns = back.trajectory.events.bodies.at(0).turns[1];
+  ASSERT_EQ(turns.size(), 2u);
+  EXPECT_EQ(turns[1].time, 0.75);
+  EXPECT_EQ(turns[1].position, 1.0);
+  EXPECT_TRUE(turns[0].lowest && !turns[1].lowest);
+  EXPECT_EQ(back.trajectory.events.bodies.at(0).hinge_crossings, std::vector<double>({0.25, 1.5}));
+  const auto& pushed = back.trajectory.events.bodies.at(1).unresolved_contact;
+  ASSERT_TRUE(pushed);
+  EXPECT_EQ(pushed->other, 0);
+  EXPECT_EQ(pushed->approach_least, 0.03);
 }
 
 TEST(Wire, StatesOfAFewBodiesComeBack) {
