@@ -19,9 +19,6 @@ std::string os_reason() {
   return std::strerror(errno);
 }
 
-namespace {
-
-/// Writes all of `text` to `fd`; on failure the OS's reason, else "".
 std::string write_all(int fd, const std::string& text) {
   std::size_t at = 0;
   while (at < text.size()) {
@@ -32,6 +29,8 @@ std::string write_all(int fd, const std::string& text) {
   }
   return "";
 }
+
+namespace {
 
 /// Writes `text` into a file that is not replaced: a FIFO, a device, a descriptor path.
 void write_in_place(const std::string& path, const std::string& text) {

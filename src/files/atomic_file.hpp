@@ -12,6 +12,10 @@ namespace bb {
 /// Why the last system call failed, in the OS's words (strerror of errno).
 std::string os_reason();
 
+/// Writes all of `text` to the open file `fd`, again after an interrupted call; on failure
+/// the OS's reason, else "".
+std::string write_all(int fd, const std::string& text);
+
 /// A file that could not be written: names the path and carries the OS's reason (exit 2).
 struct WriteError : CaseError {
   WriteError(const std::string& path, const std::string& reason)

@@ -127,18 +127,6 @@ std::optional<std::string> read_file(const std::string& path) {
   return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
-/// Writes all of `bytes` to `fd`; whether every byte went.
-bool write_all(int fd, const std::string& bytes) {
-  std::size_t at = 0;
-  while (at < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + at, bytes.size() - at);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    at += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 }  // namespace
 
 std::string default_cache_folder() {
@@ -189,7 +177,7 @@ bool ResultCache::store(const std::string& key, const std::string& bytes) const 
     // A file system without unnamed files: the name first, locked before anything is in it.
     if (!unnamed) fd = open(named.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd < 0) return false;
-    bool stored = flock(fd, LOCK_EX | LOCK_NB) == 0 && write_all(fd, entry);
+    bool stored = flock(fd, LOCK_EX | LOCK_NB) == 0 && write_all(fd, entry).empty();
     if (stored && unnamed) {
       const std::string self = "/proc/self/fd/" + std::to_string(fd);
       stored = linkat(AT_FDCWD, self.c_str(), AT_FDCWD, named.c_str(), AT_SYMLINK_FOLLOW) == 0;

@@ -45,11 +45,7 @@ Ended with_closed_reader(const std::vector<std::string>& args, bool both) {
       const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       dup2(fd, STDERR_FILENO);
     }
-    std::vector<const char*> argv = {BEACHBALL_PROGRAM};
-    for (const std::string& a : args) argv.push_back(a.c_str());
-    argv.push_back(nullptr);
-    execv(BEACHBALL_PROGRAM, const_cast<char* const*>(argv.data()));
-    _exit(127);
+    test::exec_beachball(args);
   }
   close(ends[1]);
   Ended ended;

@@ -17,17 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The numbers of "kept results: R reused, N run" in the program's output: {R, N}, or
-/// {-1, -1} when it says nothing of them.
-std::pair<int, int> kept(const std::string& out) {
-  const auto at = out.find("kept results: ");
-  int reused = -1, ran = -1;
-  if (at == std::string::npos ||
-      std::sscanf(out.c_str() + at, "kept results: %d reused, %d run", &reused, &ran) != 2)
-    return {-1, -1};
-  return {reused, ran};
-}
-
 TEST(KeptResults, OnlyTheCaseThatChangedRunsAgain) {
   const std::string dir = test::fresh_dir("kept_results");
   const std::string cache = dir + "/cache";
@@ -41,14 +30,14 @@ TEST(KeptResults, OnlyTheCaseThatChangedRunsAgain) {
   };
   const test::Outcome first = run("first");
   ASSERT_EQ(first.exit_code, 0) << first.out;
-  const auto [none, all] = kept(first.out);
+  const auto [none, all] = test::kept_counts(first.out);
   EXPECT_EQ(none, 0) << first.out;
   ASSERT_GT(all, 0) << first.out;
   ASSERT_EQ(all % 2, 0) << "the two cases run alike";
 
   const test::Outcome second = run("second");
   ASSERT_EQ(second.exit_code, 0) << second.out;
-  EXPECT_EQ(kept(second.out), std::make_pair(all, 0)) << second.out;
+  EXPECT_EQ(test::kept_counts(second.out), std::make_pair(all, 0)) << second.out;
   EXPECT_EQ(test::snapshot(dir + "/second"), test::snapshot(dir + "/first"));
 
   // a's text changes (its duration): a runs again, b is reused.
@@ -57,17 +46,17 @@ TEST(KeptResults, OnlyTheCaseThatChangedRunsAgain) {
   test::write_case(dir, "a.toml", text);
   const test::Outcome edited = run("edited");
   ASSERT_EQ(edited.exit_code, 0) << edited.out;
-  EXPECT_EQ(kept(edited.out), std::make_pair(all / 2, all / 2)) << edited.out;
+  EXPECT_EQ(test::kept_counts(edited.out), std::make_pair(all / 2, all / 2)) << edited.out;
   EXPECT_EQ(test::file_bytes(dir + "/edited/b.json"), test::file_bytes(dir + "/first/b.json"));
   EXPECT_NE(test::file_bytes(dir + "/edited/a.json"), test::file_bytes(dir + "/first/a.json"));
 
   const test::Outcome fresh = run("fresh", " --fresh");
-  EXPECT_EQ(kept(fresh.out), std::make_pair(0, all)) << fresh.out;
+  EXPECT_EQ(test::kept_counts(fresh.out), std::make_pair(0, all)) << fresh.out;
   EXPECT_EQ(test::file_bytes(dir + "/fresh/b.json"), test::file_bytes(dir + "/first/b.json"));
 
   // Without a folder of kept results (the tests' environment says off), nothing is said.
   const test::Outcome off = test::beachball("run " + b + " --no-cost --out " + dir + "/off");
-  EXPECT_EQ(kept(off.out), std::make_pair(-1, -1)) << off.out;
+  EXPECT_EQ(test::kept_counts(off.out), std::make_pair(-1, -1)) << off.out;
 }
 
 TEST(KeptResults, AReportReusesItsRunsTrialsAndSweepAndWritesTheSameReport) {
@@ -85,9 +74,9 @@ TEST(KeptResults, AReportReusesItsRunsTrialsAndSweepAndWritesTheSameReport) {
   ASSERT_EQ(second.exit_code, 0) << second.out;
   // Everything is reused, the runs of DESIGN.md's fallback too (the stacked balls have no
   // reference: a backend's runs are measured against its own finest one).
-  const int all = kept(first.out).second;
+  const int all = test::kept_counts(first.out).second;
   EXPECT_GT(all, 0) << first.out;
-  EXPECT_EQ(kept(second.out), std::make_pair(all, 0)) << second.out;
+  EXPECT_EQ(test::kept_counts(second.out), std::make_pair(all, 0)) << second.out;
   auto before = test::snapshot(dir + "/first"), after = test::snapshot(dir + "/second");
   EXPECT_EQ(after, before);
 }
@@ -109,7 +98,7 @@ TEST(KeptResults, SomeOfTheStepsGiveTheBytesOfAFreshRunOfThem) {
   const test::Outcome kept_subset = run("kept", " --dt 1/60,1/120" + cache);
   ASSERT_EQ(kept_subset.exit_code, 0) << kept_subset.out;
   // The reference and its self-check are the same whatever the steps: reused.
-  EXPECT_GE(kept(kept_subset.out).first, 2) << kept_subset.out;
+  EXPECT_GE(test::kept_counts(kept_subset.out).first, 2) << kept_subset.out;
   const test::Outcome fresh_subset = run("fresh", " --dt 1/60,1/120");
   ASSERT_EQ(fresh_subset.exit_code, 0) << fresh_subset.out;
   EXPECT_EQ(test::file_bytes(dir + "/kept/stack.json"),
@@ -127,7 +116,7 @@ TEST(KeptResults, AFolderThatCannotBeUsedIsSaid) {
       test::beachball("run " + a + " --no-cost --out " + dir + "/out --cache '" + dir + "/a file'");
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_NE(o.out.find("cannot be used: it is not a folder"), std::string::npos) << o.out;
-  EXPECT_EQ(kept(o.out), std::make_pair(-1, -1)) << o.out;
+  EXPECT_EQ(test::kept_counts(o.out), std::make_pair(-1, -1)) << o.out;
   EXPECT_EQ(test::file_bytes(dir + "/a file"), "not a folder");
 }
 
@@ -145,7 +134,7 @@ TEST(KeptResults, AKeptCostSaysWhenItWasTimed) {
   EXPECT_EQ(first.find("measured_at"), std::string::npos);
   const test::Outcome second = report("second");
   ASSERT_EQ(second.exit_code, 0) << second.out;
-  EXPECT_EQ(kept(second.out).second, 0) << second.out;
+  EXPECT_EQ(test::kept_counts(second.out).second, 0) << second.out;
   const std::string json = test::file_bytes(dir + "/second/a.json");
   // "measured_at": "YYYY-MM-DDTHH:MM:SSZ"
   const auto at = json.find("\"measured_at\": \"");

@@ -22,16 +22,6 @@ namespace fs = std::filesystem;
 const std::string kRebuilt =
     std::string("export LD_LIBRARY_PATH=") + BEACHBALL_REBUILT_LIBRARY_DIR + ";";
 
-/// {reused, run} from "kept results: R reused, N run", or {-1, -1}.
-std::pair<int, int> kept(const std::string& out) {
-  const auto at = out.find("kept results: ");
-  int reused = -1, ran = -1;
-  if (at == std::string::npos ||
-      std::sscanf(out.c_str() + at, "kept results: %d reused, %d run", &reused, &ran) != 2)
-    return {-1, -1};
-  return {reused, ran};
-}
-
 TEST(RebuiltLibrary, ARebuiltPhysicsLibraryRerunsEveryRun) {
   ASSERT_TRUE(fs::exists(std::string(BEACHBALL_REBUILT_LIBRARY_DIR) + "/libbb_physics.so"));
   const std::string dir = test::fresh_dir("rebuilt_library");
@@ -43,17 +33,17 @@ TEST(RebuiltLibrary, ARebuiltPhysicsLibraryRerunsEveryRun) {
   };
   const test::Outcome first = run("first");
   ASSERT_EQ(first.exit_code, 0) << first.out;
-  const int all = kept(first.out).second;
+  const int all = test::kept_counts(first.out).second;
   ASSERT_GT(all, 0) << first.out;
   // The same build again: everything reused.
-  EXPECT_EQ(kept(run("again").out), std::make_pair(all, 0));
+  EXPECT_EQ(test::kept_counts(run("again").out), std::make_pair(all, 0));
   // The rebuilt library: nothing reused, and the same numbers (its code computes alike).
   const test::Outcome rebuilt = run("rebuilt", kRebuilt);
   ASSERT_EQ(rebuilt.exit_code, 0) << rebuilt.out;
-  EXPECT_EQ(kept(rebuilt.out), std::make_pair(0, all)) << rebuilt.out;
+  EXPECT_EQ(test::kept_counts(rebuilt.out), std::make_pair(0, all)) << rebuilt.out;
   EXPECT_EQ(test::file_bytes(dir + "/rebuilt/a.json"), test::file_bytes(dir + "/first/a.json"));
   // Back to the build's own library: its results are still kept.
-  EXPECT_EQ(kept(run("back").out), std::make_pair(all, 0));
+  EXPECT_EQ(test::kept_counts(run("back").out), std::make_pair(all, 0));
 }
 
 TEST(RebuiltLibrary, AMergeRefusesShardsMadeWithAnotherLibrary) {

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/test_support.hpp"
@@ -59,6 +60,15 @@ inline std::string write_case(const std::string& dir, const std::string& file,
   return path;
 }
 
+/// Replaces this (forked) process with `beachball ARGS`; exit code 127 where it cannot start.
+[[noreturn]] inline void exec_beachball(const std::vector<std::string>& args) {
+  std::vector<const char*> argv = {BEACHBALL_PROGRAM};
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  argv.push_back(nullptr);
+  execv(BEACHBALL_PROGRAM, const_cast<char* const*>(argv.data()));
+  _exit(127);
+}
+
 /// Starts `beachball ARGS` without waiting, its output to `log`; returns its pid.
 inline pid_t start_beachball(const std::vector<std::string>& args, const std::string& log) {
   const pid_t pid = fork();
@@ -66,11 +76,7 @@ inline pid_t start_beachball(const std::vector<std::string>& args, const std::st
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
-    std::vector<const char*> argv = {BEACHBALL_PROGRAM};
-    for (const std::string& a : args) argv.push_back(a.c_str());
-    argv.push_back(nullptr);
-    execv(BEACHBALL_PROGRAM, const_cast<char* const*>(argv.data()));
-    _exit(127);
+    exec_beachball(args);
   }
   return pid;
 }
@@ -111,6 +117,17 @@ inline std::string temporaries_in(const std::filesystem::path& folder) {
     if (beachball_temporary(entry.path().filename().string()))
       found += entry.path().filename().string() + " ";
   return found;
+}
+
+/// The numbers of "kept results: R reused, N run" in the program's output: {R, N}, or
+/// {-1, -1} when it says nothing of them.
+inline std::pair<int, int> kept_counts(const std::string& out) {
+  const auto at = out.find("kept results: ");
+  int reused = -1, ran = -1;
+  if (at == std::string::npos ||
+      std::sscanf(out.c_str() + at, "kept results: %d reused, %d run", &reused, &ran) != 2)
+    return {-1, -1};
+  return {reused, ran};
 }
 
 }  // namespace bb::test
