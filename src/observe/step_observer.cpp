@@ -160,16 +160,19 @@ void StepObserver::observe_stops(double t, const State& s) {
     if (w.moving) {
       w.largest = std::max(w.largest, now.norm());
       // Came to rest, or turned back (not a step that set off against a jitter's
-      // direction): the stop is where the speed along the old direction reaches zero on
+      // direction): the stop is when the speed along the old direction reaches zero on
       // the line through the two steps, within the step for a turn, at most a step past it
-      // for a body still creeping at rest.
+      // for a body still moving at rest speed. Its place: within the step for a turn; for
+      // a body come to rest, where it is now (what it moves after that is its rest_creep;
+      // a place on the line past this step would overshoot a slide that eases to a stop).
       if (!was_at_rest && !set_off && (at_rest || now.dot(before) < 0.0)) {
         const double along = now.dot(before) / before.norm();
         const double f = std::min(2.0, before.norm() / (before.norm() - along));
         w.moving = false;
         w.resting = at_rest ? 1 : 0;
         e.stop_time = previous_t_ + f * h;
-        e.stop_position = previous_[i].position + f * (s[i].position - previous_[i].position);
+        e.stop_position =
+            previous_[i].position + std::min(f, 1.0) * (s[i].position - previous_[i].position);
         e.motion_start = w.begin;
       }
     }

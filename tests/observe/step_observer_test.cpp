@@ -312,6 +312,34 @@ rest_speed = 1e-6
       << strict.note;
 }
 
+// A slide that eases to a stop (the course's clamp: the step that would reverse it ends at
+// rest) has no creep: its stop is where it came to rest, not a place on the line through its
+// last two steps past that, which would count the slide's last step below the rest speed
+// as creep (2.9e-6 m on friction_materials' lubricated steel, against a gate of 1e-12).
+TEST(StepObserver, ASlideThatEasesToAStopHasNoCreep) {
+  const Scene scene = test::scene_from(test::level_ground_case("eases", "friction_static = 0.5\n") +
+                                       test::resting_box("block", 0.0) + R"([[observe]]
+kind = "stop_time"
+body = "block"
+)");
+  StepObserver observer(scene);
+  State s(1);
+  s[0].position = scene.bodies[0].position;
+  // Velocities along x at t = 0, 0.1, ..., 0.6 s, each step's position moved by its new
+  // velocity (semi-implicit): slower than the rest speed (4e-4 m/s) at 0.4 s, 0 from 0.5 s.
+  const double speeds[] = {0.4, 0.3, 0.2, 0.1, 3e-4, 0.0, 0.0};
+  for (int k = 0; k <= 6; ++k) {
+    s[0].velocity = {speeds[k], 0.0, 0.0};
+    if (k > 0) s[0].position.x() += 0.1 * speeds[k];
+    observer.observe(0.1 * k, s);
+  }
+  const BodyEvents& e = observer.trace().bodies[0];
+  ASSERT_TRUE(e.stop_time);
+  EXPECT_GT(*e.stop_time, 0.4);
+  EXPECT_LE(*e.stop_time, 0.5);
+  EXPECT_EQ(e.stop_position, s[0].position) << "the stop overshoots where the block rests";
+}
+
 // Two equal balls meet head on and touch softly, as MuJoCo's contact does: a spring pushes
 // them apart over many steps, so they stop approaching (both at rest) half-way through the
 // contact. The contact is read where it ends, when the spring stops pushing: the post
