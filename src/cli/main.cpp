@@ -156,6 +156,9 @@ bb::RunOptions run_options(const CLI::App& app, Values& v) {
   options.isolation = !v.no_isolation;
   options.timeout = v.timeout;
   if (given("--shard")) options.shard = bb::cli::parse_shard(v.shard);
+  if (given("--baseline") && v.baseline.empty())
+    throw bb::CaseError("--baseline", 0,
+                        "is empty; give the folder of <case>.json to compare with");
   return options;
 }
 

@@ -70,7 +70,18 @@ TEST(CheckBaseline, TheSameRunIsUnchangedAndPasses) {
   // Every error metric of the two backends at both dts, and the observables beside.
   const std::size_t at = o.out.find("baseline " + kept.out + ": ");
   ASSERT_NE(at, std::string::npos) << o.out;
-  EXPECT_GE(std::stoi(o.out.substr(at + kept.out.size() + 11)), 2 * 2 * 5) << o.out;
+  const int compared = std::stoi(o.out.substr(at + kept.out.size() + 11));
+  EXPECT_GE(compared, 2 * 2 * 5) << o.out;
+  // Two shards compare, between them, each value once.
+  int in_shards = 0;
+  for (const char* shard : {"1/2", "2/2"}) {
+    const Outcome part = kept.check(std::string("--shard ") + shard);
+    EXPECT_EQ(part.exit_code, 0) << part.out;
+    const std::size_t from = part.out.find("baseline " + kept.out + ": ");
+    ASSERT_NE(from, std::string::npos) << part.out;
+    in_shards += std::stoi(part.out.substr(from + kept.out.size() + 11));
+  }
+  EXPECT_EQ(in_shards, compared);
 }
 
 TEST(CheckBaseline, ABaselineTwiceAsGoodFailsNamingBothValuesAndTheRatio) {
@@ -145,6 +156,9 @@ TEST(CheckBaseline, ABaselineThatIsNotResultsIsBadInputAndNothingIsWritten) {
   EXPECT_NE(missing.out.find(kept.dir + "/nowhere: no such folder"), std::string::npos)
       << missing.out;
   EXPECT_FALSE(fs::exists(junit));
+  const Outcome empty = beachball("check " + kept.case_file + " --baseline ''");
+  EXPECT_EQ(empty.exit_code, 2) << empty.out;
+  EXPECT_NE(empty.out.find("--baseline: is empty"), std::string::npos) << empty.out;
   // A case with no results in the folder is said, and not a failure.
   fs::remove(kept.json_file());
   const Outcome none = kept.check();
