@@ -77,7 +77,7 @@ std::string manifest_text(const ShardManifest& m) {
   return out;
 }
 
-ShardManifest read_manifest(const std::string& dir) {
+ShardManifest read_shard_manifest(const std::string& dir) {
   const std::string path = dir + "/" + kShardManifest;
   std::ifstream in(path);
   if (!in)
@@ -204,7 +204,7 @@ int merge_command(const std::vector<std::string>& shards, const std::vector<std:
   std::vector<ShardManifest> manifests;
   std::map<int, std::string> folders;
   for (const std::string& dir : shards) {
-    ShardManifest m = read_manifest(dir);
+    ShardManifest m = read_shard_manifest(dir);
     const ShardManifest& first = manifests.empty() ? m : manifests.front();
     if (m.shard.count != first.shard.count)
       throw CaseError(

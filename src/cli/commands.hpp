@@ -59,7 +59,9 @@ int shard_command(const std::vector<std::string>& paths, const std::string& out,
 /// (CaseError) shards of other cases, another build or command, or an incomplete set.
 int merge_command(const std::vector<std::string>& shards, const std::vector<std::string>& paths,
                   const std::string& out, const RunOptions& options);
+/// `check`: the gates, and with `baseline` (a folder of <case>.json) each value compared
+/// with its kept one; exit 1 when a gate fails or a value got worse.
 int check_command(const std::vector<std::string>& paths, const std::string& junit,
-                  const RunOptions& options);
+                  const std::string& baseline, const RunOptions& options);
 
 }  // namespace bb::cli

@@ -19,7 +19,7 @@ namespace {
 /// What the command line says: the values of every option, filled in by CLI11.
 struct Values {
   std::vector<std::string> cases;
-  std::string out, backends, dts, junit;
+  std::string out, backends, dts, junit, baseline;
   int default_jobs = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
   int jobs = default_jobs;
   bool no_cost = false;
@@ -123,6 +123,9 @@ Commands declare_commands(CLI::App& app, Values& v) {
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
   check->add_option("--junit", v.junit, "also write the gate results as JUnit XML");
+  check->add_option("--baseline", v.baseline,
+                    "also compare every error and observable with the results kept in this "
+                    "folder (<case>.json of a `run` or a report); exit 1 where one got worse");
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
   add_cache_options(check);
@@ -153,6 +156,9 @@ bb::RunOptions run_options(const CLI::App& app, Values& v) {
   options.isolation = !v.no_isolation;
   options.timeout = v.timeout;
   if (given("--shard")) options.shard = bb::cli::parse_shard(v.shard);
+  if (given("--baseline") && v.baseline.empty())
+    throw bb::CaseError("--baseline", 0,
+                        "is empty; give the folder of <case>.json to compare with");
   return options;
 }
 
@@ -167,7 +173,7 @@ int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) 
   if (*c.report) return bb::cli::report_command(v.cases, v.out, options);
   if (*c.merge) return bb::cli::merge_command(v.shards, v.cases, v.out, options);
   if (*c.stability) return bb::cli::stability_command(v.cases, v.out, options);
-  if (*c.check) return bb::cli::check_command(v.cases, v.junit, options);
+  if (*c.check) return bb::cli::check_command(v.cases, v.junit, v.baseline, options);
   return bb::cli::kExitBadInput;
 }
 

@@ -288,22 +288,27 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   return out;
 }
 
-CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOptions& base) {
+CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOptions& base,
+                      const RunSelection& also) {
   RunOptions options = base;
   options.backends.clear();
-  for (const Gate& g : scene.gates) {
-    auto& names = options.backends;
-    if (std::find(names.begin(), names.end(), g.backend) == names.end()) names.push_back(g.backend);
-  }
-  options.dts = {scene.report_dt};
+  auto& names = options.backends;
+  for (const Gate& g : scene.gates) names.push_back(g.backend);
+  names.insert(names.end(), also.backends.begin(), also.backends.end());
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  options.dts = also.dts;
+  if (!scene.gates.empty() || also.dts.empty()) options.dts.push_back(scene.report_dt);
   options.cost = false;
   options.sweep = false;
   if (options.backends.empty()) options.backends.push_back("reference");
   CaseResults results = run_case(scene, registry, options);
   // Without a reference, errors are against the finest dt: run it too.
   const double finest = *std::min_element(scene.dt.begin(), scene.dt.end());
-  if (results.reference_run.status != RunStatus::Ok && finest != scene.report_dt) {
-    options.dts = {scene.report_dt, finest};
+  const bool has_finest =
+      std::find(options.dts.begin(), options.dts.end(), finest) != options.dts.end();
+  if (results.reference_run.status != RunStatus::Ok && !has_finest) {
+    options.dts.push_back(finest);
     results = run_case(scene, registry, options);
   }
   return results;

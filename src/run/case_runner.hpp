@@ -57,8 +57,16 @@ void check_run_options(const Scene& scene, const RunOptions& options);
 /// Throws CaseError when an option names a backend or dt the case does not have.
 CaseResults run_case(const Scene& scene, const Registry& registry, const RunOptions& options);
 
-/// Runs only what the case's gates need (report_dt, gated backends, no cost) and checks
-/// them; `base` gives jobs, isolation and timeout.
-CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOptions& base);
+/// Backends and steps a check runs besides its gates' (a baseline's rows).
+struct RunSelection {
+  std::vector<std::string> backends;
+  std::vector<double> dts;
+};
+
+/// Runs only what the case's gates need (report_dt, gated backends, no cost) and what `also`
+/// names (each of its backends at each of its steps), and checks the gates; `base` gives
+/// jobs, isolation and timeout.
+CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOptions& base,
+                      const RunSelection& also = {});
 
 }  // namespace bb

@@ -106,6 +106,24 @@ struct GateResult {
   std::string note;  ///< why it failed without a value
 };
 
+/// How a value of `check --baseline` compares with the baseline's (run/baseline.hpp).
+enum class Change {
+  Worse,             ///< grew past the tolerance, or a status that left ok: fails
+  Better,            ///< shrank past the tolerance, or a status that became ok
+  Unchanged,         ///< within the tolerance
+  NotCompared,       ///< present on one side only (a row, a value, a status change): named
+  NothingToCompare,  ///< neither side has a value (no reference value, diverged in both)
+};
+
+struct BaselineComparison {
+  std::string backend;
+  std::optional<double> dt;  ///< nullopt for the reference's row
+  std::string metric;        ///< an error metric, an observable, or "status"
+  Change change = Change::Unchanged;
+  std::optional<double> before, now;  ///< a metric's values in the baseline and now
+  std::string note;  ///< a status change ("ok -> diverged: why"), or why not compared
+};
+
 /// A stretch of steps with one verdict, between the smallest and largest step tried in it.
 struct StabilityBand {
   double from = 0.0, to = 0.0;  ///< seconds
@@ -176,6 +194,8 @@ struct CaseResults {
   /// Per backend: the error at or above which its position_max has saturated (m).
   std::map<std::string, double> order_saturation;
   std::vector<GateResult> gates;
+  /// Against the baseline's kept results, when `check --baseline` ran: empty otherwise.
+  std::vector<BaselineComparison> baseline;
   /// Each [[claim]] of the case with every backend's verdict, judged once after the runs.
   std::vector<ClaimResult> claims;
   std::vector<StabilityResult> stability;  ///< empty unless a stability search ran

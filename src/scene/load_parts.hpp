@@ -56,6 +56,7 @@ void read_gates(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue
 void read_claims(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue);
 void read_sweep(TomlReader& root, Scene& scene);
 void read_report_and_stability(TomlReader& root, Scene& scene);
+void read_baseline(TomlReader& root, Scene& scene);
 
 /// The error metrics and the names of the case's observables, made once the [[observe]]
 /// tables are read: a lookup costs the same however many a case has.

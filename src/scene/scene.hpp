@@ -298,6 +298,14 @@ struct StabilityOptions {
   double dt_max = 0.0;  ///< seconds; 0: a sixteenth of the duration (16 steps a run)
 };
 
+/// How `check --baseline` compares a run with its kept results ([baseline], optional): a
+/// value is worse when it grew past both the baseline times (1 + tolerance) and the
+/// baseline plus floor (docs/ci.md says why these defaults).
+struct BaselineOptions {
+  double tolerance = 1e-3;  ///< relative
+  double floor = 1e-9;      ///< absolute, in the metric's own unit
+};
+
 /// What is simulated: the bodies and everything that acts on them. A backend sees only this
 /// and its own settings (BackendSettings in backend.hpp), never how the case is examined.
 struct World {
@@ -345,6 +353,7 @@ struct Study {
   std::optional<Sweep> sweep;
   ReportOptions report;
   StabilityOptions stability;
+  BaselineOptions baseline;
 
   /// Number of samples after t = 0 (duration / sample).
   int sample_count() const;

@@ -1,6 +1,8 @@
-// The CI matrix example (docs/examples/github-actions-shards.yml) is a copy-paste workflow:
-// every beachball command it runs names a subcommand and options the program takes, each
-// matrix runs --shard I/N with N its own length, and the merge takes every shard, once.
+// The CI matrix examples are copy-paste workflows: every beachball command they run names a
+// subcommand and options the program takes, and each matrix runs --shard I/N with N its own
+// length. In docs/examples/github-actions-shards.yml the merge takes every shard, once; in
+// docs/examples/ci/physics-baseline.yml (a user's repository) each shard checks the cases
+// against the committed baseline and writes its JUnit file.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -58,6 +60,39 @@ TEST(CiExample, EveryCommandIsOneTheProgramTakesAndTheShardsAreOneSet) {
   EXPECT_EQ(commands, 3);
   EXPECT_EQ(matrices, 2);
   EXPECT_EQ(merged, (std::set<std::string>{"shard-1", "shard-2", "shard-3", "shard-4"}));
+}
+
+TEST(CiExample, TheBaselineWorkflowChecksEveryShardAgainstTheBaseline) {
+  const std::string workflow =
+      test::bytes(test::source_path("docs/examples/ci/physics-baseline.yml"));
+  ASSERT_FALSE(workflow.empty());
+  std::istringstream lines(workflow);
+  std::vector<std::vector<std::string>> commands;
+  for (std::string line; std::getline(lines, line);)
+    if (std::vector<std::string> words = beachball_words(line); !words.empty())
+      commands.push_back(words);
+  ASSERT_EQ(commands.size(), 1u);
+  const std::vector<std::string>& words = commands[0];
+  EXPECT_NE(workflow.find("shard: [1, 2]"), std::string::npos);
+  ASSERT_EQ(words[0], "check");
+  const test::Outcome help = test::beachball("check --help");
+  ASSERT_EQ(help.exit_code, 0) << help.out;
+  std::set<std::string> options;
+  for (std::size_t k = 1; k < words.size(); ++k) {
+    if (!words[k].starts_with("--")) continue;
+    options.insert(words[k]);
+    EXPECT_NE(help.out.find(words[k] + " "), std::string::npos) << words[k] << "\n" << help.out;
+    ASSERT_LT(k + 1, words.size());
+    if (words[k] == "--shard") {
+      EXPECT_EQ(words[k + 1], "I/2");
+    }
+    // The JUnit files the matrix writes are the ones it publishes.
+    if (words[k] == "--junit") {
+      EXPECT_EQ(words[k + 1], "physics-I.xml");
+    }
+  }
+  EXPECT_EQ(options, (std::set<std::string>{"--baseline", "--shard", "--junit"}));
+  EXPECT_NE(workflow.find("report_paths: physics-*.xml"), std::string::npos);
 }
 
 }  // namespace

@@ -30,5 +30,33 @@ TEST(JunitWriter, CountsEachCasesGatesAndSaysWhyOneFailed) {
   EXPECT_NE(xml.find("name=\"course/rk4 position_max\"/>"), std::string::npos) << xml;
 }
 
+TEST(JunitWriter, ATestCasePerBackendAndMetricComparedFailedWhereADtGotWorse) {
+  Scene scene;
+  scene.name = "drop";
+  CaseResults results;
+  results.scene = &scene;
+  const auto compared = [](double dt, Change change, double before, double now) {
+    return BaselineComparison{"course/rk4", dt, "position_max", change, before, now, ""};
+  };
+  results.baseline = {compared(1.0 / 60, Change::Worse, 0.0015, 0.003),
+                      compared(1.0 / 120, Change::Unchanged, 1e-4, 1e-4),
+                      {"ode", 0.01, "energy_max", Change::Unchanged, 0.2, 0.2, ""},
+                      {"bullet", 0.01, "", Change::NotCompared, {}, {}, "not in the baseline"},
+                      {"box2d", 0.01, "x/ball", Change::NothingToCompare, {}, {}, "none"}};
+  const std::string xml = junit_xml({results});
+  // Three test cases: the worse one, the unchanged one and the one named; none for nothing.
+  EXPECT_NE(xml.find("<testsuite name=\"drop\" tests=\"3\" failures=\"1\" skipped=\"1\">"),
+            std::string::npos)
+      << xml;
+  EXPECT_NE(xml.find("name=\"baseline course/rk4 position_max\">\n      <failure message=\"worse: "
+                     "course/rk4 dt 1/60 position_max: 0.0015 -&gt; 0.003 (x2)\"/>"),
+            std::string::npos)
+      << xml;
+  EXPECT_NE(xml.find("name=\"baseline ode energy_max\"/>"), std::string::npos) << xml;
+  EXPECT_NE(xml.find("<skipped message=\"not compared: bullet dt 1/100: not in the baseline\"/>"),
+            std::string::npos)
+      << xml;
+}
+
 }  // namespace
 }  // namespace bb
