@@ -39,9 +39,10 @@ void check_before_work(const std::vector<Scene>& scenes, const RunOptions& optio
 
 int list_command(const std::vector<std::string>& paths);
 /// `run`; with `all_runs_first` (a merge), every case's results are had before any case's
-/// files are written.
+/// files are written; with `trajectories`, every run's state at every step too, into
+/// <out>/<case>-trajectories/ (docs/output-files.md#trajectories).
 int run_command(const std::vector<std::string>& paths, const std::string& out,
-                const RunOptions& options, bool all_runs_first = false);
+                const RunOptions& options, bool all_runs_first = false, bool trajectories = false);
 int report_command(const std::vector<std::string>& paths, const std::string& out,
                    const RunOptions& options);
 int stability_command(const std::vector<std::string>& paths, const std::string& out,

@@ -32,6 +32,7 @@ struct Values {
   std::string cache =
       std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE") : bb::default_cache_folder();
   bool fresh = false;
+  bool trajectories = false;  ///< run: every run's state at every step, as CSV files
 };
 
 /// The subcommands, once declared.
@@ -83,9 +84,14 @@ Commands declare_commands(CLI::App& app, Values& v) {
     command->add_flag("--fresh", v.fresh, "run everything again (new results are still kept)");
   };
   add_cache_options(run);
-  run->add_option("--shard", v.shard,
-                  "I/N: run only share I of N of the work and keep its results in --out, for "
-                  "`merge` (no case files)");
+  auto* run_shard =
+      run->add_option("--shard", v.shard,
+                      "I/N: run only share I of N of the work and keep its results in --out, "
+                      "for `merge` (no case files)");
+  run->add_flag("--trajectories", v.trajectories,
+                "also write every run's state at every step (and the reference's at its "
+                "samples) into <out>/<case>-trajectories/, one CSV file per run")
+      ->excludes(run_shard);
 
   auto* report = app.add_subcommand("report", "run the suite and write the report pages");
   report->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
@@ -167,7 +173,7 @@ int dispatch(const Commands& c, const Values& v, const bb::RunOptions& options) 
   if (*c.list) return bb::cli::list_command(v.cases);
   if (*c.run && options.shard)
     return bb::cli::shard_command(v.cases, v.out, options, bb::cli::ShardOf::run);
-  if (*c.run) return bb::cli::run_command(v.cases, v.out, options);
+  if (*c.run) return bb::cli::run_command(v.cases, v.out, options, false, v.trajectories);
   if (*c.report && options.shard)
     return bb::cli::shard_command(v.cases, v.out, options, bb::cli::ShardOf::report);
   if (*c.report) return bb::cli::report_command(v.cases, v.out, options);

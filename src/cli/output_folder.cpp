@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "files/atomic_file.hpp"
 #include "files/folder_manifest.hpp"
+#include "run/trajectory_names.hpp"
 #include "scene/case_error.hpp"
 
 namespace bb::cli {
@@ -104,8 +105,11 @@ std::string first_foreign_entry(const std::string& folder) {
     if (bookkeeping(entry)) continue;
     const std::string name = entry.path().filename().string();
     std::error_code kind_error;
-    if (!ours.count(name) || entry.is_symlink(kind_error) || !entry.is_regular_file(kind_error))
-      foreign.insert(name);
+    // A folder beachball wrote whole (a case's trajectories) is its own too.
+    const bool own_kind =
+        !entry.is_symlink(kind_error) &&
+        (entry.is_regular_file(kind_error) || holds_only_recorded_files(entry.path().string()));
+    if (!ours.count(name) || !own_kind) foreign.insert(name);
   }
   return foreign.empty() ? "" : *foreign.begin();
 }
@@ -190,11 +194,29 @@ void check_outputs_are_ours(const std::string& folder, const std::vector<std::st
   }
 }
 
+void check_trajectories_are_ours(const std::string& folder, const std::string& name, bool writing) {
+  const std::string own = trajectory_folder_name(name);
+  const std::string path = folder + "/" + own;
+  struct stat st {};
+  if (lstat(path.c_str(), &st) != 0) return;
+  const bool recorded = read_manifest(folder).count(own) > 0;
+  if (!recorded && !writing) return;
+  std::string foreign;
+  if (recorded && holds_only_recorded_files(path, &foreign)) return;
+  const std::string what = foreign.empty() ? path : path + "/" + foreign;
+  const std::string record = (foreign.empty() ? folder : path) + "/" + kManifestName;
+  throw CaseError(what, 0,
+                  "exists and beachball did not write it (it is not in " + record +
+                      "); beachball replaces only its own files: move it away or choose "
+                      "another --out");
+}
+
 std::vector<std::string> recorded_case_files(const std::string& folder, const std::string& name) {
   std::vector<std::string> out;
   for (const std::string& file : read_manifest(folder))
     if (file == name + ".json" || file == name + ".csv" || file == name + ".md" ||
-        (file.rfind(name + "-", 0) == 0 && file.ends_with(".svg")))
+        (file.rfind(name + "-", 0) == 0 && file.ends_with(".svg")) ||
+        file == trajectory_folder_name(name))
       out.push_back(file);
   return out;
 }

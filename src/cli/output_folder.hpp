@@ -50,8 +50,17 @@ class OutputFolder {
 /// plain file beachball wrote there (its record lists it).
 void check_outputs_are_ours(const std::string& folder, const std::vector<std::string>& names);
 
+/// Throws CaseError before any work when the trajectories folder of case `name`
+/// (trajectory_names.hpp) exists in `folder` and `run` would replace or remove it without
+/// having written all of it: when `writing` (--trajectories) or when the record lists it (a
+/// run drops its case's earlier set), it must be a folder the record lists, holding only the
+/// files its own record lists. A folder of that name the record does not list is left alone
+/// by a run that does not write one.
+void check_trajectories_are_ours(const std::string& folder, const std::string& name, bool writing);
+
 /// The files of `folder` that an earlier output of case `name` wrote and its record lists:
-/// <name>.json, .csv, .md and its plots <name>-*.svg (for `run`, which replaces a case's set).
+/// <name>.json, .csv, .md, its plots <name>-*.svg and its trajectories folder (for `run`,
+/// which replaces a case's set).
 std::vector<std::string> recorded_case_files(const std::string& folder, const std::string& name);
 
 /// A report replaces its whole folder. When the folder can be renamed, the new report is

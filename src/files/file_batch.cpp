@@ -31,6 +31,15 @@ bool plain_file(const std::string& path) {
   return lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
+/// What stops beachball moving `path`, a name its record lists, aside: "" for a plain file
+/// or a folder holding only what its own record lists; else the entry it did not write
+/// (`path` itself, or a file in it).
+std::string not_movable(const std::string& path) {
+  std::string foreign;
+  if (plain_file(path) || holds_only_recorded_files(path, &foreign)) return "";
+  return foreign.empty() ? path : path + "/" + foreign;
+}
+
 void check_name(const std::string& name) {
   if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos)
     throw WriteError(name, "not a file name");
@@ -98,6 +107,15 @@ void FileBatch::write(const std::string& name, const std::string& text) {
   write_whole_file(path_for(name), text);
 }
 
+std::string FileBatch::folder_for(const std::string& name) {
+  const std::string path = path_for(name);
+  if (!folders_.count(name)) {
+    if (mkdir(path.c_str(), 0777) != 0) throw WriteError(path, os_reason());
+    folders_.insert(name);
+  }
+  return path;
+}
+
 std::string FileBatch::work_folder(const std::string& name) {
   check_name(name);
   const std::string path = staging_.path() + "/work/" + name;
@@ -127,6 +145,16 @@ void FileBatch::commit() {
       steps.push_back({false, name});
       after.erase(name);
     }
+  // A folder put whole lists what it holds in a record of its own.
+  for (const std::string& name : folders_) {
+    const std::string path = staging_.path() + "/new/" + name;
+    std::set<std::string> files;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(path, ec))
+      files.insert(entry.path().filename().string());
+    if (ec) throw WriteError(path, ec.message());
+    write_whole_file(path + "/" + kManifestName, manifest_text(files));
+  }
   // The record goes last: until it is in place, the old one still describes the folder.
   write_whole_file(staging_.path() + "/new/" + kManifestName, manifest_text(after));
   steps.push_back({true, kManifestName});
@@ -137,9 +165,11 @@ void FileBatch::commit() {
     const std::string target = folder_ + "/" + s.name;
     if (!exists_here(target)) continue;
     const bool ours = s.name == kManifestName || before.count(s.name);
-    if (!ours || !plain_file(target))
-      throw WriteError(target, "it is not a file beachball wrote (it is not in " + folder_ + "/" +
-                                   kManifestName + "); move it away or choose another folder");
+    const std::string foreign = ours ? not_movable(target) : target;
+    if (!foreign.empty())
+      throw WriteError(foreign, "it is not a file beachball wrote (it is not in " +
+                                    fs::path(foreign).parent_path().string() + "/" + kManifestName +
+                                    "); move it away or choose another folder");
   }
 
   // The journal makes the switch decided: from here a killed process's switch is finished

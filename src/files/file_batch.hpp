@@ -30,6 +30,11 @@ class FileBatch {
   std::string path_for(const std::string& name);
   /// Writes `text` as `name`.
   void write(const std::string& name, const std::string& text);
+  /// The temporary path of a new, empty folder `name`, for files written into it now (by
+  /// other processes too); at commit() it becomes folder/name whole, replacing an earlier
+  /// one only where that holds nothing but what its own record lists, and gets a record of
+  /// its own listing every file then in it.
+  std::string folder_for(const std::string& name);
   /// A new, empty working folder (for a plot's script and data), gone with the batch.
   std::string work_folder(const std::string& name);
   /// At commit, `name` leaves the folder: a file of an earlier output that this one does
@@ -51,6 +56,7 @@ class FileBatch {
   std::string folder_;
   OwnedTemporary staging_;
   std::vector<std::string> puts_;
+  std::set<std::string> folders_;  ///< the puts that are folders
   std::set<std::string> drops_;
   std::set<std::string> also_recorded_;
 };

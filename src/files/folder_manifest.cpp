@@ -34,6 +34,24 @@ std::string manifest_text(const std::set<std::string>& names) {
   return text;
 }
 
+bool holds_only_recorded_files(const std::string& folder, std::string* foreign) {
+  if (foreign) foreign->clear();
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(folder, ec)) || !has_manifest(folder)) return false;
+  const std::set<std::string> listed = read_manifest(folder);
+  std::set<std::string> unlisted;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == kManifestName) continue;
+    std::error_code kind_error;
+    if (!listed.count(name) || !fs::is_regular_file(entry.symlink_status(kind_error)))
+      unlisted.insert(name);
+  }
+  if (ec) return false;
+  if (foreign && !unlisted.empty()) *foreign = *unlisted.begin();
+  return unlisted.empty();
+}
+
 bool earlier_report(const std::string& folder) {
   std::ifstream readme(folder + "/README.md");
   std::string first;

@@ -20,6 +20,12 @@ bool has_manifest(const std::string& folder);
 /// The record's text for `names`.
 std::string manifest_text(const std::set<std::string>& names);
 
+/// Whether `folder` is a folder beachball wrote whole (a case's trajectories): a real folder
+/// (not a link) with a record, holding nothing but the record and plain files it lists.
+/// Otherwise, with `foreign`, the name of the first entry it does not list ("" when the
+/// folder itself is not one).
+bool holds_only_recorded_files(const std::string& folder, std::string* foreign = nullptr);
+
 /// Whether `folder` holds a report written before beachball kept records: its README.md
 /// starts with the report's heading and every other entry is a plain file of a kind a
 /// report writes (.md, .json, .csv, .svg).

@@ -14,6 +14,8 @@
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
 #include "run/run_summary.hpp"
+#include "run/trajectory_names.hpp"
+#include "run/trajectory_writer.hpp"
 #include "run/wire.hpp"
 #include "scene/text.hpp"
 
@@ -111,12 +113,19 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
   using Finish = std::function<void(RunRecord&)>;
   // A backend's job (not the reference) also judges the stability trial at its dt, if the
   // stability search begins there. A run with a key is kept between invocations; with
-  // `look_up` it is taken from the kept ones when there.
+  // `look_up` it is taken from the kept ones when there. A run that `writes_steps` (with
+  // --trajectories) writes them from its child into its file, and so always runs.
   const auto submit = [&](const Backend& b, double dt, RunRecord& slot,
                           std::optional<double> shown_dt, Finish finish, std::function<void()> then,
-                          const std::string& key, bool look_up) {
+                          const std::string& key, bool look_up, bool writes_steps) {
     const std::string what = label(b.name(), shown_dt);
     const bool judge = shown_dt.has_value();
+    const std::string steps_file =
+        writes_steps && !options.trajectories.empty()
+            ? options.trajectories + "/" + trajectory_file_name(b.name(), shown_dt)
+            : "";
+    if (!steps_file.empty() && look_up && options.cache) options.cache->count_run();
+    if (!steps_file.empty()) look_up = false;
     if (const auto kept = look_up && options.cache ? options.cache->find(key) : std::nullopt) {
       slot = wire::decode_run(*kept);
       slot.reused = true;
@@ -126,14 +135,21 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
     }
     pool.submit(
         what,
-        [&b, &scene, dt, finish, judge] {
-          RunRecord run = run_accuracy(b, scene, dt, judge);
+        [&b, &scene, dt, finish, judge, steps_file] {
+          std::optional<TrajectoryWriter> steps;
+          if (!steps_file.empty()) steps.emplace(steps_file, scene);
+          RunRecord run = run_accuracy(b, scene, dt, judge, steps ? &*steps : nullptr);
+          if (steps) run.trajectory_problem = steps->close();
           if (finish) finish(run);
           return wire::encode(run);
         },
         time_limit(scene, dt, options.timeout),
-        [&slot, &b, shown_dt, what, &progress, then, key, &options](const ChildOutcome& o) {
+        [&slot, &b, shown_dt, what, &progress, then, key, &options,
+         steps_file](const ChildOutcome& o) {
           slot = record_from(o, b.name(), shown_dt);
+          // A trajectory that could not be written stops the command, as any output does.
+          if (!slot.trajectory_problem.empty())
+            throw WriteError(steps_file, slot.trajectory_problem);
           if (!key.empty())
             options.cache->keep(key, wire::encode(slot), RunCache::repeatable(slot));
           progress(what);
@@ -146,7 +162,7 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
   const auto job = [&](std::size_t i, Finish finish, std::function<void()> then,
                        const std::string& key, bool look_up) {
     submit(*jobs[i].backend, jobs[i].dt, out.runs[i], jobs[i].dt, std::move(finish),
-           std::move(then), key, look_up);
+           std::move(then), key, look_up, true);
   };
   // A backend's jobs are adjacent, largest dt first: its last is its finest.
   const auto finest_job = [&](std::size_t i) {
@@ -189,7 +205,12 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
               options.cache ? options.cache->peek(family_keys(true).front()) : std::nullopt;
           const std::vector<std::string> keys =
               family_keys(!kept_finest || measures_the_others(wire::decode_run(*kept_finest)));
-          if (const auto kept = options.cache ? options.cache->find_all(keys) : std::nullopt) {
+          // Runs that write their steps run again, all of them.
+          const bool kept_runs_do = options.trajectories.empty();
+          if (!kept_runs_do && options.cache)
+            options.cache->count_run(static_cast<int>(keys.size()));
+          if (const auto kept =
+                  kept_runs_do && options.cache ? options.cache->find_all(keys) : std::nullopt) {
             for (std::size_t k = 0; k < family.size(); ++k) {
               out.runs[family[k]] = wire::decode_run((*kept)[k]);
               out.runs[family[k]].reused = true;
@@ -222,9 +243,9 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
               keys.front(), false);
         }
       },
-      reference_key, true);
+      reference_key, true, true);
   submit(tighter, scene.sample, out.tight, std::nullopt, nullptr, nullptr,
-         key_of(tighter, std::nullopt, "self-check"), true);
+         key_of(tighter, std::nullopt, "self-check"), true, false);
   pool.run();
   out.reference.dt.reset();
   out.tight.dt.reset();

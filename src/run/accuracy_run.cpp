@@ -7,6 +7,7 @@
 #include "run/divergence.hpp"
 #include "run/engine_interventions.hpp"
 #include "run/stability_watch.hpp"
+#include "run/trajectory_writer.hpp"
 
 namespace bb {
 
@@ -19,8 +20,8 @@ std::string missing_features(const Backend& backend, const Scene& scene) {
   return out;
 }
 
-RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
-                       bool judge_stability) {
+RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt, bool judge_stability,
+                       TrajectoryWriter* steps) {
   RunRecord record;
   record.backend = backend.name();
   record.dt = dt;
@@ -49,15 +50,18 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
             static_cast<long>(per_sample) * static_cast<long>(samples))
       watch.emplace(scene, dt, state, StabilityWatch::trial_steps(scene, dt));
     observer.write_turns(state);
+    if (steps) steps->write(0.0, state);
     record.trajectory.times.push_back(0.0);
     record.trajectory.states.push_back(state);
     for (int j = 1; j <= samples; ++j) {
       for (int k = 1; k <= per_sample; ++k) {
         sim->step();
-        if (!observer.active() && !watch) continue;
+        if (!observer.active() && !watch && !steps) continue;
         sim->read(state);
         if (watch) watch->observe(record.steps + k, state);
-        if (observer.active()) observer.observe(static_cast<double>(record.steps + k) * dt, state);
+        const double t_step = static_cast<double>(record.steps + k) * dt;
+        if (observer.active()) observer.observe(t_step, state);
+        if (steps) steps->write(t_step, state);
       }
       record.steps += per_sample;
       sim->read(state);
@@ -66,6 +70,8 @@ RunRecord run_accuracy(const Backend& backend, const Scene& scene, double dt,
       const double t = static_cast<double>(record.steps) * dt;
       record.trajectory.times.push_back(t);
       record.trajectory.states.push_back(state);
+      // A crash from here on keeps the rows up to this sample.
+      if (steps) steps->flush();
       // An engine that threw its state away has diverged, when it did (its own warning).
       if (const auto reset =
               intervention_of(sim->interventions(), EngineIntervention::Kind::Reset)) {

@@ -31,6 +31,10 @@ struct RunOptions {
   RunCache* cache = nullptr;
   /// This invocation's share of the work (shard.hpp); none: all of it.
   std::optional<Shard> shard;
+  /// A folder that the reference and every accuracy run write their state at every step
+  /// into, one file each (run --trajectories, trajectory_names.hpp); those runs are never
+  /// taken from kept results, which hold no steps. "": none written.
+  std::string trajectories;
   /// Called after each piece of work with what was done, e.g. "bullet 1/60"; may be called
   /// from several threads at once, never concurrently.
   std::function<void(const std::string&)> on_progress;

@@ -84,6 +84,9 @@ struct RunRecord {
   /// Taken from kept results, not run by this invocation (where the time went counts only
   /// runs that ran); never written to the results or the wire.
   bool reused = false;
+  /// Why its trajectory file (run --trajectories) could not be written, from its child;
+  /// "" when it was, or none was asked. Never written to the results.
+  std::string trajectory_problem;
 };
 
 struct ReferenceInfo {

@@ -71,6 +71,9 @@ class RunCache {
   /// A digest of the whole build (build_identity.hpp): which build made the kept results.
   std::string build() const;
 
+  /// Counts a run that was not looked for, as run: one that must run to write its steps.
+  void count_run(int runs = 1) { ran_ += runs; }
+
   int reused() const { return reused_; }
   int ran() const { return ran_; }
   /// Removes the entries used longest ago beyond kCacheLimitBytes.

@@ -194,6 +194,7 @@ std::string encode(const RunRecord& run) {
   w.text(run.messages);
   w.raw<char>(run.stability_trial.has_value());
   if (const auto& t = run.stability_trial) w.text(encode(*t));
+  w.text(run.trajectory_problem);
   return w.take();
 }
 
@@ -250,6 +251,7 @@ RunRecord decode_run(const std::string& bytes) {
   run.summarised = r.raw<char>() != 0;
   run.messages = r.text();
   if (r.raw<char>()) run.stability_trial = decode_trial(r.text());
+  run.trajectory_problem = r.text();
   return run;
 }
 

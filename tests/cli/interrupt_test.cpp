@@ -62,6 +62,41 @@ TEST(Interrupt, SigtermDuringReportLeavesThePreviousReportUntouched) {
   EXPECT_EQ(files, 2);
 }
 
+/// Whether a trajectory file is being written in `out`: a .csv in a batch's staging folder.
+bool writing_trajectories(const std::string& out) {
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(out, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+    if (it->path().extension() == ".csv" &&
+        it->path().string().find("/.beachball-staging-") != std::string::npos)
+      return true;
+  return false;
+}
+
+TEST(Interrupt, SigtermWhileRunsWriteTrajectoriesLeavesNoneAndTheEarlierSetUntouched) {
+  const std::string dir = test::fresh_dir("interrupted_trajectories");
+  const std::string out = dir + "/out";
+  // An earlier set of the case, its trajectories included, from a short version of it.
+  const std::string quick =
+      test::write_case(dir + "/quick", "slow.toml", test::minimal_case("slow"));
+  const test::Outcome first = test::beachball(
+      "run " + quick + " --no-cost --backends course/explicit-euler --trajectories --out " + out);
+  ASSERT_EQ(first.exit_code, 0) << first.out;
+  const auto before = test::snapshot(out);
+  // The slow version: its runs write for minutes; stopped once their files are under way.
+  const std::string slow = test::write_case(dir, "slow.toml", test::slow_case("slow"));
+  const pid_t pid = test::start_beachball({"run", slow, "--no-cost", "--backends",
+                                           "course/explicit-euler", "--trajectories", "--out", out},
+                                          dir + "/slow.log");
+  int status = 0;
+  while (!writing_trajectories(out) && waitpid(pid, &status, WNOHANG) == 0) usleep(1000);
+  ASSERT_TRUE(writing_trajectories(out)) << test::file_bytes(dir + "/slow.log");
+  kill(pid, SIGTERM);
+  EXPECT_EQ(test::wait_for(pid), 128 + SIGTERM) << test::file_bytes(dir + "/slow.log");
+  EXPECT_EQ(test::snapshot(out), before) << "a trajectory file, or a change to the earlier set";
+  EXPECT_EQ(test::temporaries_in(out), "");
+}
+
 TEST(Interrupt, ASecondWriterOfTheSameFolderIsRefused) {
   const std::string out = ::testing::TempDir() + "/locked_report";
   fs::create_directories(out);

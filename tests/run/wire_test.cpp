@@ -35,6 +35,7 @@ TEST(Wire, ARunRecordComesBackWhole) {
   run.trajectory.events.bodies[0].turns[1] = {{0.5, -1.0, true}, {0.75, 1.0, false}};
   run.trajectory.events.bodies[0].hinge_crossings = {0.25, 1.5};
   run.trajectory.events.bodies[1].unresolved_contact = UnresolvedContact{0, 0.5, 2.0, 0.03};
+  run.trajectory_problem = "No space left on device";
 
   const RunRecord back = wire::decode_run(wire::encode(run));
   EXPECT_EQ(back.backend, run.backend);
@@ -81,6 +82,8 @@ TEST(Wire, ARunRecordComesBackWhole) {
   ASSERT_TRUE(pushed);
   EXPECT_EQ(pushed->other, 0);
   EXPECT_EQ(pushed->approach_least, 0.03);
+  // Why its trajectory file could not be written, from the child that wrote it.
+  EXPECT_EQ(back.trajectory_problem, run.trajectory_problem);
 }
 
 TEST(Wire, StatesOfAFewBodiesComeBack) {
