@@ -1,4 +1,5 @@
-// beachball: compare the course text's methods with Bullet, Box2D and ODE on the same scenes.
+// beachball: compare the course text's methods with Bullet, Box2D, ODE and MuJoCo on the same
+// scenes.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -200,7 +201,7 @@ int interrupted(const char* what) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "beachball: the course text's game-physics methods beside Bullet, Box2D and ODE, "
+      "beachball: the course text's game-physics methods beside Bullet, Box2D, ODE and MuJoCo, "
       "measured against a GSL reference"};
   Values values;
   const Commands commands = declare_commands(app, values);

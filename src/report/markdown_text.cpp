@@ -15,6 +15,10 @@ std::string markdown_text(const std::string& text) {
       case '|':
         out += "\\|";
         break;
+      // A '$' would open a math span on GitHub (and take the text's backslashes literally).
+      case '$':
+        out += "\\$";
+        break;
       case '<':
         out += "&lt;";
         break;

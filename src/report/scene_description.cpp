@@ -60,9 +60,13 @@ std::string boat_line(const Body& b) {
       out += fmt::format(", heeling by F_across / {:g} N/rad", s->heel_stiffness);
   }
   if (const std::optional<Hull>& h = b.hull)
-    out += fmt::format(
-        "; hull drag areas C A ahead {:g}, astern {:g}, across {} m^2", h->forward, h->backward,
-        h->no_drift ? std::string("infinite (no drift)") : fmt::format("{:g}", h->sideways));
+    out += h->no_drift
+               ? fmt::format(
+                     "; hull drag areas C A ahead {:g}, astern {:g} m^2, and no "
+                     "drift: the keel cancels every sideways force",
+                     h->forward, h->backward)
+               : fmt::format("; hull drag areas C A ahead {:g}, astern {:g}, across {:g} m^2",
+                             h->forward, h->backward, h->sideways);
   return out + "\n";
 }
 

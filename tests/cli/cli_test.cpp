@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "run/engine_catalogue.hpp"
 #include "support/engine_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -344,6 +346,22 @@ TEST(Cli, StabilityWritesTheStabilitySection) {
                       " --backends reference --out " + out)
                 .exit_code,
             2);
+}
+
+}  // namespace
+}  // namespace bb
+
+namespace bb {
+namespace {
+
+TEST(Cli, HelpNamesEveryEngineTheCatalogueDescribes) {
+  const test::Outcome o = test::beachball("--help");
+  ASSERT_EQ(o.exit_code, 0) << o.out;
+  std::string lower = o.out;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const EngineDescription& engine : engine_catalogue())
+    EXPECT_NE(lower.find(engine.engine), std::string::npos) << engine.engine << "\n" << o.out;
 }
 
 }  // namespace

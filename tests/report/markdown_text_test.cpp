@@ -22,6 +22,10 @@ TEST(MarkdownText, ABackslashCannotUnescapeTheNextPipe) {
   EXPECT_EQ(markdown_text("end\\"), "end\\\\");
 }
 
+TEST(MarkdownText, DollarsStartNoMath) {
+  EXPECT_EQ(markdown_text("set $\\epsilon$ to 0"), "set \\$\\\\epsilon\\$ to 0");
+}
+
 TEST(MarkdownText, EachLineBreakBecomesOneSpace) {
   EXPECT_EQ(markdown_text("one\ntwo\r\nthree\rfour\n\n"), "one two three four  ");
 }
