@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scene/text.hpp"
+#include "scene/vec3.hpp"
 
 namespace bb {
 
@@ -12,5 +13,7 @@ namespace bb {
 std::string format_value(std::optional<double> value);
 /// A cost in ns per step, "-" when absent.
 std::string format_ns(std::optional<double> ns);
+/// "(x, y)" in 2D, "(x, y, z)" in 3D, each in its shortest form ({:g}).
+std::string format_vector(const Vec3& v, int dims);
 
 }  // namespace bb

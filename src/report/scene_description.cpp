@@ -6,16 +6,12 @@
 #include <cmath>
 
 #include "report/format.hpp"
+#include "report/scene_interactions.hpp"
 #include "report/table.hpp"
 
 namespace bb {
 
 namespace {
-
-std::string vec(const Vec3& v, int dims) {
-  return dims == 2 ? fmt::format("({:g}, {:g})", v.x(), v.y())
-                   : fmt::format("({:g}, {:g}, {:g})", v.x(), v.y(), v.z());
-}
 
 std::string shape_cell(const Body& b) {
   switch (b.shape) {
@@ -44,7 +40,7 @@ std::string ground_line(const Scene& scene) {
   const double slope = std::acos(std::clamp(g.normal.dot(up), -1.0, 1.0)) * 180.0 / M_PI;
   return fmt::format(
       "- a ground plane through {} with normal {} ({}), restitution {:g}, friction {}\n",
-      vec(g.point, scene.dims), vec(g.normal, scene.dims),
+      format_vector(g.point, scene.dims), format_vector(g.normal, scene.dims),
       slope < 1e-9 ? std::string("level") : fmt::format("a slope of {:.4g} degrees", slope),
       g.restitution, friction(g.friction_static, g.friction_kinetic));
 }
@@ -86,6 +82,42 @@ std::string plate_line(const Body& b) {
                    b.name, p.coefficient, p.area);
 }
 
+/// How a body starts turned: degrees about z in 2D, about an axis in 3D; "-" unturned.
+std::string turned_cell(const Body& b, int dims) {
+  const Eigen::AngleAxisd turn(b.orientation);
+  if (turn.angle() == 0.0) return "-";
+  const double degrees = turn.angle() * 180.0 / M_PI;
+  if (dims == 2) return fmt::format("{:g} deg", turn.axis().z() < 0.0 ? -degrees : degrees);
+  return fmt::format("{:g} deg about {}", degrees, format_vector(turn.axis(), 3));
+}
+
+/// The bodies' table, headers only; with `turned` a column for how each starts turned.
+Table bodies_table(bool turned) {
+  Table t;
+  t.headers = {"body",     "shape",      "mass kg",      "Cd",
+               "magnus k", "position m", "velocity m/s", "spin rad/s"};
+  t.right_aligned = {false, false, true, true, true, false, false, false};
+  if (turned) {
+    t.headers.push_back("turned");
+    t.right_aligned.push_back(false);
+  }
+  return t;
+}
+
+std::vector<std::string> body_row(const Scene& scene, const Body& b, bool turned) {
+  std::vector<std::string> row = {b.name,
+                                  shape_cell(b),
+                                  b.fixed ? "fixed" : fmt::format("{:g}", b.mass),
+                                  fmt::format("{:g}", b.drag_coefficient),
+                                  fmt::format("{:g}", b.magnus),
+                                  format_vector(b.position, scene.dims),
+                                  format_vector(b.velocity, scene.dims),
+                                  scene.dims == 2 ? fmt::format("{:g}", b.angular_velocity.z())
+                                                  : format_vector(b.angular_velocity, 3)};
+  if (turned) row.push_back(turned_cell(b, scene.dims));
+  return row;
+}
+
 }  // namespace
 
 std::string describe_scene(const Scene& scene) {
@@ -95,12 +127,12 @@ std::string describe_scene(const Scene& scene) {
       "- {}D, {:g} s simulated, sampled every {} s\n- steps swept: {} s; tables and gates use "
       "report_dt = {} s\n- gravity {} m/s^2\n",
       scene.dims, scene.duration, format_dt(scene.sample), dts, format_dt(scene.report_dt),
-      vec(scene.gravity, scene.dims));
+      format_vector(scene.gravity, scene.dims));
   if (scene.air)
     out += fmt::format(
         "- air density {:g} kg/m^3, wind {} m/s; drag F = -1/2 Cd A rho |v - w| (v - w), "
         "A = pi r^2; Magnus F = k (omega x (v - w))\n",
-        scene.air->density, vec(scene.air->wind, scene.dims));
+        scene.air->density, format_vector(scene.air->wind, scene.dims));
   else
     out += "- no air: no drag, no wind, no Magnus\n";
   if (scene.water)
@@ -121,17 +153,22 @@ std::string describe_scene(const Scene& scene) {
     out += fmt::format("- contact: {}, restitution {:g}, friction {}\n", who, c.restitution,
                        friction(c.friction_static, c.friction_kinetic));
   }
-  Table t;
-  t.headers = {"body",     "shape",      "mass kg",      "Cd",
-               "magnus k", "position m", "velocity m/s", "spin rad/s"};
-  t.right_aligned = {false, false, true, true, true, false, false, false};
-  for (const Body& b : scene.bodies)
-    t.rows.push_back({b.name, shape_cell(b), b.fixed ? "fixed" : fmt::format("{:g}", b.mass),
-                      fmt::format("{:g}", b.drag_coefficient), fmt::format("{:g}", b.magnus),
-                      vec(b.position, scene.dims), vec(b.velocity, scene.dims),
-                      scene.dims == 2 ? fmt::format("{:g}", b.angular_velocity.z())
-                                      : vec(b.angular_velocity, 3)});
-  return out + "\n" + render_markdown(t);
+  // The bodies the case writes; those the grid or the waves make are folded below.
+  const bool turned = std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const Body& b) {
+    return b.orientation.coeffs() != Quat::Identity().coeffs();
+  });
+  Table written = bodies_table(turned), generated = bodies_table(turned);
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    (generated_body(scene, static_cast<int>(i)) ? generated : written)
+        .rows.push_back(body_row(scene, scene.bodies[i], turned));
+  if (!written.rows.empty()) out += "\n" + render_markdown(written);
+  out += describe_interactions(scene);
+  if (!generated.rows.empty())
+    out +=
+        fmt::format("\n<details><summary>The {} {} {} at the start</summary>\n\n{}\n</details>\n",
+                    scene.grid ? "grid's" : "surface's", generated.rows.size(),
+                    scene.grid ? "particles" : "points", render_markdown(generated));
+  return out;
 }
 
 }  // namespace bb
