@@ -46,6 +46,7 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
     }
   std::vector<CaseResults> all;
   bool gates_failed = false;
+  int gates = 0;
   int without_baseline = 0;
   // A shard checks the gates of its own backends (those whose runs are its work), and
   // compares their rows with the baseline. The results point at their scenes: these live
@@ -71,11 +72,15 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
   for (std::size_t k = 0; k < checked.size(); ++k) {
     const Scene& scene = checked[k];
     all.push_back(run_gates(scene, registry, options, also[k]));
+    if (all.back().gates.empty()) fmt::print("{}: no gates\n", scene.name);
     for (const GateResult& g : all.back().gates) {
       gates_failed = gates_failed || !g.passed;
+      ++gates;
+      const std::string said =
+          g.note.empty() || g.against.empty() ? g.note + g.against : g.note + "; " + g.against;
       fmt::print("{:<4} {:<{}} {:<{}} {:<{}} {:>10} <= {:<10} {}\n", g.passed ? "ok" : "FAIL",
                  scene.name, case_width, g.gate.backend, backend_width, g.gate.metric, metric_width,
-                 format_value(g.value), format_value(g.gate.max), g.note);
+                 format_value(g.value), format_value(g.gate.max), said);
     }
     const auto found = kept.find(scene.name);
     if (found == kept.end()) continue;
@@ -96,7 +101,7 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
                        : any_better ? "better than the baseline where it changed, nothing worse"
                                     : "unchanged from the baseline");
   }
-  fmt::print("{}\n", gates_failed ? "gates failed" : "all gates pass");
+  fmt::print("{}\n", gates_failed ? "gates failed" : gates == 0 ? "no gates" : "all gates pass");
   return gates_failed || worse ? kExitGateFailed : kExitOk;
 }
 

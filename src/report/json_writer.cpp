@@ -21,7 +21,25 @@ Json settings_json(const Settings& settings) {
   return out;
 }
 
-Json run_json(const RunRecord& run) {
+/// A run's errors: the worst body's figures, which body that is, and every body's.
+Json errors_json(const ErrorMetrics& e, const Scene& scene) {
+  Json j = {{"position_max", e.position_max},
+            {"position_rms", e.position_rms},
+            {"position_final", e.position_final},
+            {"velocity_max", e.velocity_max},
+            {"energy_max", e.energy_max}};
+  if (e.bodies.empty() || e.bodies.size() != scene.bodies.size()) return j;
+  j["worst_body"] = scene.bodies[static_cast<std::size_t>(e.worst_body())].name;
+  j["bodies"] = Json::object();
+  for (std::size_t i = 0; i < e.bodies.size(); ++i)
+    j["bodies"][scene.bodies[i].name] = {{"position_max", e.bodies[i].position_max},
+                                         {"position_rms", e.bodies[i].position_rms},
+                                         {"position_final", e.bodies[i].position_final},
+                                         {"velocity_max", e.bodies[i].velocity_max}};
+  return j;
+}
+
+Json run_json(const RunRecord& run, const Scene& scene) {
   Json j;
   j["backend"] = run.backend;
   j["dt"] = optional_json(run.dt);
@@ -43,11 +61,7 @@ Json run_json(const RunRecord& run) {
     j["cost"] = nullptr;
   }
   if (run.errors)
-    j["errors"] = {{"position_max", run.errors->position_max},
-                   {"position_rms", run.errors->position_rms},
-                   {"position_final", run.errors->position_final},
-                   {"velocity_max", run.errors->velocity_max},
-                   {"energy_max", run.errors->energy_max}};
+    j["errors"] = errors_json(*run.errors, scene);
   else
     j["errors"] = nullptr;
   j["observables"] = Json::object();
@@ -160,7 +174,7 @@ Json sweep_json(const CaseResults& results) {
   for (const SweepPoint& p : results.sweep->points) {
     sweep["values"].push_back(p.value);
     Json rows = Json::array();
-    for (const RunRecord& run : p.runs) rows.push_back(run_json(run));
+    for (const RunRecord& run : p.runs) rows.push_back(run_json(run, *results.scene));
     sweep["points"].push_back({{"value", p.value}, {"runs", rows}});
   }
   return sweep;
@@ -195,8 +209,8 @@ Json results_json(const CaseResults& results) {
   const bool has_runs = !results.reference_run.backend.empty();
   j["reference"] = has_runs ? reference_json(results.reference) : Json(nullptr);
   j["runs"] = Json::array();
-  if (has_runs) j["runs"].push_back(run_json(results.reference_run));
-  for (const RunRecord& run : results.runs) j["runs"].push_back(run_json(run));
+  if (has_runs) j["runs"].push_back(run_json(results.reference_run, *results.scene));
+  for (const RunRecord& run : results.runs) j["runs"].push_back(run_json(run, *results.scene));
   add_orders(results, j);
   j["claims"] = claims_json(results);
   j["stability"] = stability_json(results);

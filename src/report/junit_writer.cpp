@@ -42,7 +42,11 @@ void add_gates(const CaseResults& r, Suite& suite) {
       failure = g.value ? fmt::format("{} = {} exceeds max {}", g.gate.metric,
                                       format_value(g.value), format_value(g.gate.max))
                         : g.note;
-    suite.add(r.scene->name, g.gate.backend + " " + g.gate.metric, failure);
+    // A gate measured against the fallback says so in its name, passed or not.
+    suite.add(
+        r.scene->name,
+        g.gate.backend + " " + g.gate.metric + (g.against.empty() ? "" : " (" + g.against + ")"),
+        failure);
   }
 }
 

@@ -72,13 +72,25 @@ std::string results_section(const CaseResults& results) {
                       "finest run has none.") +
         "\n\n";
   out +=
-      "Errors are against the reference at every sample, worst body: pos max, pos rms and "
+      "Errors are against the reference at every sample, worst body (named where there are "
+      "several; each body's are folded below the table): pos max, pos rms and "
       "pos final are position_max, position_rms and position_final (m), vel max is "
       "velocity_max (m/s), energy max is energy_max (relative to the initial energy, at "
       "least 1 J). Observables show the value and, in brackets, its difference from the "
       "reference; for terminal_velocity, on every row, from the terminal speed sqrt(2 m g / "
       "(rho Cd A)) computed from the scene.\n\n";
   out += render_markdown(summary_table(results, scene.report_dt));
+  // Which part of the scene is wrong: every body's errors, folded.
+  if (scene.bodies.size() > 1)
+    if (const PerBodyErrors each = per_body_errors(results, scene.report_dt);
+        !each.table.rows.empty())
+      out += fmt::format(
+          "\n<details><summary>Each body's errors ({})</summary>\n\n{}\n</details>\n",
+          each.cut ? fmt::format("each backend's {} worst of the {} bodies, worst first; the "
+                                 "JSON has every body's",
+                                 kPerBodyRows, scene.bodies.size())
+                   : std::string("worst first"),
+          render_markdown(each.table));
   const auto notes = run_notes(results, scene.report_dt);
   if (!notes.empty()) {
     out += "\n";
@@ -245,7 +257,9 @@ std::string every_dt_section(const CaseResults& results) {
         "Every run of the sweep, with each observable and, in brackets, its difference from the "
         "reference: a course claim that holds at one step and fails at another shows here.\n\n";
   out += render_markdown(sweep_table(results));
-  if (!results.gates.empty()) out += "\n## Gates\n\n" + render_markdown(gate_table(results));
+  out += "\n## Gates\n\n" + (results.gates.empty()
+                                 ? std::string("No gates: the case sets no [[gate]].\n")
+                                 : render_markdown(gate_table(results)));
   return out;
 }
 

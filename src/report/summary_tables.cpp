@@ -38,22 +38,34 @@ std::string observable_cell(const RunRecord& run, const std::string& name, bool 
   return "-";
 }
 
+/// The body whose position_max the row shows, "-" where there are no per-body errors.
+std::string worst_body_cell(const RunRecord& run, const Scene& scene) {
+  if (!run.errors || run.errors->bodies.empty() || run.errors->bodies.size() != scene.bodies.size())
+    return "-";
+  return scene.bodies[static_cast<std::size_t>(run.errors->worst_body())].name;
+}
+
 }  // namespace
 
 Table summary_table(const CaseResults& results, double dt) {
   const Scene& scene = *results.scene;
+  // With more than one body the errors are the worst body's: the table names it.
+  const bool named = scene.bodies.size() > 1;
   Table t;
   t.headers = {"backend",     "status",      "pos max m", "pos rms m",
                "pos final m", "vel max m/s", "energy max"};
+  if (named) t.headers.insert(t.headers.begin() + 3, "worst body");
   for (const Observe& o : scene.observes) t.headers.push_back(o.name);
   for (const char* h : {"ns/step", "s per sim s", "order"}) t.headers.push_back(h);
   t.right_aligned.assign(t.headers.size(), true);
   t.right_aligned[0] = t.right_aligned[1] = false;
+  if (named) t.right_aligned[3] = false;
   const auto add = [&](const RunRecord& run, bool is_reference) {
     std::vector<std::string> row = {run.backend, status_cell(run)};
     for (const char* m :
          {"position_max", "position_rms", "position_final", "velocity_max", "energy_max"})
       row.push_back(is_reference ? "-" : format_value(error_of(run, m)));
+    if (named) row.insert(row.begin() + 3, is_reference ? "-" : worst_body_cell(run, scene));
     for (const Observe& o : scene.observes)
       row.push_back(observable_cell(run, o.name, is_reference));
     row.push_back(cost_ns_cell(run.cost));
@@ -162,8 +174,37 @@ Table gate_table(const CaseResults& results) {
   for (const GateResult& g : results.gates)
     t.rows.push_back({g.gate.backend, g.gate.metric, format_value(g.value),
                       format_value(g.gate.max),
-                      g.passed ? "pass" : "FAIL" + (g.note.empty() ? "" : ": " + g.note)});
+                      (g.passed ? "pass" : "FAIL" + (g.note.empty() ? "" : ": " + g.note)) +
+                          (g.against.empty() ? "" : " (" + g.against + ")")});
   return t;
+}
+
+PerBodyErrors per_body_errors(const CaseResults& results, double dt) {
+  const Scene& scene = *results.scene;
+  PerBodyErrors out;
+  out.table.headers = {"backend", "body", "pos max m", "pos rms m", "pos final m", "vel max m/s"};
+  out.table.right_aligned = {false, false, true, true, true, true};
+  for (const RunRecord& run : results.runs) {
+    if (!run.dt || *run.dt != dt || !run.errors) continue;
+    const std::vector<BodyErrors>& bodies = run.errors->bodies;
+    if (bodies.size() != scene.bodies.size()) continue;
+    // The bodies worst first; a large scene keeps each backend's kPerBodyRows worst.
+    std::vector<std::size_t> order(bodies.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return bodies[a].position_max > bodies[b].position_max;
+    });
+    if (order.size() > kPerBodyRows) {
+      order.resize(kPerBodyRows);
+      out.cut = true;
+    }
+    for (std::size_t i : order)
+      out.table.rows.push_back(
+          {run.backend, scene.bodies[i].name, format_value(bodies[i].position_max),
+           format_value(bodies[i].position_rms), format_value(bodies[i].position_final),
+           format_value(bodies[i].velocity_max)});
+  }
+  return out;
 }
 
 }  // namespace bb

@@ -1,6 +1,7 @@
 // The tables a reader looks at first, shared by the terminal and the Markdown page.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,15 @@ namespace bb {
 
 /// One row per backend at `dt` (the reference first): errors, observables, cost, order.
 Table summary_table(const CaseResults& results, double dt);
+/// Rows a backend gets in the per-body table at most: its worst bodies.
+inline constexpr std::size_t kPerBodyRows = 10;
+/// Each backend's errors at `dt` body by body, worst first (the kPerBodyRows worst of a larger
+/// scene: `cut` says so), against what the summary table's errors are against.
+struct PerBodyErrors {
+  Table table;
+  bool cut = false;
+};
+PerBodyErrors per_body_errors(const CaseResults& results, double dt);
 /// Why runs at `dt` that are not ok ended as they did, one line each.
 std::vector<std::string> run_notes(const CaseResults& results, double dt);
 /// Every run of the sweep, one row per (backend, dt).

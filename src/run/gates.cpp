@@ -17,8 +17,15 @@ const RunRecord* find_run(const CaseResults& results, const std::string& backend
 
 std::vector<GateResult> evaluate_gates(const Scene& scene, const CaseResults& results) {
   std::vector<GateResult> out;
+  // Without the reference, every error and observable difference is against the backend's
+  // own finest run (the fallback): each gate says so.
+  const std::string against =
+      results.reference_run.status == RunStatus::Ok
+          ? std::string()
+          : "against its own run at the finest dt, not the reference (which has no answer: " +
+                results.reference_run.reason + ")";
   for (const Gate& gate : scene.gates) {
-    GateResult g{gate, std::nullopt, false, ""};
+    GateResult g{gate, std::nullopt, false, "", against};
     const RunRecord* run = find_run(results, gate.backend, scene.report_dt);
     if (run == nullptr) {
       g.note = "no run of " + gate.backend + " at report_dt";

@@ -107,6 +107,9 @@ struct GateResult {
   std::optional<double> value;  ///< nullopt when the run has no such value
   bool passed = false;
   std::string note;  ///< why it failed without a value
+  /// What the value is measured against when it is not the reference: "" for the reference,
+  /// else the self-consistency fallback's words (the backend's own run at its finest dt).
+  std::string against;
 };
 
 /// How a value of `check --baseline` compares with the baseline's (run/baseline.hpp).

@@ -178,6 +178,9 @@ std::string encode(const RunRecord& run) {
   if (const auto& e = run.errors) {
     w.raw(e->position_max), w.raw(e->position_rms), w.raw(e->position_final);
     w.raw(e->velocity_max), w.raw(e->energy_max);
+    w.raw<std::uint64_t>(e->bodies.size());
+    for (const BodyErrors& b : e->bodies)
+      w.raw(b.position_max), w.raw(b.position_rms), w.raw(b.position_final), w.raw(b.velocity_max);
   }
   w.raw<std::uint64_t>(run.observables.size());
   for (const ObservableResult& o : run.observables) {
@@ -235,6 +238,11 @@ RunRecord decode_run(const std::string& bytes) {
     e.position_max = r.raw<double>(), e.position_rms = r.raw<double>();
     e.position_final = r.raw<double>(), e.velocity_max = r.raw<double>();
     e.energy_max = r.raw<double>();
+    e.bodies.resize(r.raw<std::uint64_t>());
+    for (BodyErrors& b : e.bodies) {
+      b.position_max = r.raw<double>(), b.position_rms = r.raw<double>();
+      b.position_final = r.raw<double>(), b.velocity_max = r.raw<double>();
+    }
     run.errors = e;
   }
   run.observables.resize(r.raw<std::uint64_t>());

@@ -12,9 +12,10 @@ TEST(JunitWriter, CountsEachCasesGatesAndSaysWhyOneFailed) {
   scene.name = "drop";
   CaseResults results;
   results.scene = &scene;
-  results.gates.push_back({Gate{"course/rk4", "position_max", 1e-6, 3}, 2e-9, true, ""});
-  results.gates.push_back({Gate{"a<b>&\"c\"", "position_max", 1e-6, 4}, 0.5, false, ""});
-  results.gates.push_back({Gate{"ode", "energy_max", 1e-3, 5}, std::nullopt, false, "diverged"});
+  results.gates.push_back({Gate{"course/rk4", "position_max", 1e-6, 3}, 2e-9, true, "", ""});
+  results.gates.push_back({Gate{"a<b>&\"c\"", "position_max", 1e-6, 4}, 0.5, false, "", ""});
+  results.gates.push_back(
+      {Gate{"ode", "energy_max", 1e-3, 5}, std::nullopt, false, "diverged", ""});
   const std::string xml = junit_xml({results});
   EXPECT_NE(xml.find("<testsuites name=\"beachball gates\" tests=\"3\" failures=\"2\">"),
             std::string::npos)

@@ -19,7 +19,7 @@ CaseResults written(const Scene& scene) {
   RunRecord ok;
   ok.backend = "course/rk4";
   ok.dt = 1.0 / 60.0;
-  ok.errors = ErrorMetrics{0.1 / 3.0, 2e-17, 3.0, 4.5, 1.0 / 7.0};
+  ok.errors = ErrorMetrics{0.1 / 3.0, 2e-17, 3.0, 4.5, 1.0 / 7.0, {}};
   ok.observables.push_back(speed);
   ok.observables.push_back({"bounce_apex/ball/1", {std::nullopt, "no bounce"}, 1.25});
   RunRecord diverged;

@@ -18,7 +18,8 @@ TEST(Wire, ARunRecordComesBackWhole) {
   run.engine_settings = {{"a", 1.5}, {"b", true}, {"c", std::string("text")}};
   run.trajectory.times = {0.0, 0.1, 0.2};
   // Times without states: a run at a dt the page does not plot.
-  run.errors = ErrorMetrics{1.0, 2.0, 3.0, 4.0, 5.0};
+  run.errors =
+      ErrorMetrics{1.0, 2.0, 3.0, 4.0, 5.0, {{0.5, 0.25, 0.125, 4.0}, {1.0, 2.0, 3.0, 1.5}}};
   run.observables = {{"period/left", {0.44, ""}, 0.45}, {"sag", {std::nullopt, "why"}, {}}};
   run.energy = {1.0, 0.9, 0.8};
   run.distance = {0.0, 1e-3, 2e-3};
@@ -53,6 +54,12 @@ TEST(Wire, ARunRecordComesBackWhole) {
   EXPECT_EQ(back.errors->position_final, 3.0);
   EXPECT_EQ(back.errors->velocity_max, 4.0);
   EXPECT_EQ(back.errors->energy_max, 5.0);
+  // Each body's errors come back in order.
+  ASSERT_EQ(back.errors->bodies.size(), 2u);
+  EXPECT_EQ(back.errors->bodies[0].position_rms, 0.25);
+  EXPECT_EQ(back.errors->bodies[0].position_final, 0.125);
+  EXPECT_EQ(back.errors->bodies[1].position_max, 1.0);
+  EXPECT_EQ(back.errors->bodies[1].velocity_max, 1.5);
   ASSERT_EQ(back.observables.size(), 2u);
   EXPECT_EQ(back.observables[0].name, "period/left");
   EXPECT_EQ(back.observables[0].measured.value, 0.44);
