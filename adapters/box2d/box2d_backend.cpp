@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "../described_backend.hpp"
 #include "../engine_caps.hpp"
 #include "../point_body.hpp"
 #include "box2d_contacts.hpp"
@@ -220,37 +221,20 @@ class Box2dSimulation : public Simulation {
   CapWatch caps_{scene_, double(dt_), double(FLT_EPSILON)};  ///< the first body held at a cap
 };
 
-class Box2dBackend : public Backend {
- public:
-  std::string name() const override { return BB_BACKEND_NAME; }
-  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override { return description_supports(box2d_description(), name()); }
-#ifdef BB_SPRINGS_BY_HAND
-  /// The same engine as `box2d` wherever the scene has no springs: it takes part only
-  /// where it has.
-  FeatureSet needs() const override {
-    return {Feature::Springs};
-  }
-#endif
-  std::pair<std::string, std::string> library_version() const override {
-    const std::string header = std::to_string(b2_version.major) + "." +
-                               std::to_string(b2_version.minor) + "." +
-                               std::to_string(b2_version.revision);
-    // The installed package's version; the library's b2_version lags behind in 2.4.1.
-    const std::string package = BOX2D_PACKAGE_VERSION;
-    if (package == header) return {"box2d", package};
-    return {"box2d", package + " (its b2_version says " + header + ")"};
-  }
-  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
-                                        double dt) const override {
-    return std::make_unique<Box2dSimulation>(scene, *settings.engines, dt);
-  }
-};
+/// Library and version: the installed package's; the library's b2_version lags behind in 2.4.1.
+std::pair<std::string, std::string> box2d_version() {
+  const std::string header = std::to_string(b2_version.major) + "." +
+                             std::to_string(b2_version.minor) + "." +
+                             std::to_string(b2_version.revision);
+  const std::string package = BOX2D_PACKAGE_VERSION;
+  if (package == header) return {"box2d", package};
+  return {"box2d", package + " (its b2_version says " + header + ")"};
+}
 
 }  // namespace
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() {
-  return new bb::Box2dBackend();
-}
+BEACHBALL_PLUGIN(new bb::DeclaredBackend(
+    bb::described_backend(bb::box2d_description(), BB_BACKEND_NAME, bb::box2d_version()),
+    bb::start_engine<bb::Box2dSimulation>))

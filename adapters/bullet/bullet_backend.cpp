@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "../described_backend.hpp"
 #include "../engine_caps.hpp"
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
@@ -285,30 +286,10 @@ class BulletSimulation : public Simulation {
   CapWatch caps_{scene_, dt_, sizeof(btScalar) == 8 ? DBL_EPSILON : double(FLT_EPSILON)};
 };
 
-class BulletBackend : public Backend {
- public:
-  std::string name() const override { return BB_BULLET_NAME; }
-  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override {
-    return description_supports(bullet_description(), name());
-  }
-  FeatureSet needs() const override {
-    return kSpringsByHand ? FeatureSet{Feature::Springs} : FeatureSet{};
-  }
-  std::pair<std::string, std::string> library_version() const override {
-    const int v = btGetVersion();
-    return {"bullet", std::to_string(v / 100) + "." + std::to_string(v % 100)};
-  }
-  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
-                                        double dt) const override {
-    return std::make_unique<BulletSimulation>(scene, *settings.engines, dt);
-  }
-};
-
 }  // namespace
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() {
-  return new bb::BulletBackend();
-}
+BEACHBALL_PLUGIN(new bb::DeclaredBackend(
+    bb::described_backend(bb::bullet_description(), BB_BULLET_NAME, bb::bullet_version()),
+    bb::start_engine<bb::BulletSimulation>))

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../described_backend.hpp"
 #include "bullet_engine.hpp"
 #include "bullet_vectors.hpp"
 #include "physics/step_start.hpp"
@@ -162,29 +163,11 @@ class SoftBodySimulation : public Simulation {
   StepStart start_{scene_, dt_, {false}};
 };
 
-class SoftBodyBackend : public Backend {
- public:
-  std::string name() const override { return "bullet-softbody"; }
-  /// Points on springs under gravity, pushed by impulses: no contacts, no spin, no air.
-  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override {
-    return description_supports(bullet_description(), name());
-  }
-  FeatureSet needs() const override { return {Feature::Springs}; }
-  std::pair<std::string, std::string> library_version() const override {
-    const int v = btGetVersion();
-    return {"bullet", std::to_string(v / 100) + "." + std::to_string(v % 100)};
-  }
-  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
-                                        double dt) const override {
-    return std::make_unique<SoftBodySimulation>(scene, *settings.engines, dt);
-  }
-};
-
 }  // namespace
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() {
-  return new bb::SoftBodyBackend();
-}
+// Points on springs under gravity, pushed by impulses: no contacts, no spin, no air.
+BEACHBALL_PLUGIN(new bb::DeclaredBackend(
+    bb::described_backend(bb::bullet_description(), "bullet-softbody", bb::bullet_version()),
+    bb::start_engine<bb::SoftBodySimulation>))

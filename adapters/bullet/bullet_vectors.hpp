@@ -1,7 +1,11 @@
 // The harness's vectors to Bullet's and back, in whichever precision the build uses.
 #pragma once
 
+#include <LinearMath/btScalar.h>
 #include <LinearMath/btVector3.h>
+
+#include <string>
+#include <utility>
 
 #include "scene/vec3.hpp"
 
@@ -13,6 +17,12 @@ inline btVector3 to_bt(const Vec3& v) {
 
 inline Vec3 from_bt(const btVector3& v) {
   return {v.x(), v.y(), v.z()};
+}
+
+/// Library and version as the linked Bullet says: {"bullet", "3.24"}.
+inline std::pair<std::string, std::string> bullet_version() {
+  const int v = btGetVersion();
+  return {"bullet", std::to_string(v / 100) + "." + std::to_string(v % 100)};
 }
 
 }  // namespace bb

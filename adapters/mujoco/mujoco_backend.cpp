@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "../described_backend.hpp"
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "kept_model.hpp"
@@ -345,33 +346,28 @@ class MujocoSimulation : public Simulation {
   MujocoWarnings warnings_{world_};    ///< what MuJoCo did on its own, latched
 };
 
-class MujocoBackend : public Backend {
- public:
-  std::string name() const override { return BB_BACKEND_NAME; }
-  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override {
-    return description_supports(mujoco_description(), name());
-  }
-  std::pair<std::string, std::string> library_version() const override {
-    const int v = mj_version();
-    return {"mujoco", std::to_string(v / 100) + "." + std::to_string(v / 10 % 10) + "." +
-                          std::to_string(v % 10)};
-  }
-  std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
-                                        double dt) const override {
-    static std::once_flag handlers;
-    std::call_once(handlers, [] {
-      mju_user_error = mujoco_error;
-      mju_user_warning = mujoco_warning;
-    });
-    return std::make_unique<MujocoSimulation>(world, *settings.engines, dt);
-  }
-};
+/// Library and version as the linked MuJoCo says: {"mujoco", "2.3.3"}.
+std::pair<std::string, std::string> mujoco_version() {
+  const int v = mj_version();
+  return {"mujoco", std::to_string(v / 100) + "." + std::to_string(v / 10 % 10) + "." +
+                        std::to_string(v % 10)};
+}
+
+/// Starts a run, MuJoCo's error and warning handlers set first (once per process).
+std::unique_ptr<Simulation> start_mujoco(const World& world, const BackendSettings& settings,
+                                         double dt) {
+  static std::once_flag handlers;
+  std::call_once(handlers, [] {
+    mju_user_error = mujoco_error;
+    mju_user_warning = mujoco_warning;
+  });
+  return start_engine<MujocoSimulation>(world, settings, dt);
+}
 
 }  // namespace
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() {
-  return new bb::MujocoBackend();
-}
+BEACHBALL_PLUGIN(new bb::DeclaredBackend(
+    bb::described_backend(bb::mujoco_description(), BB_BACKEND_NAME, bb::mujoco_version()),
+    bb::start_mujoco))

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <vector>
 
+#include "../described_backend.hpp"
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "ode_contacts.hpp"
@@ -328,40 +329,25 @@ class OdeSimulation : public Simulation {
   }
 };
 
-class OdeBackend : public Backend {
- public:
-  std::string name() const override { return BB_BACKEND_NAME; }
-  /// As the engine's description says (adapters/<engine>/<engine>_engine.hpp).
-  FeatureSet supports() const override { return description_supports(ode_description(), name()); }
-#ifdef BB_SPRINGS_BY_HAND
-  /// The same engine as `ode` wherever the scene has no springs: it takes part only where
-  /// it has.
-  FeatureSet needs() const override {
-    return {Feature::Springs};
-  }
-#endif
-  std::pair<std::string, std::string> library_version() const override {
-    return {"ode", BB_ODE_VERSION};
-  }
-  std::unique_ptr<Simulation> start_run(const World& scene, const BackendSettings& settings,
-                                        double dt) const override {
-    static std::once_flag initialised;
-    std::call_once(initialised, [] {
-      dInitODE2(0);
-      dSetErrorHandler(ode_fatal);
-      dSetDebugHandler(ode_fatal);
-      dSetMessageHandler(ode_message);
-    });
-    // ODE keeps per-thread data; each thread that steps a world must allocate it.
-    dAllocateODEDataForThread(dAllocateMaskAll);
-    return std::make_unique<OdeSimulation>(scene, *settings.engines, dt);
-  }
-};
+/// Starts a run, ODE made ready first: once per process, and once per thread that steps.
+std::unique_ptr<Simulation> start_ode(const World& world, const BackendSettings& settings,
+                                      double dt) {
+  static std::once_flag initialised;
+  std::call_once(initialised, [] {
+    dInitODE2(0);
+    dSetErrorHandler(ode_fatal);
+    dSetDebugHandler(ode_fatal);
+    dSetMessageHandler(ode_message);
+  });
+  // ODE keeps per-thread data; each thread that steps a world must allocate it.
+  dAllocateODEDataForThread(dAllocateMaskAll);
+  return start_engine<OdeSimulation>(world, settings, dt);
+}
 
 }  // namespace
 
 }  // namespace bb
 
-extern "C" bb::Backend* beachball_create_backend() {
-  return new bb::OdeBackend();
-}
+BEACHBALL_PLUGIN(new bb::DeclaredBackend(
+    bb::described_backend(bb::ode_description(), BB_BACKEND_NAME, {"ode", BB_ODE_VERSION}),
+    bb::start_ode))

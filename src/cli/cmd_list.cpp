@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "run/accuracy_run.hpp"
+#include "run/outside_plugins.hpp"
 #include "scene/backend_names.hpp"
 
 namespace bb::cli {
@@ -25,7 +26,9 @@ int list_command(const std::vector<std::string>& paths) {
   fmt::print("  {:<28} {}\n", "course/<integrator>", feature_list(registry.course_features()));
   for (const Backend* e : registry.engines()) {
     const auto [library, version] = e->library_version();
-    fmt::print("  {:<28} built ({} {}): {}\n", e->name(), library, version,
+    const OutsidePlugin* outside = outside_plugin(e->name());
+    fmt::print("  {:<28} {} ({} {}): {}\n", e->name(),
+               outside ? "plugin " + outside->path : std::string("built"), library, version,
                feature_list(e->supports()));
   }
   for (const Registry::Missing& m : registry.missing_engines())

@@ -12,6 +12,7 @@
 #include "cli/option_values.hpp"
 #include "files/result_cache.hpp"
 #include "run/interrupt.hpp"
+#include "run/outside_plugins.hpp"
 #include "run/run_cache.hpp"
 #include "scene/case_error.hpp"
 
@@ -33,7 +34,8 @@ struct Values {
   std::string cache =
       std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE") : bb::default_cache_folder();
   bool fresh = false;
-  bool trajectories = false;  ///< run: every run's state at every step, as CSV files
+  bool trajectories = false;         ///< run: every run's state at every step, as CSV files
+  std::vector<std::string> plugins;  ///< --plugin: backend plugins built outside the tree
 };
 
 /// The subcommands, once declared.
@@ -49,8 +51,15 @@ struct Commands {
 /// Declares every subcommand and its options on `app`, writing into `v`.
 Commands declare_commands(CLI::App& app, Values& v) {
   app.require_subcommand(1);
+  // Options of every command that runs backends, and of `list`.
+  const auto add_plugin_option = [&](CLI::App* command) {
+    command->add_option("--plugin", v.plugins,
+                        "a backend plugin built outside beachball (PATH.so, repeatable; also "
+                        "every beachball-*.so in the folders of $BEACHBALL_PLUGIN_PATH)");
+  };
   auto* list = app.add_subcommand("list", "cases, backends, and who supports what");
   list->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
+  add_plugin_option(list);
 
   auto* run = app.add_subcommand("run", "run cases and write <out>/<case>.json, .csv and .md");
   run->add_option("CASES", v.cases, "case files or folders")->required();
@@ -77,6 +86,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
         "run in this process, not in child processes (for debugging: a crash ends the program)");
   };
   add_isolation_options(run);
+  add_plugin_option(run);
   // Options of every command whose results are kept between invocations.
   const auto add_cache_options = [&](CLI::App* command) {
     command->add_option("--cache", v.cache,
@@ -99,6 +109,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
   report->add_option("--out", v.out, "report folder")->default_val("reports");
   add_sweep_options(report);
   add_isolation_options(report);
+  add_plugin_option(report);
   add_cache_options(report);
   report->add_option("--shard", v.shard,
                      "I/N: run only share I of N of the work and keep its results in --out, "
@@ -116,6 +127,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
       ->default_val("reports");
   merge->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(merge);
+  add_plugin_option(merge);
 
   auto* stability =
       app.add_subcommand("stability", "largest stable step per backend, by bisection");
@@ -125,6 +137,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
   stability->add_option("--jobs", v.jobs, "backends searched in parallel (1 to 256)")
       ->default_val(v.default_jobs);
   add_isolation_options(stability);
+  add_plugin_option(stability);
   add_cache_options(stability);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
@@ -135,6 +148,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
                     "folder (<case>.json of a `run` or a report); exit 1 where one got worse");
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
+  add_plugin_option(check);
   add_cache_options(check);
   check->add_option("--shard", v.shard,
                     "I/N: check only the gates of share I of N of the backends (a CI matrix)");
@@ -213,6 +227,8 @@ int main(int argc, char** argv) {
   }
   try {
     bb::RunOptions options = run_options(app, values);
+    // The plugins from outside the tree, each checked before any case is read or run.
+    bb::load_outside_plugins(values.plugins);
     // Kept results: reused where nothing that decides them changed, said at the end.
     std::optional<bb::RunCache> cache;
     // A shard of a report or run keeps its results in its own folder; a merge reads the

@@ -8,6 +8,7 @@
 
 #include "files/file_digest.hpp"
 #include "files/result_cache.hpp"
+#include "run/outside_plugins.hpp"
 #include "run/registry.hpp"
 
 namespace bb {
@@ -36,6 +37,13 @@ std::string plugin_folder_path() {
   return real_path(plugin_folder());
 }
 
+/// Whether `file` (a real path) is a plugin from outside the tree: its backend's own code.
+bool is_outside_plugin(const std::string& file) {
+  for (const OutsidePlugin& p : outside_plugins())
+    if (p.real == file) return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<std::string> loaded_code_files() {
@@ -55,6 +63,7 @@ const std::string& shared_code_digest() {
     std::vector<std::string> digests;
     for (const std::string& file : loaded_code_files()) {
       if (!plugins.empty() && fs::path(file).parent_path().string() == plugins) continue;
+      if (is_outside_plugin(file)) continue;
       const std::string d = file_digest(file);
       // Without the program's own bytes there is no telling builds apart: nothing is kept.
       if (d.empty() && file == "/proc/self/exe") return std::string();
@@ -70,6 +79,7 @@ const std::string& shared_code_digest() {
 }
 
 std::string plugin_digest(const std::string& backend) {
+  if (const OutsidePlugin* outside = outside_plugin(backend)) return file_digest(outside->real);
   return file_digest((fs::path(plugin_folder()) / plugin_file_name(backend)).string());
 }
 
@@ -84,6 +94,9 @@ std::string build_digest() {
   std::string all = shared_code_digest() + "\n";
   for (const fs::path& p : plugins)
     all += p.filename().string() + " " + file_digest(p.string()) + "\n";
+  // The plugins from outside the tree, by their backends' names: a merge needs the same ones.
+  for (const OutsidePlugin& p : outside_plugins())
+    all += p.description.backends.front() + " " + file_digest(p.real) + "\n";
   return digest(all);
 }
 

@@ -16,15 +16,17 @@ namespace bb {
 std::vector<std::string> loaded_code_files();
 
 /// A digest of the code every backend shares: the program and every loaded shared library
-/// that is not an engine plugin, by content (paths play no part: a copy of the build
-/// elsewhere is the same build). Read at the first call, after the plugins are loaded (then
-/// their engines' libraries are loaded too); "" when the program cannot be read.
+/// that is not an engine plugin (nor one from outside the tree), by content (paths play no part: a
+/// copy of the build elsewhere is the same build). Read at the first call, after the plugins are
+/// loaded (then their engines' libraries are loaded too); "" when the program cannot be read.
 const std::string& shared_code_digest();
 
-/// A digest of the plugin file of `backend` ("" for a backend that is not a plugin).
+/// A digest of the plugin file of `backend`, built-in or from outside the tree ("" for a
+/// backend that is not a plugin).
 std::string plugin_digest(const std::string& backend);
 
-/// A digest of the whole build: the shared code and every file in the plugin folder. What a
+/// A digest of the whole build: the shared code, every file in the plugin folder and every
+/// plugin from outside the tree. What a
 /// shard's manifest records and a merge compares with its own.
 std::string build_digest();
 

@@ -6,11 +6,10 @@
 namespace bb {
 
 const CaseVocabulary& every_word() {
-  static const CaseVocabulary vocabulary = [] {
-    CaseVocabulary v = case_vocabulary();
-    v.engines = engine_catalogue();
-    return v;
-  }();
+  static CaseVocabulary vocabulary = case_vocabulary();
+  // The engines again when plugins from outside joined the catalogue since.
+  if (vocabulary.engines.size() != engine_catalogue().size())
+    vocabulary.engines = engine_catalogue();
   return vocabulary;
 }
 

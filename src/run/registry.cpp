@@ -1,25 +1,17 @@
 #include "run/registry.hpp"
 
-#include <dlfcn.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
 #include "course/course_backend.hpp"
 #include "run/engine_catalogue.hpp"
+#include "run/outside_plugins.hpp"
+#include "run/plugin_file.hpp"
 #include "scene/backend_names.hpp"
 #include "scene/engine_catalogue.hpp"
-#include "scene/plugin_api.hpp"
 
 namespace bb {
-
-// A loaded shared object. Plugins are never unloaded: engine libraries keep global
-// state that does not survive dlclose reliably, and the process ends soon anyway.
-struct Registry::Plugin {
-  void* handle = nullptr;
-};
 
 Registry::Registry(Registry&&) noexcept = default;
 Registry& Registry::operator=(Registry&&) noexcept = default;
@@ -41,8 +33,10 @@ std::string plugin_file_name(const std::string& backend) {
 Registry Registry::load() {
   Registry r;
   const std::filesystem::path folder = plugin_folder();
-  for (const EngineDescription& engine : engine_catalogue())
+  for (const EngineDescription& engine : built_in_engine_catalogue())
     for (const std::string& name : engine.backends) r.load_plugin(folder, name, engine);
+  // The plugins from outside the tree, checked when they were opened (outside_plugins.hpp).
+  for (const OutsidePlugin& plugin : outside_plugins()) r.engines_.emplace_back(plugin.create());
   return r;
 }
 
@@ -60,20 +54,12 @@ void Registry::load_plugin(const std::filesystem::path& folder, const std::strin
         {name, "not built: its Debian package was not found at build time", true, needs});
     return;
   }
-  // RTLD_LOCAL keeps each plugin's engine symbols apart: bullet and bullet-float link
-  // libraries that define the same names with different layouts.
-  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (handle == nullptr) {
-    missing_.push_back({name, std::string("plugin failed to load: ") + dlerror(), true, needs});
+  auto opened = open_plugin(path.string());
+  if (const auto* why = std::get_if<std::string>(&opened)) {
+    missing_.push_back({name, "plugin " + *why, true, needs});
     return;
   }
-  auto create = reinterpret_cast<bb::Backend* (*)()>(dlsym(handle, BEACHBALL_PLUGIN_ENTRY));
-  if (create == nullptr) {
-    missing_.push_back({name, "plugin has no " BEACHBALL_PLUGIN_ENTRY, true, needs});
-    return;
-  }
-  plugins_.push_back(std::make_unique<Plugin>(Plugin{handle}));
-  engines_.emplace_back(create());
+  engines_.emplace_back(std::get<OpenedPlugin>(opened).create());
 }
 
 FeatureSet Registry::course_features() const {

@@ -15,13 +15,15 @@ namespace bb {
 
 class Registry {
  public:
-  /// Loads every engine plugin from the plugin folder (see plugin_folder()).
+  /// Loads every engine plugin from the plugin folder (see plugin_folder()), then creates the
+  /// backends of the plugins from outside the tree (outside_plugins.hpp).
   static Registry load();
   Registry(Registry&&) noexcept;
   Registry& operator=(Registry&&) noexcept;
   ~Registry();
 
-  /// Engines whose plugin loaded, in engine_backend_names() order.
+  /// Engines whose plugin loaded, in engine_backend_names() order, then the plugins from
+  /// outside the tree.
   std::vector<const Backend*> engines() const;
   /// An engine backend whose plugin is not here.
   struct Missing {
@@ -43,8 +45,6 @@ class Registry {
   /// Loads backend `name` of `engine` from `folder`, or records why it is missing.
   void load_plugin(const std::filesystem::path& folder, const std::string& name,
                    const EngineDescription& engine);
-  struct Plugin;
-  std::vector<std::unique_ptr<Plugin>> plugins_;
   std::vector<std::unique_ptr<Backend>> engines_;
   std::vector<Missing> missing_;
   ReferenceBackend reference_;

@@ -2,7 +2,7 @@
 // subcommand and options the program takes, and each matrix runs --shard I/N with N its own
 // length. In docs/examples/github-actions-shards.yml the merge takes every shard, once; in
 // docs/examples/ci/physics-baseline.yml (a user's repository) each shard checks the cases
-// against the committed baseline and writes its JUnit file.
+// against the committed baseline, with the user's plugin, and writes its JUnit file.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -91,7 +91,7 @@ TEST(CiExample, TheBaselineWorkflowChecksEveryShardAgainstTheBaseline) {
       EXPECT_EQ(words[k + 1], "physics-I.xml");
     }
   }
-  EXPECT_EQ(options, (std::set<std::string>{"--baseline", "--shard", "--junit"}));
+  EXPECT_EQ(options, (std::set<std::string>{"--plugin", "--baseline", "--shard", "--junit"}));
   EXPECT_NE(workflow.find("report_paths: physics-*.xml"), std::string::npos);
 }
 
