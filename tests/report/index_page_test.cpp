@@ -15,7 +15,7 @@ namespace bb {
 namespace {
 
 /// Cells in a Markdown table row (unescaped '|' count minus one).
-int cells_in(const std::string& line) {
+int index_row_cells(const std::string& line) {
   int pipes = 0;
   for (std::size_t i = 0; i < line.size(); ++i) {
     if (line[i] == '\\')
@@ -31,7 +31,7 @@ int widest_table(const std::string& page) {
   std::istringstream lines(page);
   int widest = 0;
   for (std::string line; std::getline(lines, line);)
-    if (!line.empty() && line[0] == '|') widest = std::max(widest, cells_in(line));
+    if (!line.empty() && line[0] == '|') widest = std::max(widest, index_row_cells(line));
   return widest;
 }
 
