@@ -33,6 +33,8 @@ struct Values {
       std::getenv("BEACHBALL_CACHE") ? std::getenv("BEACHBALL_CACHE") : bb::default_cache_folder();
   bool fresh = false;
   bool trajectories = false;  ///< run: every run's state at every step, as CSV files
+  /// run, report, check: programs' trajectories, NAME@DT=FILE each
+  std::vector<std::string> imports;
 };
 
 /// The subcommands, once declared.
@@ -76,6 +78,13 @@ Commands declare_commands(CLI::App& app, Values& v) {
         "run in this process, not in child processes (for debugging: a crash ends the program)");
   };
   add_isolation_options(run);
+  // Programs' trajectories as backend rows: every command that runs a case's rows.
+  const auto add_import_option = [&](CLI::App* command) {
+    command->add_option("--trajectory", v.imports,
+                        "NAME@DT=FILE: a program's trajectory of the case at step DT (as --dt "
+                        "takes it) as the backend row import/NAME; repeatable, one case only");
+  };
+  add_import_option(run);
   // Options of every command whose results are kept between invocations.
   const auto add_cache_options = [&](CLI::App* command) {
     command->add_option("--cache", v.cache,
@@ -98,6 +107,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
   report->add_option("--out", v.out, "report folder")->default_val("reports");
   add_sweep_options(report);
   add_isolation_options(report);
+  add_import_option(report);
   add_cache_options(report);
   report->add_option("--shard", v.shard,
                      "I/N: run only share I of N of the work and keep its results in --out, "
@@ -124,6 +134,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
   stability->add_option("--jobs", v.jobs, "backends searched in parallel (1 to 256)")
       ->default_val(v.default_jobs);
   add_isolation_options(stability);
+  add_import_option(stability);
   add_cache_options(stability);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
@@ -134,6 +145,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
                     "folder (<case>.json of a `run` or a report); exit 1 where one got worse");
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
+  add_import_option(check);
   add_cache_options(check);
   check->add_option("--shard", v.shard,
                     "I/N: check only the gates of share I of N of the backends (a CI matrix)");
@@ -162,6 +174,19 @@ bb::RunOptions run_options(const CLI::App& app, Values& v) {
   options.isolation = !v.no_isolation;
   options.timeout = v.timeout;
   if (given("--shard")) options.shard = bb::cli::parse_shard(v.shard);
+  for (const std::string& text : v.imports)
+    options.import_files.push_back(bb::cli::parse_trajectory_import(text));
+  // A trajectory has its own steps only: no step can be searched, no share of it split.
+  if (!v.imports.empty() && std::string(command->get_name()) == "stability")
+    throw bb::CaseError("--trajectory", 0,
+                        "stability searches the largest stable step by running a backend at "
+                        "steps of its choosing, and a trajectory file has only the step it was "
+                        "written at: give it to `run`, `report` or `check`, whose rows show "
+                        "whether it diverged");
+  if (!v.imports.empty() && given("--shard"))
+    throw bb::CaseError("--trajectory", 0,
+                        "does not go with --shard: a trajectory is read, not run, and belongs to "
+                        "no share of the work");
   if (given("--baseline") && v.baseline.empty())
     throw bb::CaseError("--baseline", 0,
                         "is empty; give the folder of <case>.json to compare with");
