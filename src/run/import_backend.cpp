@@ -103,9 +103,12 @@ std::optional<Cost> ImportBackend::cost(double dt) const {
 void ImportBackend::complete(const Scene& scene, RunRecord& run) const {
   if (!run.dt) return;
   if (ran_to_end(run.status) || run.status == RunStatus::Diverged) run.cost = cost(*run.dt);
-  if (!run_at(*run.dt).samples_only()) return;
+  // What the steps between the samples would have shown is not in the file: the replay's
+  // steps hold the last sample still, so whatever was measured from them is void, a value
+  // or a note alike (a run that did not finish says so already).
+  if (!run_at(*run.dt).samples_only() || !ran_to_end(run.status)) return;
   for (std::size_t i = 0; i < run.observables.size() && i < scene.observes.size(); ++i)
-    if (observable_needs(scene.observes[i].kind, kReadsSteps) && run.observables[i].measured.value)
+    if (observable_needs(scene.observes[i].kind, kReadsSteps))
       run.observables[i].measured = {std::nullopt, kSamplesOnlyNote};
 }
 

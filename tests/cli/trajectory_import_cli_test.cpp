@@ -92,7 +92,9 @@ TEST(TrajectoryImportCli, TheExampleProgramsRowHasItsOwnErrorAndOrderOne) {
   EXPECT_NEAR(results["order"]["import/euler"].get<double>(), 1.0, 0.1) << results["order"];
   // The other steps of the case have no row of it.
   for (const auto& run : results["runs"])
-    if (run["backend"] == "import/euler") EXPECT_GE(run["dt"].get<double>(), 1.0 / 120.0 - 1e-12);
+    if (run["backend"] == "import/euler") {
+      EXPECT_GE(run["dt"].get<double>(), 1.0 / 120.0 - 1e-12);
+    }
 }
 
 /// A folder with the minimal case (one ball falling in air, dt 0.1 s and 0.05 s, 1 s) and
