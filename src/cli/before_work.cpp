@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
 #include "report/format.hpp"
+#include "scene/case_error.hpp"
 
 namespace bb::cli {
 
@@ -22,6 +23,19 @@ void check_before_work(const std::vector<Scene>& scenes, const RunOptions& optio
                  "gates at report_dt will be empty\n",
                  scene.name, format_dt(scene.report_dt));
   }
+}
+
+RunOptions with_imports(const std::vector<Scene>& scenes, const RunOptions& options) {
+  if (options.import_files.empty()) return options;
+  // A trajectory is a run of one case: with several, which one it is would be a guess.
+  if (scenes.size() != 1)
+    throw CaseError("--trajectory", 0,
+                    "a trajectory is a run of one case, and the command has " +
+                        std::to_string(scenes.size()) +
+                        " cases: give the one case file the trajectories belong to");
+  RunOptions out = options;
+  out.imports = load_imports(scenes.front(), options.import_files);
+  return out;
 }
 
 }  // namespace bb::cli

@@ -28,8 +28,9 @@ std::pair<bool, bool> worse_and_better(const std::vector<CaseResults>& all) {
 }  // namespace
 
 int check_command(const std::vector<std::string>& paths, const std::string& junit,
-                  const std::string& baseline, const RunOptions& options) {
+                  const std::string& baseline, const RunOptions& given) {
   const std::vector<Scene> scenes = load_cases(paths);
+  const RunOptions options = with_imports(scenes, given);
   const Registry registry = Registry::load();
   for (const Scene& scene : scenes) check_run_options(scene, options);
   // The JUnit file and the baseline are checked before the runs, not found bad after them.

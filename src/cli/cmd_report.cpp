@@ -30,8 +30,9 @@ IndexSource index_source(const std::vector<std::string>& paths, const std::strin
 }  // namespace
 
 int report_command(const std::vector<std::string>& paths, const std::string& out,
-                   const RunOptions& options) {
+                   const RunOptions& given) {
   const std::vector<Scene> scenes = load_cases(paths);
+  const RunOptions options = with_imports(scenes, given);
   const Registry registry = Registry::load();
   check_before_work(scenes, options);
   const OutputFolder folder(out);

@@ -28,9 +28,10 @@ int files_in(const std::string& folder) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& paths, const std::string& out,
-                const RunOptions& options, bool all_runs_first, bool trajectories) {
+                const RunOptions& given, bool all_runs_first, bool trajectories) {
   // Every case is loaded and checked before anything runs or is written.
   const std::vector<Scene> scenes = load_cases(paths);
+  const RunOptions options = with_imports(scenes, given);
   const Registry registry = Registry::load();
   check_before_work(scenes, options);
   if (trajectories)

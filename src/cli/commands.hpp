@@ -37,6 +37,10 @@ std::vector<std::string> case_output_names(const Scene& scene);
 /// what each case has, every output name fits.
 void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options);
 
+/// `options` with the programs' trajectories it names (`import_files`) read and checked
+/// against the one case they belong to; throws CaseError with more than one case.
+RunOptions with_imports(const std::vector<Scene>& scenes, const RunOptions& options);
+
 int list_command(const std::vector<std::string>& paths);
 /// `run`; with `all_runs_first` (a merge), every case's results are had before any case's
 /// files are written; with `trajectories`, every run's state at every step too, into

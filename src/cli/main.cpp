@@ -36,6 +36,8 @@ struct Values {
   bool fresh = false;
   bool trajectories = false;         ///< run: every run's state at every step, as CSV files
   std::vector<std::string> plugins;  ///< --plugin: backend plugins built outside the tree
+  /// run, report, check: programs' trajectories, NAME@DT=FILE each
+  std::vector<std::string> imports;
 };
 
 /// The subcommands, once declared.
@@ -87,6 +89,13 @@ Commands declare_commands(CLI::App& app, Values& v) {
   };
   add_isolation_options(run);
   add_plugin_option(run);
+  // Programs' trajectories as backend rows: every command that runs a case's rows.
+  const auto add_import_option = [&](CLI::App* command) {
+    command->add_option("--trajectory", v.imports,
+                        "NAME@DT=FILE: a program's trajectory of the case at step DT (as --dt "
+                        "takes it) as the backend row import/NAME; repeatable, one case only");
+  };
+  add_import_option(run);
   // Options of every command whose results are kept between invocations.
   const auto add_cache_options = [&](CLI::App* command) {
     command->add_option("--cache", v.cache,
@@ -110,6 +119,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
   add_sweep_options(report);
   add_isolation_options(report);
   add_plugin_option(report);
+  add_import_option(report);
   add_cache_options(report);
   report->add_option("--shard", v.shard,
                      "I/N: run only share I of N of the work and keep its results in --out, "
@@ -138,6 +148,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
       ->default_val(v.default_jobs);
   add_isolation_options(stability);
   add_plugin_option(stability);
+  add_import_option(stability);
   add_cache_options(stability);
 
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
@@ -149,6 +160,7 @@ Commands declare_commands(CLI::App& app, Values& v) {
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
   add_isolation_options(check);
   add_plugin_option(check);
+  add_import_option(check);
   add_cache_options(check);
   check->add_option("--shard", v.shard,
                     "I/N: check only the gates of share I of N of the backends (a CI matrix)");
@@ -177,6 +189,19 @@ bb::RunOptions run_options(const CLI::App& app, Values& v) {
   options.isolation = !v.no_isolation;
   options.timeout = v.timeout;
   if (given("--shard")) options.shard = bb::cli::parse_shard(v.shard);
+  for (const std::string& text : v.imports)
+    options.import_files.push_back(bb::cli::parse_trajectory_import(text));
+  // A trajectory has its own steps only: no step can be searched, no share of it split.
+  if (!v.imports.empty() && std::string(command->get_name()) == "stability")
+    throw bb::CaseError("--trajectory", 0,
+                        "stability searches the largest stable step by running a backend at "
+                        "steps of its choosing, and a trajectory file has only the step it was "
+                        "written at: give it to `run`, `report` or `check`, whose rows show "
+                        "whether it diverged");
+  if (!v.imports.empty() && given("--shard"))
+    throw bb::CaseError("--trajectory", 0,
+                        "does not go with --shard: a trajectory is read, not run, and belongs to "
+                        "no share of the work");
   if (given("--baseline") && v.baseline.empty())
     throw bb::CaseError("--baseline", 0,
                         "is empty; give the folder of <case>.json to compare with");

@@ -59,6 +59,24 @@ double parse_step(const std::string& text) {
                   "'" + text + "' is not a positive, finite step in seconds (write 0.01 or 1/60)");
 }
 
+TrajectoryImport parse_trajectory_import(const std::string& text) {
+  const std::size_t at = text.find('@');
+  const std::size_t equals = at == std::string::npos ? at : text.find('=', at);
+  const auto refuse = [&](const std::string& why) -> TrajectoryImport {
+    throw CaseError("--trajectory", 0,
+                    "'" + text + "' " + why + " (write NAME@DT=FILE, e.g. mine@1/60=mine-60.csv)");
+  };
+  if (equals == std::string::npos) return refuse("has no '@' and '='");
+  TrajectoryImport out{text.substr(0, at), 0.0, text.substr(equals + 1)};
+  if (out.name.empty() ||
+      out.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                                 "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.+") != std::string::npos)
+    return refuse("has a NAME that is not letters, digits and - _ . +");
+  if (out.file.empty()) return refuse("names no FILE");
+  out.dt = parse_step(text.substr(at + 1, equals - at - 1));
+  return out;
+}
+
 Shard parse_shard(const std::string& text) {
   const auto slash = text.find('/');
   const auto whole = [](const std::string& part) {

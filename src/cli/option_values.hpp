@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "run/import_backend.hpp"
 #include "run/shard.hpp"
 
 namespace bb::cli {
@@ -33,6 +34,10 @@ std::vector<std::string> split_list(const std::string& option, const std::string
 /// "0.0166", "1/60" or "1e-3" as a finite, positive step in seconds; throws CaseError
 /// naming --dt otherwise.
 double parse_step(const std::string& text);
+
+/// "NAME@DT=FILE" (--trajectory): NAME of letters, digits and - _ . +, DT as --dt takes it,
+/// FILE a path; throws CaseError naming --trajectory otherwise.
+TrajectoryImport parse_trajectory_import(const std::string& text);
 
 /// "I/N", two whole numbers with 1 <= I <= N <= 10000, as a shard; throws CaseError naming
 /// --shard otherwise.

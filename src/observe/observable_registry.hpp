@@ -24,6 +24,9 @@ enum ObservableNeed : unsigned {
   kWatchesStretch = 1u << 3,  ///< every spring's largest stretch, between the steps too
   kWatchesOverlap = 1u << 4,  ///< the deepest overlap of the body's contacts
   kDrawsRotation = 1u << 5,   ///< the body's turn and spin get the rotation panel
+  /// Measured from what was watched at every step (events, turns, peaks), not from the
+  /// samples alone: a trajectory with rows at the samples only has no value for it.
+  kReadsSteps = 1u << 6,
 };
 
 /// One kind of observable.

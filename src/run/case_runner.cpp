@@ -44,7 +44,7 @@ std::vector<double> selected_dts(const Scene& scene, const RunOptions& options) 
 void check_backend_names(const Scene& scene, const RunOptions& options) {
   const std::vector<std::string> known = backend_names(scene, engine_catalogue());
   for (const std::string& name : options.backends)
-    if (std::find(known.begin(), known.end(), name) == known.end())
+    if (!is_import_name(name) && std::find(known.begin(), known.end(), name) == known.end())
       throw CaseError(scene.file, 0,
                       "--backends names '" + name + "', which this case does not run; it runs: " +
                           joined(runnable_backend_names(scene, engine_catalogue())));
@@ -122,7 +122,10 @@ int progress_units(const Scene& scene, const Registry& registry, const RunOption
   if (scene.sweep && options.sweep)
     for (double value : scene.sweep->values)
       sweep += in_shard(options.shard, scene, sweep_point_unit(value));
-  return backends * dts + 2 + (options.cost ? backends * dts + 1 : 0) + sweep;
+  int imported = 0;
+  for (const auto& imported_backend : options.imports)
+    imported += static_cast<int>(imported_backend->dts().size());
+  return backends * dts + imported + 2 + (options.cost ? backends * dts + 1 : 0) + sweep;
 }
 
 /// The reference's method and self-check (a second solve, `tight`), the floors below
@@ -255,6 +258,12 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
     if (auto v = b->library_version(); !v.first.empty()) out.versions[v.first] = v.second;
     for (double dt : dts) jobs.push_back({b, dt});
   }
+  // The programs' trajectories last, each at its own steps: the cost pass times the others.
+  const std::size_t timed_jobs = jobs.size();
+  for (const auto& imported : options.imports) {
+    out.versions[imported->library_version().first] = imported->library_version().second;
+    for (double dt : imported->dts()) jobs.push_back({imported.get(), dt});
+  }
 
   // Accuracy runs, each in its own child process: the reference, its self-check (another
   // method, 100 times tighter, smaller steps forced) to measure the reference's own error,
@@ -270,7 +279,10 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   add_missing_engines(scene, registry, options, dts, out);
   measure_runs(scene, dts, out);
   out.time_spent.accuracy = clock.lap();
-  time_costs(scene, reference, jobs, options, progress, out);
+  for (std::size_t i = timed_jobs; i < jobs.size(); ++i)
+    static_cast<const ImportBackend*>(jobs[i].backend)->complete(scene, out.runs[i]);
+  time_costs(scene, reference, {jobs.begin(), jobs.begin() + static_cast<long>(timed_jobs)},
+             options, progress, out);
   out.time_spent.cost = clock.lap();
   fit_orders(scene, out);
 

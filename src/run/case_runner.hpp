@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "run/cost.hpp"
+#include "run/import_backend.hpp"
 #include "run/registry.hpp"
 #include "run/results.hpp"
 #include "run/run_cache.hpp"
@@ -35,6 +36,11 @@ struct RunOptions {
   /// into, one file each (run --trajectories, trajectory_names.hpp); those runs are never
   /// taken from kept results, which hold no steps. "": none written.
   std::string trajectories;
+  /// Programs' trajectories of the case (run --trajectory NAME@DT=FILE), each a backend row
+  /// that runs at its files' steps only, whatever --backends and --dt select; never timed.
+  std::vector<std::shared_ptr<const ImportBackend>> imports;
+  /// The --trajectory options as given, read into `imports` once the case is loaded.
+  std::vector<TrajectoryImport> import_files;
   /// Called after each piece of work with what was done, e.g. "bullet 1/60"; may be called
   /// from several threads at once, never concurrently.
   std::function<void(const std::string&)> on_progress;

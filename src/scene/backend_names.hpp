@@ -42,6 +42,16 @@ std::vector<std::string> backend_names(const Scene& scene, const EngineCatalogue
 std::string why_backend_cannot_run(const Scene& scene, const std::string& name,
                                    const EngineCatalogue& catalogue);
 
+/// The prefix of a program's trajectory brought in as a backend (run --trajectory
+/// NAME@DT=FILE): "import/NAME".
+inline constexpr const char* kImportPrefix = "import/";
+
+/// Whether `backend` names a program's trajectory ("import/NAME"): a case's gates and claims
+/// may name one, given on the command line.
+inline bool is_import_name(const std::string& backend) {
+  return backend.size() > std::string(kImportPrefix).size() && backend.rfind(kImportPrefix, 0) == 0;
+}
+
 /// The backends of backend_names() that run `scene`, in the same order.
 std::vector<std::string> runnable_backend_names(const Scene& scene,
                                                 const EngineCatalogue& catalogue);

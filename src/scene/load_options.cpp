@@ -166,7 +166,8 @@ MetricNames::MetricNames(const Scene& scene) {
 void require_runnable(const TomlReader& r, const Scene& scene, const std::string& key,
                       const std::string& what, const std::string& backend,
                       const std::vector<std::string>& runnable, const EngineCatalogue& catalogue) {
-  if (contains(runnable, backend)) return;
+  // A program's trajectory is given on the command line, not in the case.
+  if (contains(runnable, backend) || is_import_name(backend)) return;
   const std::vector<std::string> known = backend_names(scene, catalogue);
   if (!contains(known, backend))
     r.fail(r.line_of(key), what + " names backend '" + backend +

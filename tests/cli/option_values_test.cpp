@@ -62,5 +62,15 @@ TEST(OptionValues, TheProgramRefusesEachBeforeCreatingTheOutputFolder) {
   }
 }
 
+TEST(OptionValues, ATrajectoryIsANameAStepAndAFile) {
+  const TrajectoryImport t = cli::parse_trajectory_import("my-euler@1/60=out/a=b.csv");
+  EXPECT_EQ(t.name, "my-euler");
+  EXPECT_DOUBLE_EQ(t.dt, 1.0 / 60.0);
+  EXPECT_EQ(t.file, "out/a=b.csv");
+  for (const std::string bad : {"mine", "mine@1/60", "@1/60=a.csv", "a/b@1/60=a.csv", "mine@=a.csv",
+                                "mine@0=a.csv", "mine@1/60="})
+    EXPECT_THROW(cli::parse_trajectory_import(bad), CaseError) << bad;
+}
+
 }  // namespace
 }  // namespace bb
