@@ -16,15 +16,14 @@ namespace bb::cli {
 namespace {
 
 /// The bundled suite (no case named) regenerates with scripts/report; the user's own cases
-/// with the command they ran.
-IndexSource index_source(const std::vector<std::string>& paths, const std::string& out) {
+/// with the command they ran. (Not the output folder: a report is the same bytes wherever
+/// it is written, a merged one as an unsplit one.)
+IndexSource index_source(const std::vector<std::string>& paths) {
   if (paths.empty()) return {"The bundled suite", "`scripts/report`"};
   std::string named;
   for (const std::string& p : paths) named += (named.empty() ? "" : ", ") + markdown_text(p);
-  std::string command = "beachball report";
-  for (const std::string& p : paths) command += " " + markdown_text(p);
   return {"The cases of " + named,
-          command + " --out " + markdown_text(out) + " (with this run's options)"};
+          "beachball report " + named + " (with this run's options and output folder)"};
 }
 
 }  // namespace
@@ -65,8 +64,8 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
     for (const CaseResults& r : all)
       rotation_plots.push_back(write_case_outputs(r, batch).rotation);
     stop_if_interrupted("the report's index");
-    batch.write("README.md", index_page(all, rotation_plots, options.cost, options.jobs,
-                                        index_source(paths, out)));
+    batch.write("README.md",
+                index_page(all, rotation_plots, options.cost, options.jobs, index_source(paths)));
     batch.write("claims.md", claims_page(all));
     report.drop_old_report(batch);
     const DeferSignals switching;
