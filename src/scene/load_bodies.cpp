@@ -6,6 +6,7 @@
 
 #include "scene/load_case.hpp"
 #include "scene/load_parts.hpp"
+#include "scene/rest_on.hpp"
 #include "scene/text.hpp"
 #include "scene/vector_limits.hpp"
 
@@ -234,6 +235,30 @@ void read_hull(TomlReader& r, const Scene& scene, Body& b) {
   b.hull = hull;
 }
 
+/// `rest_on = "ground"`: the body placed on the ground (rest_on.hpp); without it, a moving
+/// body that starts a hair's breadth off the ground is told where it is and what places it.
+void read_rest_on(TomlReader& r, const Scene& scene, Body& b) {
+  if (!r.has("rest_on")) {
+    if (!scene.ground || b.fixed) return;
+    if (const std::string miss = near_ground_miss(b, *scene.ground); !miss.empty())
+      r.fail(r.line_of("position"),
+             "body '" + b.name + "' " + miss + ": set rest_on = \"ground\" to place it on it");
+    return;
+  }
+  const std::string on = r.string("rest_on");
+  if (on != "ground") r.fail(r.line_of("rest_on"), "'rest_on' is \"ground\", not \"" + on + "\"");
+  if (!scene.ground)
+    r.fail(r.line_of("rest_on"), r.where() + " rests on the ground, and the case has no [ground]");
+  // A box is turned to the ground: a turn of its own would be overruled.
+  for (const char* key : {"angle", "orientation"})
+    if (b.shape == Shape::Box && r.has(key))
+      r.fail(r.line_of(key), "rest_on turns box '" + b.name +
+                                 "' to the ground (its y axis along the normal): leave '" + key +
+                                 "' out (to stand it on another face, swap its half_extents)");
+  place_on_ground(b, *scene.ground);
+  require_vector_range(r, "position", b.position, VectorKind::Position);
+}
+
 }  // namespace
 
 void read_bodies(TomlReader& root, Scene& scene) {
@@ -263,6 +288,7 @@ void read_bodies(TomlReader& root, Scene& scene) {
     require_vector_range(r, "velocity", b.velocity, VectorKind::Velocity);
     read_orientation(r, scene, b);
     refuse_motion_of_fixed(r, b);
+    read_rest_on(r, scene, b);
     read_air_coefficients(r, scene, b);
     read_applied_load(r, scene, b);
     read_sail(r, scene, b);
