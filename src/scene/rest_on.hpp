@@ -1,4 +1,5 @@
-// A body placed on the ground (`rest_on = "ground"` in a [[body]]), and the test for one
+// A body placed on the ground or on top of another body (`rest_on` in a [[body]]), and the
+// test for one
 // that starts near it but not on it: such a start is a mistake of a few micrometres that
 // sends a box to the reference's fallback ("does not start flat on a face on the ground").
 #pragma once
@@ -22,6 +23,14 @@ inline constexpr double kNearMissTilt = 1e-3;
 /// along the normal replaced). A box is first turned so that its y axis is the normal
 /// (the shortest turn from +y), so its -y face lies on the plane.
 void place_on_ground(Body& body, const Ground& ground);
+
+/// Puts `body` on top of `below`, along `up` (unit, against gravity): its part across `up`
+/// is kept and its height set so that it touches `below` from above. A box is first turned
+/// by the shortest turn taking its y axis to `up`. `below` is a sphere, or a box with a face
+/// turned to `up` (cosine within 1e-12 of 1), and `body`'s centre must be over it (over the
+/// box's top face; within the spheres' summed radii of the sphere's centre; a box over a
+/// sphere: the sphere's top under its bottom face). Returns why it cannot, "" when placed.
+std::string place_on_body(Body& body, const Body& below, const Vec3& up);
 
 /// What is wrong with `body`'s start near `ground` ("starts 2.4e-06 m above the ground",
 /// "... inside ...", "is turned 0.0007 degrees from flat on the ground"), or "" when it

@@ -166,7 +166,7 @@ TEST(RestOn, ABoxTurnedAHairFromFlatIsToldTheTurn) {
 
 TEST(RestOn, IsRefusedWithoutAGroundOnAnythingElseAndBesideABoxsOwnTurn) {
   EXPECT_NE(load_error(on_a_slope(30.0, std::string(kCrate) + "rest_on = \"table\"\n"))
-                .find("'rest_on' is \"ground\", not \"table\""),
+                .find("'rest_on' \"table\" is neither \"ground\" nor a body"),
             std::string::npos);
   EXPECT_NE(
       load_error(on_a_slope(30.0, std::string(kCrate) + "rest_on = \"ground\"\nangle = 30.0\n"))
