@@ -1,7 +1,7 @@
 // A body placed on the ground or on top of another body (`rest_on` in a [[body]]), and the
-// test for one
-// that starts near it but not on it: such a start is a mistake of a few micrometres that
-// sends a box to the reference's fallback ("does not start flat on a face on the ground").
+// test for one that starts near the ground but not on it: such a start is a mistake of a few
+// micrometres that sends a box to the reference's fallback ("does not start flat on a face on
+// the ground").
 #pragma once
 
 #include <string>
