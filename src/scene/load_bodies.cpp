@@ -238,7 +238,7 @@ void read_hull(TomlReader& r, const Scene& scene, Body& b) {
 }
 
 /// `rest_on`: "ground" places the body on the ground (rest_on.hpp); another body's name is
-/// returned, to place it once every body is read. Without it, a moving body that starts a
+/// returned, to place it once every body is read. Without it, a moving box that starts a
 /// hair's breadth off the ground is told where it is and what places it.
 std::optional<std::string> read_rest_on(TomlReader& r, const Scene& scene, Body& b) {
   if (!r.has("rest_on")) {

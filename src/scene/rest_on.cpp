@@ -11,14 +11,13 @@ namespace bb {
 
 namespace {
 
-/// How far `body` reaches from its centre along the unit `n`.
-double reach_along(const Body& body, const Vec3& n) {
-  if (body.shape == Shape::Sphere) return body.radius;
-  if (body.shape == Shape::Point) return 0.0;
+/// How far `box` reaches from its centre along the unit `n` (its depth below a plane
+/// through its centre).
+double box_reach_along(const Body& box, const Vec3& n) {
   Ground through_centre;
-  through_centre.point = body.position;
+  through_centre.point = box.position;
   through_centre.normal = n;
-  return ground_depth(body, through_centre);
+  return ground_depth(box, through_centre);
 }
 
 /// How far `body` reaches below its centre once turned to rest (its y axis along the normal).
@@ -79,18 +78,20 @@ void place_on_ground(Body& body, const Ground& ground) {
 }
 
 std::string near_ground_miss(const Body& body, const Ground& ground) {
-  const double size = reach_along(body, ground.normal);
-  if (size <= 0.0) return "";
+  // A ball a hair off the ground lands on it, or is on its way: only a box is lost to the
+  // reference by it.
+  if (body.shape != Shape::Box) return "";
+  const double size = box_reach_along(body, ground.normal);
   const double depth = ground_depth(body, ground);
   const double gap = std::abs(depth);
   if (gap > kNearMissFraction * size) return "";
   if (gap > kOverlapRounding)
     return "starts " + significant_digits(gap) + " m " + (depth > 0.0 ? "inside" : "above") +
            " the ground";
-  if (body.shape != Shape::Box) return "";
-  // The ground's normal in the box's frame: its largest part is the cosine of the turn
-  // from the nearest face. The reference's own test of a box lying flat (sliding_modes.cpp)
-  // wants that cosine within 1e-12 of 1.
+  // Within rounding of the ground: flat on a face, or turned from it on purpose? The ground's
+  // normal in the box's frame: its largest part is the cosine of the turn from the nearest face.
+  // The reference's own test of a box lying flat (sliding_modes.cpp) wants that cosine within 1e-12
+  // of 1.
   Vec3 local = (body.orientation.conjugate() * ground.normal).cwiseAbs();
   Eigen::Index face = 0;
   const double cosine = local.maxCoeff(&face);

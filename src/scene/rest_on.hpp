@@ -10,8 +10,8 @@
 
 namespace bb {
 
-/// A gap or overlap below this fraction of a body's size (its reach along the ground's
-/// normal), and above kOverlapRounding, is a body meant to rest on the ground but not on it.
+/// A gap or overlap below this fraction of a box's size (its reach along the ground's
+/// normal), and above kOverlapRounding, is a box meant to rest on the ground but not on it.
 inline constexpr double kNearMissFraction = 1e-3;
 
 /// Below this turn (radians) from flat, a box on the ground is meant to lie flat on a face.
@@ -34,7 +34,8 @@ std::string place_on_body(Body& body, const Body& below, const Vec3& up);
 
 /// What is wrong with `body`'s start near `ground` ("starts 2.4e-06 m above the ground",
 /// "... inside ...", "is turned 0.0007 degrees from flat on the ground"), or "" when it
-/// rests on it to rounding, is clearly apart from it, or is a point.
+/// rests on it to rounding, is clearly apart from it, or is not a box (a ball a hair off the
+/// ground lands on it; a box is lost to the reference, which needs it flat on a face).
 std::string near_ground_miss(const Body& body, const Ground& ground);
 
 }  // namespace bb

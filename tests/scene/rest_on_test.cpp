@@ -162,6 +162,11 @@ TEST(RestOn, ABoxTurnedAHairFromFlatIsToldTheTurn) {
   box.orientation = quat_from_axis_angle(Vec3::UnitZ(), M_PI / 4.0);
   box.position += ground_depth(box, g) * g.normal;
   EXPECT_EQ(near_ground_miss(box, g), "");
+  // A ball a hair above the ground lands on it (or is on its way): nothing to say.
+  Body ball;
+  ball.radius = 0.5;
+  ball.position = (0.5 + 2.4e-6) * g.normal;
+  EXPECT_EQ(near_ground_miss(ball, g), "");
 }
 
 TEST(RestOn, IsRefusedWithoutAGroundOnAnythingElseAndBesideABoxsOwnTurn) {
