@@ -2,10 +2,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <utility>
 
+#include "scene/contact_pairs.hpp"
 #include "scene/load_case.hpp"
 #include "scene/load_parts.hpp"
+#include "scene/rest_on.hpp"
 #include "scene/text.hpp"
 #include "scene/vector_limits.hpp"
 
@@ -234,9 +237,70 @@ void read_hull(TomlReader& r, const Scene& scene, Body& b) {
   b.hull = hull;
 }
 
+/// `rest_on`: "ground" places the body on the ground (rest_on.hpp); another body's name is
+/// returned, to place it once every body is read. Without it, a moving box that starts a
+/// hair's breadth off the ground is told where it is and what places it.
+std::optional<std::string> read_rest_on(TomlReader& r, const Scene& scene, Body& b) {
+  if (!r.has("rest_on")) {
+    if (!scene.ground || b.fixed) return std::nullopt;
+    if (const std::string miss = near_ground_miss(b, *scene.ground); !miss.empty())
+      r.fail(r.line_of("position"),
+             "body '" + b.name + "' " + miss + ": set rest_on = \"ground\" to place it on it");
+    return std::nullopt;
+  }
+  const std::string on = r.string("rest_on");
+  if (on != "ground" && scene.gravity.isZero(0.0))
+    r.fail(r.line_of("rest_on"),
+           r.where() + " rests on '" + on + "' along gravity, and the case has none");
+  if (on == "ground" && !scene.ground)
+    r.fail(r.line_of("rest_on"), r.where() + " rests on the ground, and the case has no [ground]");
+  // A box is turned to what it rests on: a turn of its own would be overruled.
+  for (const char* key : {"angle", "orientation"})
+    if (b.shape == Shape::Box && r.has(key))
+      r.fail(r.line_of(key), "rest_on turns box '" + b.name + "' to " +
+                                 (on == "ground" ? "the ground" : "'" + on + "'") +
+                                 " (its y axis along the normal): leave '" + key +
+                                 "' out (to stand it on another face, swap its half_extents)");
+  if (on != "ground") return on;
+  place_on_ground(b, *scene.ground);
+  require_vector_range(r, "position", b.position, VectorKind::Position);
+  return std::nullopt;
+}
+
+/// Places the resting bodies, each after the body under it (a stack is placed from the
+/// bottom), refusing an unknown body, a ring of bodies resting on each other, and a body
+/// that cannot rest where it is (place_on_body's reasons).
+void place_resting(const TomlReader& root, Scene& scene, const std::vector<Resting>& resting) {
+  std::vector<int> state(scene.bodies.size(), 0);  // 0 to place, 1 placing, 2 placed
+  std::vector<const Resting*> of(scene.bodies.size(), nullptr);
+  for (const Resting& r : resting) of[static_cast<std::size_t>(r.body)] = &r;
+  const Vec3 up = -scene.gravity.normalized();
+  const auto place = [&](const auto& self, const Resting& r) -> void {
+    const auto index = static_cast<std::size_t>(r.body);
+    if (state[index] == 2) return;
+    Body& body = scene.bodies[index];
+    if (state[index] == 1)
+      root.fail(r.line, "body '" + body.name + "' rests, through rest_on, on itself");
+    state[index] = 1;
+    const int below = scene.body_index(r.on);
+    if (below < 0) root.fail(r.line, "'rest_on' \"" + r.on + "\" is neither \"ground\" nor a body");
+    if (const Resting* under = of[static_cast<std::size_t>(below)]) self(self, *under);
+    if (const std::string problem = place_on_body(body, scene.bodies[below], up); !problem.empty())
+      root.fail(r.line, "body '" + body.name + "' cannot rest on '" + r.on + "': " + problem);
+    if (const std::string problem = vector_limit_problem(VectorKind::Position, body.position);
+        !problem.empty())
+      root.fail(r.line, "body '" + body.name + "' resting on '" + r.on + "' has a position that " +
+                            problem);
+    refuse_ground_overlap(root, scene, body, r.line);
+    state[index] = 2;
+  };
+  for (const Resting& r : resting) place(place, r);
+}
+
 }  // namespace
 
-void read_bodies(TomlReader& root, Scene& scene) {
+std::vector<Resting> read_bodies(TomlReader& root, Scene& scene) {
+  std::vector<Resting> resting;
   for (const toml::table* t : root.tables("body")) {
     TomlReader r = sub_reader(root, *t, "[[body]]");
     Body b;
@@ -263,14 +327,35 @@ void read_bodies(TomlReader& root, Scene& scene) {
     require_vector_range(r, "velocity", b.velocity, VectorKind::Velocity);
     read_orientation(r, scene, b);
     refuse_motion_of_fixed(r, b);
+    const std::optional<std::string> on = read_rest_on(r, scene, b);
+    if (on) resting.push_back({static_cast<int>(scene.bodies.size()), *on, r.line_of("rest_on")});
     read_air_coefficients(r, scene, b);
     read_applied_load(r, scene, b);
     read_sail(r, scene, b);
     read_hull(r, scene, b);
     read_plate(r, scene, b);
-    refuse_ground_overlap(r, scene, b, r.line_of("position"));
+    if (!on) refuse_ground_overlap(r, scene, b, r.line_of("position"));
     r.finish();
     scene.bodies.push_back(b);
+  }
+  place_resting(root, scene, resting);
+  return resting;
+}
+
+void require_resting_contacts(const TomlReader& root, const Scene& scene,
+                              const std::vector<Resting>& resting) {
+  if (resting.empty()) return;
+  const std::vector<ContactPair> pairs = contact_pairs(scene);
+  for (const Resting& r : resting) {
+    const int below = scene.body_index(r.on);
+    const bool touch = std::any_of(pairs.begin(), pairs.end(), [&](const ContactPair& p) {
+      return (p.a == r.body && p.b == below) || (p.a == below && p.b == r.body);
+    });
+    const Body& body = scene.bodies[static_cast<std::size_t>(r.body)];
+    if (!touch && !(body.fixed && scene.bodies[static_cast<std::size_t>(below)].fixed))
+      root.fail(r.line, "body '" + body.name + "' rests on '" + r.on +
+                            "', and the two do not touch: add a [[contact]] with bodies = [\"" +
+                            body.name + "\", \"" + r.on + "\"] (or [\"*\"]), or it falls through");
   }
 }
 

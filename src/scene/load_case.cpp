@@ -158,7 +158,7 @@ Scene parse_case(std::string_view text, const std::string& file, const CaseVocab
   read_header(root, scene);
   read_timing(root, scene);
   load::read_air_and_ground(root, scene);
-  load::read_bodies(root, scene);
+  const std::vector<load::Resting> resting = load::read_bodies(root, scene);
   const std::optional<load::GridPlan> grid = load::read_grid(root, scene);
   load::read_waves(root, scene, grid.has_value());
   // Every limit that numbers decide, before the grid's particles and springs are made.
@@ -173,6 +173,7 @@ Scene parse_case(std::string_view text, const std::string& file, const CaseVocab
     root.fail(root.line(), "the case has no [[body]], no [grid] and no [waves]");
   const load::BodyNames names(root, scene);
   load::read_contacts(root, scene, names);
+  load::require_resting_contacts(root, scene, resting);
   load::read_springs(root, scene, names);
   load::read_hinges(root, scene, names);
   load::read_impulses(root, scene, names);

@@ -17,7 +17,19 @@ namespace bb::load {
 /// Reader for a sub-table, named in messages by `where`.
 TomlReader sub_reader(const TomlReader& parent, const toml::table& table, const std::string& where);
 
-void read_bodies(TomlReader& root, Scene& scene);
+/// A [[body]] with rest_on = "<another body>": placed on it once every body is read.
+struct Resting {
+  int body = -1;
+  std::string on;
+  int line = 0;
+};
+
+/// Reads the [[body]] tables and places each body that rests on another; returns those.
+std::vector<Resting> read_bodies(TomlReader& root, Scene& scene);
+/// Fails unless each resting body touches the body under it (a [[contact]] names the
+/// pair, or ["*"]), once the contacts are read: without one it would fall through.
+void require_resting_contacts(const TomlReader& root, const Scene& scene,
+                              const std::vector<Resting>& resting);
 
 /// A [grid] as its keys give it, before any particle is made, and what it will make.
 struct GridPlan {

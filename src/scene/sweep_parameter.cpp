@@ -42,6 +42,27 @@ auto wave_field(W& waves, const std::string& name) -> decltype(&waves.amplitude)
   return nullptr;
 }
 
+/// How many of Scene::springs, from the first, the [grid] made (they carry its line; the
+/// loader adds them before any [[spring]]).
+std::size_t grid_spring_count(const Scene& scene) {
+  if (!scene.grid) return 0;
+  std::size_t count = 0;
+  while (count < scene.springs.size() && scene.springs[count].line == scene.grid->line) ++count;
+  return count;
+}
+
+/// The index in Scene::springs of `[[spring]]` number `n` ("1" is the file's first; the
+/// [grid]'s springs come before them), or -1.
+template <class S>
+int spring_table_index(S& scene, const std::string& n) {
+  if (n.empty() || n.size() > 9 || n.find_first_not_of("0123456789") != std::string::npos ||
+      n[0] == '0')
+    return -1;
+  const std::size_t first = grid_spring_count(scene);
+  const std::size_t index = first + std::stoul(n) - 1;
+  return index < scene.springs.size() ? static_cast<int>(index) : -1;
+}
+
 /// Where a path points: the number it names in `scene` (null when it names nothing).
 template <class S>
 std::conditional_t<std::is_const_v<S>, const double*, double*> target(
@@ -98,6 +119,19 @@ std::conditional_t<std::is_const_v<S>, const double*, double*> target(
   }
   if (p[0] == "gravity" && p.size() == 2 && component(p[1]) >= 0)
     return &scene.gravity[component(p[1])];
+  // A spring's constants; the grid's are one pair for all its springs.
+  if (p[0] == "spring" && p.size() == 3) {
+    const int i = spring_table_index(scene, p[1]);
+    if (i < 0) return nullptr;
+    if (p[2] == "stiffness") return &scene.springs[static_cast<std::size_t>(i)].stiffness;
+    if (p[2] == "damping") return &scene.springs[static_cast<std::size_t>(i)].damping;
+    return nullptr;
+  }
+  if (p[0] == "grid" && p.size() == 2 && scene.grid) {
+    if (p[1] == "stiffness") return &scene.grid->stiffness;
+    if (p[1] == "damping") return &scene.grid->damping;
+    return nullptr;
+  }
   if (p[0] == "waves" && p.size() == 2 && scene.waves) return wave_field(*scene.waves, p[1]);
   return nullptr;
 }
@@ -143,7 +177,8 @@ const char* kKnownPaths =
     "body.<name>.sail.angle|area|coefficient|heel_stiffness, "
     "body.<name>.plate.k|coefficient|area (k with the course law, coefficient the quadratic), "
     "ground.restitution|friction_static|friction_kinetic|normal (an angle in degrees), "
-    "air.density, air.wind.x|y|z, gravity.x|y|z, waves.amplitude|wavenumber|speed";
+    "air.density, air.wind.x|y|z, gravity.x|y|z, waves.amplitude|wavenumber|speed, "
+    "spring.<n>.stiffness|damping (the n-th [[spring]], from 1), grid.stiffness|damping";
 
 }  // namespace
 
@@ -154,8 +189,11 @@ std::string sweep_path_problem(const Scene& scene, const std::string& path) {
   if (!found) {
     if (p[0] == "body" && p.size() >= 2 && scene.body_index(p[1]) < 0)
       return "'" + path + "' names no body '" + p[1] + "'";
+    if (p[0] == "spring" && p.size() == 3 && spring_table_index(scene, p[1]) < 0)
+      return "'" + path + "' names no [[spring]] number '" + p[1] + "' (they count from 1 in " +
+             "the file's order)";
     if ((p[0] == "ground" && !scene.ground) || (p[0] == "air" && !scene.air) ||
-        (p[0] == "waves" && !scene.waves))
+        (p[0] == "waves" && !scene.waves) || (p[0] == "grid" && !scene.grid))
       return "'" + path + "' names the " + p[0] + ", and the case has no [" + p[0] + "]";
     return "'" + path + "' names nothing in the case; known: " + kKnownPaths;
   }
@@ -198,6 +236,13 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
     return at + " must not be negative";
   if ((field == "area" || field == "coefficient" || field == "k") && value <= 0.0)
     return at + " must be greater than 0";
+  // The loader's own bounds on a spring's constants ([[spring]] and [grid]).
+  if ((p[0] == "spring" || p[0] == "grid") && field == "stiffness" &&
+      !(value > 0.0 && value <= kMostSpringConstant))
+    return at + " must be greater than 0 and at most " + short_number(kMostSpringConstant) + " N/m";
+  if ((p[0] == "spring" || p[0] == "grid") && field == "damping" &&
+      !(value >= 0.0 && value <= kMostSpringConstant))
+    return at + " must be between 0 and " + short_number(kMostSpringConstant) + " N s/m";
   if (field == "heel_stiffness" && !(value > 0.0))
     return at +
            " must be greater than 0 (the boat heels by F_across / heel_stiffness, flat on "
@@ -250,6 +295,12 @@ void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
   const std::vector<std::string> p = sweep_path_parts(path);
   if (!(p[0] == "ground" && p.size() == 2 && p[1] == "normal")) {
     *target(scene, p) = value;
+    // The grid's constants are every one of its springs'.
+    if (p[0] == "grid")
+      for (std::size_t i = 0, n = grid_spring_count(scene); i < n; ++i) {
+        Spring& spring = scene.springs[i];
+        (p[1] == "stiffness" ? spring.stiffness : spring.damping) = value;
+      }
     // A wave surface's points start where the formula puts them.
     if (p[0] == "waves")
       for (int i = 0; i < scene.waves->points; ++i)

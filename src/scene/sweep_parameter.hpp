@@ -1,6 +1,7 @@
 // The parameter a [[sweep]] varies: a path into the case ("body.ball.position.y",
-// "ground.restitution", "ground.normal" as an angle, ...) read from and written into a
-// loaded Scene, so every point of a sweep is the same case with one number changed.
+// "ground.restitution", "ground.normal" as an angle, "spring.1.stiffness", "grid.damping", ...)
+// read from and written into a loaded Scene, so every point of a sweep is the same case with one
+// number changed.
 #pragma once
 
 #include <optional>
