@@ -7,6 +7,7 @@
 
 #include "report/json_writer.hpp"
 #include "run/sweep_runner.hpp"
+#include "support/results_rows.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -47,12 +48,6 @@ kind = "max_stretch"
 )" + sweep;
 }
 
-/// A results row as the JSON writes it, without its cost (none is measured here).
-std::string row_text(nlohmann::ordered_json row) {
-  row.erase("cost");
-  return row.dump();
-}
-
 /// The sweep's points against the case by hand at each value (`by_hand(i)`), every row.
 void expect_points_are_the_cases_by_hand(const Scene& swept_case,
                                          const std::vector<std::string>& by_hand) {
@@ -69,7 +64,7 @@ void expect_points_are_the_cases_by_hand(const Scene& swept_case,
     const auto& point = points[i]["runs"];
     ASSERT_EQ(point.size(), rows.size()) << i;
     for (std::size_t r = 0; r < rows.size(); ++r)
-      EXPECT_EQ(row_text(point[r]), row_text(rows[r])) << "point " << i;
+      EXPECT_EQ(test::row_text(point[r]), test::row_text(rows[r])) << "point " << i;
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "report/json_writer.hpp"
 #include "run/sweep_runner.hpp"
+#include "support/results_rows.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -168,12 +169,6 @@ body = "crate"
   return text + sweep;
 }
 
-/// A results row as the JSON writes it, without its cost (none is measured here).
-std::string row_text(nlohmann::ordered_json row) {
-  row.erase("cost");
-  return row.dump();
-}
-
 // A point of a sweep over ground.normal is the case written by hand at that angle, row for
 // row, byte for byte: every backend's status, reason, errors and observables. The crate
 // used to lose the reference at 10, 11, 12 and 25 degrees ("starts moving off the ground"):
@@ -198,7 +193,7 @@ TEST(Sweep, AGroundTiltPointIsTheCaseWrittenByHandAtThatAngle) {
     const auto& point = points[i]["runs"];
     ASSERT_EQ(point.size(), rows.size()) << angles[i];
     for (std::size_t k = 0; k < rows.size(); ++k) {
-      EXPECT_EQ(row_text(point[k]), row_text(rows[k])) << angles[i] << " degrees";
+      EXPECT_EQ(test::row_text(point[k]), test::row_text(rows[k])) << angles[i] << " degrees";
       if (point[k]["backend"] == "reference") {
         EXPECT_EQ(point[k]["status"], "ok") << angles[i] << ": " << point[k]["reason"];
       }
