@@ -11,6 +11,7 @@
 #include "report/motion_frames.hpp"
 #include "report/motion_geometry.hpp"
 #include "report/motion_paint.hpp"
+#include "report/motion_panels.hpp"
 #include "report/plot_layout.hpp"
 #include "scene/text.hpp"
 
@@ -21,14 +22,13 @@ namespace {
 using motion::Canvas;
 using motion::num;
 
-constexpr double kCanvasWidth = 760.0;  // pixels of one scene drawn at full size
-constexpr double kMargin = 10.0;
-constexpr double kGap = 12.0;  // between small panels
+using motion::kCanvasWidth;
+using motion::kMargin;
+using motion::Panel;
 constexpr double kLegendWidth = 300.0;
 constexpr double kTitleHeight = 48.0;
 constexpr double kNoteLine = 14.0;  // a line of the title's notes
 constexpr double kNoteFont = 11.0;
-constexpr double kPanelTitle = 18.0;
 constexpr double kTimeBarHeight = 46.0;
 constexpr double kMinCanvasHeight = 240.0;
 constexpr double kMaxCanvasHeight = 640.0;
@@ -85,49 +85,6 @@ std::vector<std::string> exit_lines(const Scene& scene, const std::vector<const 
     for (const std::string& line : wrapped(note, width - 2 * kMargin, kNoteFont))
       lines.push_back(line);
   return lines;
-}
-
-/// Where a panel sits on the page and how wide it is; the canvas fills it, scaled.
-struct Panel {
-  double x = 0.0, y = 0.0, width = 0.0;
-  std::string title;
-};
-
-/// A panel's title and the opening of its scaled, clipping viewport (closed by "</svg>").
-std::string open_panel(const Panel& p, const Canvas& c) {
-  const double top = p.title.empty() ? p.y : p.y + kPanelTitle;
-  std::string out;
-  if (!p.title.empty())
-    out += fmt::format("<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>\n", num(p.x),
-                       num(p.y + 13.0), p.title);
-  return out + fmt::format(
-                   "<svg x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
-                   "overflow=\"hidden\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\" "
-                   "stroke=\"#dddddd\"/>\n",
-                   num(p.x), num(top), num(p.width), num(c.height * p.width / c.width),
-                   num(c.width), num(c.height));
-}
-
-double panel_height(const Panel& p, const Canvas& c) {
-  return (p.title.empty() ? 0.0 : kPanelTitle) + c.height * p.width / c.width;
-}
-
-/// Panels for `count` runs: one at full size, or small ones in columns.
-std::vector<Panel> layout(std::size_t count, bool multiples, const Canvas& c, double columns,
-                          double top) {
-  std::vector<Panel> out;
-  if (!multiples) {
-    out.push_back({kMargin, top, kCanvasWidth, ""});
-    return out;
-  }
-  const double width = (kCanvasWidth - (columns - 1) * kGap) / columns;
-  const double height = kPanelTitle + c.height * width / c.width + kGap;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t col = i % static_cast<std::size_t>(columns);
-    const std::size_t row = i / static_cast<std::size_t>(columns);
-    out.push_back({kMargin + col * (width + kGap), top + row * height, width, ""});
-  }
-  return out;
 }
 
 /// One run's bodies (and springs) moving over `samples`; the paint is the group's.
@@ -273,12 +230,12 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   // Real time, but never shorter than 2 s nor longer than 40 s a loop.
   const double play = std::clamp(total, 2.0, 40.0);
 
-  std::vector<Panel> panels = layout(runs.size(), multiples, c, kColumns, top);
+  std::vector<Panel> panels = motion::layout(runs.size(), multiples, c, kColumns, top);
   const double thick = multiples ? c.width / panels.front().width : 1.0;
   double bottom = 0.0;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     if (multiples) panels[i].title = motion::run_label(*runs[i]);
-    bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
+    bottom = std::max(bottom, panels[i].y + motion::panel_height(panels[i], c));
   }
   // Tall enough for the legend too: a long one ran off the picture's bottom.
   const double height =
@@ -297,7 +254,7 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c) +
                                motion::wind_svg(scene, c, thick);
   if (!multiples) {
-    svg += open_panel(panels.front(), c) + backdrop;
+    svg += motion::open_panel(panels.front(), c) + backdrop;
     for (std::size_t r = 0; r < runs.size(); ++r)
       svg += animated_run(scene, *runs[r], drawn, samples, c, springs_of(r), total, play, thick);
     svg += motion::exit_marks_svg(scene, runs, drawn, exits, runs.size(), c, thick, timing);
@@ -309,7 +266,7 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
           animated_run(scene, *runs.front(), drawn, samples, c, springs_of(0), total, play, thick) +
           "</g>\n</defs>\n";
     for (std::size_t r = 0; r < runs.size(); ++r) {
-      svg += open_panel(panels[r], c) + backdrop;
+      svg += motion::open_panel(panels[r], c) + backdrop;
       if (ghost) svg += "<use xlink:href=\"#reference\"/>\n";
       if (r > 0 || !ghost)
         svg += animated_run(scene, *runs[r], drawn, samples, c, springs_of(r), total, play, thick);
@@ -343,11 +300,11 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
   // above it, a column per instant, each over the reference at that instant.
   const std::size_t count = multiples ? runs.size() * instants.size() : instants.size();
   const double columns = multiples ? static_cast<double>(instants.size()) : 2.0;
-  std::vector<Panel> panels = layout(count, true, c, columns, top);
+  std::vector<Panel> panels = motion::layout(count, true, c, columns, top);
   const double thick = c.width / panels.front().width;
   const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c) +
                                motion::wind_svg(scene, c, thick);
-  const double row_header = multiples ? kPanelTitle : 0.0;
+  const double row_header = multiples ? motion::kPanelTitle : 0.0;
   std::string row_names;
   double bottom = 0.0;
   for (std::size_t i = 0; i < panels.size(); ++i) {
@@ -358,7 +315,7 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
       row_names +=
           fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
                       num(kMargin), num(panels[i].y - 4.0), motion::run_label(*runs[row]));
-    bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
+    bottom = std::max(bottom, panels[i].y + motion::panel_height(panels[i], c));
   }
   const double height = std::max(
       bottom + kMargin, multiples ? 0.0 : motion::legend_bottom(runs.size(), top + 14.0) + kMargin);
@@ -381,7 +338,7 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
   }
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const std::size_t at = i % instants.size();
-    svg += open_panel(panels[i], c) + backdrop;
+    svg += motion::open_panel(panels[i], c) + backdrop;
     const motion::MarkTiming timing{0.0, 0.0, instants[at]};
     if (multiples) {
       const std::size_t r = i / instants.size();

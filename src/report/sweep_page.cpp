@@ -317,7 +317,8 @@ std::string sweep_markdown(const CaseResults& results, const std::string& plot) 
     out +=
         "Left: each quantity against the parameter, the reference thick and black; right: "
         "its difference from the reference's at the same value (last row: the error "
-        "metrics).\n\n![sweep](" +
+        "metrics); a backend far off the reference's scale in a panel is cut at its edge and "
+        "named above it.\n\n![sweep](" +
         plot + ")\n";
   if (!spec.onset.empty()) out += onset_section(sweep, spec, backends);
 
