@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <optional>
 #include <utility>
@@ -12,6 +11,7 @@
 #include "report/backend_style.hpp"
 #include "report/body_panels.hpp"
 #include "report/gnuplot.hpp"
+#include "report/off_scale.hpp"
 #include "report/plot_layout.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
@@ -81,27 +81,6 @@ std::optional<std::pair<double, double>> first_point(const Trajectory& guide, st
     }
   return std::nullopt;
 }
-
-/// The values a panel's axis spans.
-struct Extent {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v) {
-    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-  }
-  bool empty() const { return lo > hi; }
-  double span() const { return empty() ? 0.0 : hi - lo; }
-  /// How far `v` lies outside, 0 inside.
-  double beyond(double v) const {
-    return empty() || !std::isfinite(v) ? 0.0 : std::max({0.0, lo - v, v - hi});
-  }
-};
-
-/// A run whose points leave the reference's extent on a panel by more than kTrajectoryOffScale
-/// times the panel's scale (the larger of the reference's span and the typical run's distance from
-/// it) is off the scale: the axis is set by the others and the run is cut at its edge (an exploding
-/// explicit Euler at 2800 m beside a cloth that moves 2 m).
-constexpr double kTrajectoryOffScale = 10.0;
 
 /// One run's series on one panel: per body of the group, its (across, value) points.
 struct PanelRun {
@@ -187,12 +166,9 @@ std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std:
         }
       reach.push_back(most);
     }
-    std::vector<double> sorted = reach;
-    std::sort(sorted.begin(), sorted.end());
-    const double typical = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
     const double span = path ? std::max(guide_x.span(), guide_y.span()) : guide_y.span();
     const double tiny = 1e-9 * (1.0 + std::max(std::abs(guide_y.lo), std::abs(guide_y.hi)));
-    const double limit = kTrajectoryOffScale * std::max({span, typical, tiny});
+    const double limit = off_scale_limit(reach, span, tiny);
     Extent window_x = guide_x, window_y = guide_y;
     bool cut = false;
     std::string plot, labels, names;

@@ -304,11 +304,12 @@ void TwoColumnPlot::add(bool right, std::size_t i, const std::string& backend,
   if (!right) left_titles_.push_back({backend, series_style(i, backend)});
 }
 
-void TwoColumnPlot::end_row(const std::string& left_label, const std::string& right_label) {
+void TwoColumnPlot::end_row(const std::string& left_label, const std::string& right_label,
+                            const Window& left_window, const Window& right_window) {
   if (!left_.empty() && !right_.empty()) {
     // The legend is the first row's left panel's.
     if (rows_.empty()) legend_ = left_titles_;
-    rows_.push_back({left_label, right_label, left_, right_});
+    rows_.push_back({left_label, right_label, left_, right_, left_window, right_window});
   }
   left_.clear();
   right_.clear();
@@ -328,17 +329,26 @@ std::string TwoColumnPlot::draw_into(FileBatch& batch, const std::string& name) 
     return quote_lines(wrapped(label, width * kPlotWidth, kNameFont));
   };
   const int height = std::max(80 + 260 * static_cast<int>(rows_.size()), band.height + 60);
-  std::string script;
+  // A panel's vertical axis: its window, else its own data's.
+  const auto y_axis = [](const Window& w) {
+    return w ? fmt::format("set yrange [{:.9g}:{:.9g}]\n", w->first, w->second)
+             : std::string("set autoscale y\n");
+  };
+  std::string script =
+      x_range_ ? fmt::format("set xrange [{:.9g}:{:.9g}]\n", x_range_->first, x_range_->second)
+               : "";
   for (const Row& row : rows_)
     script += fmt::format(
         "set lmargin at screen {:.4f}\nset rmargin at screen {:.4f}\nset xlabel {}\n"
-        "set title {} font \",{}\"\n{}\n"
+        "set title {} font \",{}\"\n{}{}\n"
         "set lmargin at screen {:.4f}\nset rmargin at screen {:.4f}\nset title {} font "
-        "\",{}\"\n{}\n",
-        kLeft, kLeft + width, quote(x_label_), panel_name(row.left_label), kNameFont, row.left,
-        right_left, band.panels_right, panel_name(row.right_label), kNameFont, row.right);
+        "\",{}\"\n{}{}\n",
+        kLeft, kLeft + width, quote(x_label_), panel_name(row.left_label), kNameFont,
+        y_axis(row.left_window), row.left, right_left, band.panels_right,
+        panel_name(row.right_label), kNameFont, y_axis(row.right_window), row.right);
   const std::string page = fmt::format(
-      "set multiplot layout {},2 title {}\nset grid\nunset key\n{}{}unset multiplot\n",
+      "set multiplot layout {},2 title {}\nset grid\nset clip two\nunset key\n{}{}unset "
+      "multiplot\n",
       rows_.size(), quote_lines(wrapped(title_, kPlotWidth - 60, 12.0)), script, band.plot(height));
   return draw(page, data_, batch, name, height);
 }

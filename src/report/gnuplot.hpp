@@ -3,6 +3,7 @@
 // colour per backend, the reference thick and black, long series thinned).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -70,17 +71,24 @@ class TwoColumnPlot {
   /// Adds run `i` (its place among report_runs) to the current row's left or right panel.
   void add(bool right, std::size_t i, const std::string& backend, const std::vector<double>& times,
            const std::vector<double>& values);
-  /// Ends the current row, its panels named `left_label` and `right_label`; a row without
-  /// series is left out.
-  void end_row(const std::string& left_label, const std::string& right_label);
+  /// A panel's vertical axis, set when a run off the others' scale is cut at its edge.
+  using Window = std::optional<std::pair<double, double>>;
+  /// Every panel's horizontal axis from `lo` to `hi` (else each panel scales its own).
+  void set_x_range(double lo, double hi) { x_range_ = std::pair{lo, hi}; }
+  /// Ends the current row, its panels named `left_label` and `right_label`, each scaled to
+  /// its window when it has one; a row without series is left out.
+  void end_row(const std::string& left_label, const std::string& right_label,
+               const Window& left_window = std::nullopt, const Window& right_window = std::nullopt);
   /// Draws the rows as `name` into `batch`; returns why there is nothing to draw, else "".
   std::string draw_into(FileBatch& batch, const std::string& name) const;
 
  private:
   struct Row {
     std::string left_label, right_label, left, right;
+    Window left_window, right_window;
   };
   std::string title_, x_label_, data_, left_, right_;
+  Window x_range_;
   std::vector<LegendEntry> legend_, left_titles_;
   std::vector<Row> rows_;
   int block_ = 0;

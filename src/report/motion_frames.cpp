@@ -29,7 +29,10 @@ double numbers_per_frame(const Scene& scene, const std::vector<int>& drawn) {
   for (int b : drawn) {
     const Body& body = scene.bodies[b];
     if (body.fixed) continue;
-    n += body.shape == Shape::Box ? (scene.dims == 2 ? 8 : 48) : (turns(scene) ? 6 : 2);
+    // A boat: five points of its hull and two of its sail.
+    n += is_boat(scene, body)       ? 14
+         : body.shape == Shape::Box ? (scene.dims == 2 ? 8 : 48)
+                                    : (turns(scene) ? 6 : 2);
   }
   return n;
 }

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+
+#include "physics/boat_frame.hpp"
 
 namespace bb::motion {
 
@@ -35,7 +38,60 @@ std::vector<Point2> box_corners(const Scene& scene, const Body& body, const Body
   return out;
 }
 
+/// A boat seen from above: its hull pointed at the bow (the heading, the body's x axis),
+/// then its sail as a line from the mast, a third of the way to the bow, out to leeward at
+/// the sail's angle from the heading (physics/sail_term.cpp: the boom swings to the side
+/// the apparent wind blows towards).
+std::string boat_path(const Scene& scene, const Body& body, const BodyState& state,
+                      const Canvas& c) {
+  const BoatFrame frame = boat_frame(state.orientation);
+  const double hx = body.half_extents.x(), hy = body.half_extents.y();
+  const auto at = [&](double ahead, double across) {
+    return c.px(project(scene, state.position + ahead * frame.ahead + across * frame.across));
+  };
+  const Point2 hull[] = {at(-hx, -hy), at(0.3 * hx, -hy), at(hx, 0.0), at(0.3 * hx, hy),
+                         at(-hx, hy)};
+  std::string d = fmt::format("M{} {}", num(hull[0].x), num(hull[0].y));
+  for (int i = 1; i < 5; ++i) d += fmt::format(" L{} {}", num(hull[i].x), num(hull[i].y));
+  const Vec3 wind = scene.air ? scene.air->wind : Vec3::Zero();
+  const double side = (wind - state.velocity).dot(frame.across) > 0.0 ? -1.0 : 1.0;
+  const double angle = body.sail->angle * std::numbers::pi / 180.0;
+  const double boom = 1.2 * hx;
+  const Point2 mast = at(hx / 3.0, 0.0);
+  const Point2 clew = at(hx / 3.0 - boom * std::cos(angle), -side * boom * std::sin(angle));
+  return d + fmt::format(" Z M{} {} L{} {}", num(mast.x), num(mast.y), num(clew.x), num(clew.y));
+}
+
 }  // namespace
+
+bool is_boat(const Scene& scene, const Body& body) {
+  return scene.dims == 2 && body.shape == Shape::Box && body.sail.has_value();
+}
+
+std::string wind_svg(const Scene& scene, const Canvas& c, double thick) {
+  if (!scene.air || scene.air->wind.norm() == 0.0) return "";
+  const Point2 w = project(scene, scene.air->wind);
+  const double norm = std::hypot(w.x, w.y);
+  if (norm == 0.0) return "";
+  // On the page y points down; an arrow 50 pixels long about a point in the top left.
+  const double half = 25 * thick;
+  const Point2 d{w.x / norm, -w.y / norm}, mid{std::min(2 * half, c.width / 2), 1.8 * half};
+  const Point2 tail{mid.x - half * d.x, mid.y - half * d.y};
+  const Point2 tip{mid.x + half * d.x, mid.y + half * d.y};
+  const auto barb = [&](double turn) {
+    const double ca = std::cos(turn), sa = std::sin(turn);
+    return Point2{tip.x - 0.4 * half * (ca * d.x - sa * d.y),
+                  tip.y - 0.4 * half * (sa * d.x + ca * d.y)};
+  };
+  const Point2 b1 = barb(0.45), b2 = barb(-0.45);
+  return fmt::format(
+      "<g class=\"wind\" stroke=\"#2f6db5\" stroke-width=\"{:.1f}\" fill=\"none\"><path d=\"M{} "
+      "{} L{} {} M{} {} L{} {} L{} {}\"/><text x=\"{}\" y=\"{}\" fill=\"#2f6db5\" "
+      "stroke=\"none\" font-size=\"{:.1f}\" text-anchor=\"middle\">wind {:.3g} m/s</text></g>\n",
+      2.5 * thick, num(tail.x), num(tail.y), num(tip.x), num(tip.y), num(b1.x), num(b1.y),
+      num(tip.x), num(tip.y), num(b2.x), num(b2.y), num(mid.x), num(mid.y + 1.7 * half), 12 * thick,
+      scene.air->wind.norm());
+}
 
 Point2 project(const Scene& scene, const Vec3& p) {
   if (scene.dims == 2) return {p.x(), p.y()};
@@ -46,17 +102,18 @@ std::string num(double v) {
   return fmt::format("{:.1f}", v);
 }
 
-Canvas fit(const Scene& scene, const Trajectory& guide, const std::vector<int>& drawn, double width,
-           double min_height, double max_height) {
+Canvas fit(const Scene& scene, const std::vector<const Trajectory*>& framed,
+           const std::vector<int>& drawn, double width, double min_height, double max_height) {
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   const auto add = [&](Point2 p, double r) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     x0 = std::min(x0, p.x - r), x1 = std::max(x1, p.x + r);
     y0 = std::min(y0, p.y - r), y1 = std::max(y1, p.y + r);
   };
-  for (const State& s : guide.states)
-    for (std::size_t k = 0; k < drawn.size() && k < s.size(); ++k)
-      add(project(scene, s[k].position), extent(scene.bodies[drawn[k]]));
+  for (const Trajectory* run : framed)
+    for (const State& s : run->states)
+      for (std::size_t k = 0; k < drawn.size() && k < s.size(); ++k)
+        add(project(scene, s[k].position), extent(scene.bodies[drawn[k]]));
   for (const Body& b : scene.bodies)
     if (b.fixed) add(project(scene, b.position), extent(b));
   if (scene.ground) add(project(scene, scene.ground->point), 0.0);
@@ -102,6 +159,10 @@ std::string ground_svg(const Scene& scene, const Canvas& c) {
 Outline outline(const Scene& scene, const Body& body, const BodyState& state, const Canvas& c,
                 bool mark_turn) {
   Outline o;
+  if (is_boat(scene, body)) {
+    o.path = boat_path(scene, body, state, c);
+    return o;
+  }
   if (body.shape == Shape::Box) {
     std::vector<Point2> p;
     for (const Point2& q : box_corners(scene, body, state)) p.push_back(c.px(q));

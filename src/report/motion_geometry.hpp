@@ -30,11 +30,17 @@ struct Canvas {
 /// A number as the SVG writes it: one decimal.
 std::string num(double v);
 
-/// A canvas `width` pixels wide (its top left at 0, 0) showing what the guide run covers,
+/// A canvas `width` pixels wide (its top left at 0, 0) showing what the `framed` runs cover,
 /// the fixed bodies and the ground's point, with a margin; its height between the two
 /// bounds (the world shown widens to keep one scale).
-Canvas fit(const Scene& scene, const Trajectory& guide, const std::vector<int>& drawn, double width,
-           double min_height, double max_height);
+Canvas fit(const Scene& scene, const std::vector<const Trajectory*>& framed,
+           const std::vector<int>& drawn, double width, double min_height, double max_height);
+
+/// Whether `body` is drawn as a boat: a box with a sail, seen from above.
+bool is_boat(const Scene& scene, const Body& body);
+/// The wind as an arrow in the canvas's top left, with its speed, sized by `thick` (small
+/// panels); "" without wind.
+std::string wind_svg(const Scene& scene, const Canvas& c, double thick);
 
 /// The ground as a line with the half-space below it shaded.
 std::string ground_svg(const Scene& scene, const Canvas& c);
@@ -42,7 +48,7 @@ std::string ground_svg(const Scene& scene, const Canvas& c);
 std::string fixed_svg(const Scene& scene, const Canvas& c);
 
 /// A body's outline at one state: a circle's centre and radius (and, for a turning ball, a
-/// path marking its turn), or a box's path.
+/// path marking its turn), or a box's path; a boat's hull pointed at its bow, and its sail.
 struct Outline {
   bool circle = false;
   Point2 centre;

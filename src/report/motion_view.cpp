@@ -7,9 +7,12 @@
 
 #include "report/backend_style.hpp"
 #include "report/gnuplot.hpp"
+#include "report/motion_exits.hpp"
 #include "report/motion_frames.hpp"
 #include "report/motion_geometry.hpp"
 #include "report/motion_paint.hpp"
+#include "report/motion_panels.hpp"
+#include "report/plot_layout.hpp"
 #include "scene/text.hpp"
 
 namespace bb {
@@ -19,12 +22,13 @@ namespace {
 using motion::Canvas;
 using motion::num;
 
-constexpr double kCanvasWidth = 760.0;  // pixels of one scene drawn at full size
-constexpr double kMargin = 10.0;
-constexpr double kGap = 12.0;  // between small panels
+using motion::kCanvasWidth;
+using motion::kMargin;
+using motion::Panel;
 constexpr double kLegendWidth = 300.0;
 constexpr double kTitleHeight = 48.0;
-constexpr double kPanelTitle = 18.0;
+constexpr double kNoteLine = 14.0;  // a line of the title's notes
+constexpr double kNoteFont = 11.0;
 constexpr double kTimeBarHeight = 46.0;
 constexpr double kMinCanvasHeight = 240.0;
 constexpr double kMaxCanvasHeight = 640.0;
@@ -59,47 +63,28 @@ const Trajectory& guide_of(const std::vector<const RunRecord*>& runs) {
              : longest->trajectory;
 }
 
-/// Where a panel sits on the page and how wide it is; the canvas fills it, scaled.
-struct Panel {
-  double x = 0.0, y = 0.0, width = 0.0;
-  std::string title;
-};
-
-/// A panel's title and the opening of its scaled, clipping viewport (closed by "</svg>").
-std::string open_panel(const Panel& p, const Canvas& c) {
-  const double top = p.title.empty() ? p.y : p.y + kPanelTitle;
-  std::string out;
-  if (!p.title.empty())
-    out += fmt::format("<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>\n", num(p.x),
-                       num(p.y + 13.0), p.title);
-  return out + fmt::format(
-                   "<svg x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
-                   "overflow=\"hidden\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\" "
-                   "stroke=\"#dddddd\"/>\n",
-                   num(p.x), num(top), num(p.width), num(c.height * p.width / c.width),
-                   num(c.width), num(c.height));
+/// The canvas that frames every run's bodies but those of a run off the guide's scale.
+Canvas frame_of(const Scene& scene, const std::vector<const RunRecord*>& runs,
+                const std::vector<int>& drawn, const Trajectory& guide) {
+  const std::vector<bool> cut = motion::off_frame(scene, runs, drawn, guide);
+  std::vector<const Trajectory*> framed;
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    if (!cut[i]) framed.push_back(&runs[i]->trajectory);
+  return motion::fit(scene, framed, drawn, kCanvasWidth, kMinCanvasHeight, kMaxCanvasHeight);
 }
 
-double panel_height(const Panel& p, const Canvas& c) {
-  return (p.title.empty() ? 0.0 : kPanelTitle) + c.height * p.width / c.width;
-}
-
-/// Panels for `count` runs: one at full size, or small ones in columns.
-std::vector<Panel> layout(std::size_t count, bool multiples, const Canvas& c, double columns,
-                          double top) {
-  std::vector<Panel> out;
-  if (!multiples) {
-    out.push_back({kMargin, top, kCanvasWidth, ""});
-    return out;
-  }
-  const double width = (kCanvasWidth - (columns - 1) * kGap) / columns;
-  const double height = kPanelTitle + c.height * width / c.width + kGap;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t col = i % static_cast<std::size_t>(columns);
-    const std::size_t row = i / static_cast<std::size_t>(columns);
-    out.push_back({kMargin + col * (width + kGap), top + row * height, width, ""});
-  }
-  return out;
+/// The title's lines under its note naming each run with a body off the frame, wrapped.
+std::vector<std::string> exit_lines(const Scene& scene, const std::vector<const RunRecord*>& runs,
+                                    const std::vector<int>& drawn,
+                                    const std::vector<motion::FrameExit>& exits, const Canvas& c,
+                                    double width) {
+  const std::vector<std::string> notes = motion::exit_notes(scene, runs, drawn, exits, c);
+  if (notes.empty()) return {};
+  std::vector<std::string> lines{"off the frame, marked with an arrow where it left:"};
+  for (const std::string& note : notes)
+    for (const std::string& line : wrapped(note, width - 2 * kMargin, kNoteFont))
+      lines.push_back(line);
+  return lines;
 }
 
 /// One run's bodies (and springs) moving over `samples`; the paint is the group's.
@@ -201,15 +186,20 @@ std::string reference_note(const std::vector<const RunRecord*>& runs, bool multi
 }
 
 /// The picture's opening, its title and, on a line of its own under it (a long title ran off
-/// the picture's edge), what it draws how.
-std::string header(double width, double height, const std::string& title, const std::string& note) {
-  return fmt::format(
+/// the picture's edge), what it draws how; then `more` lines, in red (the runs off the frame).
+std::string header(double width, double height, const std::string& title, const std::string& note,
+                   const std::vector<std::string>& more) {
+  std::string out = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
       "width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" "
       "font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<text "
       "x=\"{2}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{3}</text>\n"
       "<text x=\"{2}\" y=\"39\" fill=\"#444444\">{4}</text>\n",
       num(width), num(height), num(kMargin), title, note);
+  for (std::size_t i = 0; i < more.size(); ++i)
+    out += fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#b00000\" font-size=\"{}\">{}</text>\n",
+                       num(kMargin), num(39.0 + kNoteLine * (i + 1)), kNoteFont, more[i]);
+  return out;
 }
 
 }  // namespace
@@ -223,9 +213,12 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   const std::vector<const RunRecord*> runs = drawable_runs(results);
   if (runs.empty()) return "";
   const Trajectory& guide = guide_of(runs);
-  const Canvas c =
-      motion::fit(scene, guide, drawn, kCanvasWidth, kMinCanvasHeight, kMaxCanvasHeight);
+  const Canvas c = frame_of(scene, runs, drawn, guide);
   const bool multiples = moving_bodies(scene, drawn) > kOverlayBodies;
+  const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
+  const std::vector<motion::FrameExit> exits = motion::frame_exits(scene, runs, drawn, c);
+  const std::vector<std::string> off = exit_lines(scene, runs, drawn, exits, c, width);
+  const double top = kTitleHeight + kNoteLine * off.size();
 
   const Springs all_springs = motion::drawn_springs(scene, drawn);
   const motion::FrameBudget budget =
@@ -237,33 +230,35 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
   // Real time, but never shorter than 2 s nor longer than 40 s a loop.
   const double play = std::clamp(total, 2.0, 40.0);
 
-  std::vector<Panel> panels = layout(runs.size(), multiples, c, kColumns, kTitleHeight);
+  std::vector<Panel> panels = motion::layout(runs.size(), multiples, c, kColumns, top);
   const double thick = multiples ? c.width / panels.front().width : 1.0;
   double bottom = 0.0;
   for (std::size_t i = 0; i < panels.size(); ++i) {
     if (multiples) panels[i].title = motion::run_label(*runs[i]);
-    bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
+    bottom = std::max(bottom, panels[i].y + motion::panel_height(panels[i], c));
   }
-  const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
   // Tall enough for the legend too: a long one ran off the picture's bottom.
   const double height =
       std::max(bottom + kTimeBarHeight,
-               multiples ? 0.0 : motion::legend_bottom(runs.size(), kTitleHeight + 14.0) + kMargin);
+               multiples ? 0.0 : motion::legend_bottom(runs.size(), top + 14.0) + kMargin);
   const std::string speed =
       play == total ? "real time" : fmt::format("{:.2g} x real time", total / play);
   std::string svg = header(width, height,
                            fmt::format("{}: the motion at report_dt = {} s", escape_xml(scene.name),
                                        format_dt(scene.report_dt)),
-                           speed + "; " + reference_note(runs, multiples));
+                           speed + "; " + reference_note(runs, multiples), off);
+  const motion::MarkTiming timing{total, play, 0.0};
   // In small panels, the reference (when it has an answer) is drawn once, under each.
   const bool ghost = runs.front()->backend == "reference";
   const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
-  const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c);
+  const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c) +
+                               motion::wind_svg(scene, c, thick);
   if (!multiples) {
-    svg += open_panel(panels.front(), c) + backdrop;
+    svg += motion::open_panel(panels.front(), c) + backdrop;
     for (std::size_t r = 0; r < runs.size(); ++r)
       svg += animated_run(scene, *runs[r], drawn, samples, c, springs_of(r), total, play, thick);
-    svg += "</svg>\n" + motion::legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
+    svg += motion::exit_marks_svg(scene, runs, drawn, exits, runs.size(), c, thick, timing);
+    svg += "</svg>\n" + motion::legend_svg(runs, 2 * kMargin + kCanvasWidth, top + 14.0);
   } else {
     if (ghost)
       svg +=
@@ -271,10 +266,11 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
           animated_run(scene, *runs.front(), drawn, samples, c, springs_of(0), total, play, thick) +
           "</g>\n</defs>\n";
     for (std::size_t r = 0; r < runs.size(); ++r) {
-      svg += open_panel(panels[r], c) + backdrop;
+      svg += motion::open_panel(panels[r], c) + backdrop;
       if (ghost) svg += "<use xlink:href=\"#reference\"/>\n";
       if (r > 0 || !ghost)
         svg += animated_run(scene, *runs[r], drawn, samples, c, springs_of(r), total, play, thick);
+      svg += motion::exit_marks_svg(scene, runs, drawn, exits, r, c, thick, timing);
       svg += "</svg>\n";
     }
   }
@@ -289,22 +285,26 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
   const std::vector<const RunRecord*> runs = drawable_runs(results);
   if (runs.empty() || instants.empty()) return "";
   const Trajectory& guide = guide_of(runs);
-  const Canvas c =
-      motion::fit(scene, guide, drawn, kCanvasWidth, kMinCanvasHeight, kMaxCanvasHeight);
+  const Canvas c = frame_of(scene, runs, drawn, guide);
   const bool multiples = moving_bodies(scene, drawn) > kOverlayBodies;
+  const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
+  const std::vector<motion::FrameExit> exits = motion::frame_exits(scene, runs, drawn, c);
+  const std::vector<std::string> off = exit_lines(scene, runs, drawn, exits, c, width);
+  const double top = kTitleHeight + kNoteLine * off.size();
   const Springs all_springs = motion::drawn_springs(scene, drawn);
   // Springs for every run while few, else the reference's only.
   const std::size_t spring_runs = all_springs.size() * runs.size() <= 600 ? runs.size() : 1;
   const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
-  const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c);
 
   // Overlay: a panel per instant, every run in it. Small multiples: a row per run, named
   // above it, a column per instant, each over the reference at that instant.
   const std::size_t count = multiples ? runs.size() * instants.size() : instants.size();
   const double columns = multiples ? static_cast<double>(instants.size()) : 2.0;
-  std::vector<Panel> panels = layout(count, true, c, columns, kTitleHeight);
+  std::vector<Panel> panels = motion::layout(count, true, c, columns, top);
   const double thick = c.width / panels.front().width;
-  const double row_header = multiples ? kPanelTitle : 0.0;
+  const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c) +
+                               motion::wind_svg(scene, c, thick);
+  const double row_header = multiples ? motion::kPanelTitle : 0.0;
   std::string row_names;
   double bottom = 0.0;
   for (std::size_t i = 0; i < panels.size(); ++i) {
@@ -315,17 +315,15 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
       row_names +=
           fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"14\" font-weight=\"bold\">{}</text>\n",
                       num(kMargin), num(panels[i].y - 4.0), motion::run_label(*runs[row]));
-    bottom = std::max(bottom, panels[i].y + panel_height(panels[i], c));
+    bottom = std::max(bottom, panels[i].y + motion::panel_height(panels[i], c));
   }
-  const double width = 2 * kMargin + kCanvasWidth + (multiples ? 0.0 : kLegendWidth);
-  const double height =
-      std::max(bottom + kMargin,
-               multiples ? 0.0 : motion::legend_bottom(runs.size(), kTitleHeight + 14.0) + kMargin);
+  const double height = std::max(
+      bottom + kMargin, multiples ? 0.0 : motion::legend_bottom(runs.size(), top + 14.0) + kMargin);
   std::string svg =
       header(width, height,
              fmt::format("{}: the scene at {} instants, report_dt = {} s", escape_xml(scene.name),
                          instants.size(), format_dt(scene.report_dt)),
-             reference_note(runs, multiples));
+             reference_note(runs, multiples), off);
   svg += row_names;
   const bool ghost = multiples && runs.front()->backend == "reference";
   if (ghost) {
@@ -340,21 +338,24 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
   }
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const std::size_t at = i % instants.size();
-    svg += open_panel(panels[i], c) + backdrop;
+    svg += motion::open_panel(panels[i], c) + backdrop;
+    const motion::MarkTiming timing{0.0, 0.0, instants[at]};
     if (multiples) {
       const std::size_t r = i / instants.size();
       if (ghost) svg += fmt::format("<use xlink:href=\"#reference-{}\"/>\n", at);
       if (r > 0 || !ghost)
         svg += still_run(scene, runs[r]->backend, state_at(runs[r]->trajectory, instants[at]),
                          drawn, c, springs_of(r), thick);
+      svg += motion::exit_marks_svg(scene, runs, drawn, exits, r, c, thick, timing);
     } else {
       for (std::size_t r = 0; r < runs.size(); ++r)
         svg += still_run(scene, runs[r]->backend, state_at(runs[r]->trajectory, instants[at]),
                          drawn, c, springs_of(r), thick);
+      svg += motion::exit_marks_svg(scene, runs, drawn, exits, runs.size(), c, thick, timing);
     }
     svg += "</svg>\n";
   }
-  if (!multiples) svg += motion::legend_svg(runs, 2 * kMargin + kCanvasWidth, kTitleHeight + 14.0);
+  if (!multiples) svg += motion::legend_svg(runs, 2 * kMargin + kCanvasWidth, top + 14.0);
   return svg + "</svg>\n";
 }
 

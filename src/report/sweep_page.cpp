@@ -8,6 +8,7 @@
 #include "report/format.hpp"
 #include "report/gnuplot.hpp"
 #include "report/markdown_text.hpp"
+#include "report/off_scale.hpp"
 #include "report/table.hpp"
 
 namespace bb {
@@ -129,6 +130,71 @@ std::string onset_section(const SweepResults& sweep, const Sweep& spec,
       markdown_text(spec.onset), short_number(spec.onset_above), render_markdown(t));
 }
 
+using Series = std::vector<std::optional<double>>;
+
+/// A panel's backends off the reference's scale (off_scale.hpp), each named with the value
+/// farthest off, and the window the others span; no window when none is cut.
+struct PanelCut {
+  std::vector<std::string> named;
+  TwoColumnPlot::Window window;
+};
+
+PanelCut cut_of(const std::vector<std::string>& backends, const std::vector<Series>& series) {
+  const auto guide_at = std::find(backends.begin(), backends.end(), "reference");
+  if (guide_at == backends.end()) return {};
+  Extent guide;
+  for (const auto& v : series[guide_at - backends.begin()])
+    if (v) guide.add(*v);
+  if (guide.empty()) return {};
+  std::vector<double> reach;
+  for (const Series& s : series) {
+    double most = 0.0;
+    for (const auto& v : s)
+      if (v) most = std::max(most, guide.beyond(*v));
+    reach.push_back(most);
+  }
+  const double tiny = 1e-9 * (1.0 + std::max(std::abs(guide.lo), std::abs(guide.hi)));
+  const double limit = off_scale_limit(reach, guide.span(), tiny);
+  PanelCut out;
+  Extent kept;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    double farthest = 0.0, by = -1.0;
+    for (const auto& v : series[i])
+      if (v && guide.beyond(*v) > by) farthest = *v, by = guide.beyond(*v);
+    if (reach[i] > limit)
+      out.named.push_back(fmt::format("{} (reaches {:.3g})", backends[i], farthest));
+    else
+      for (const auto& v : series[i])
+        if (v) kept.add(*v);
+  }
+  if (out.named.empty()) return out;
+  const double pad = 0.05 * std::max(kept.span(), tiny);
+  out.window = std::pair{kept.lo - pad, kept.hi + pad};
+  return out;
+}
+
+/// A panel's name, and the backends cut at its edge.
+std::string panel_label(const std::string& name, const PanelCut& cut) {
+  if (cut.named.empty()) return name;
+  std::string out = name + "; off this scale, cut at its edge:";
+  for (std::size_t i = 0; i < cut.named.size(); ++i) out += (i ? ", " : " ") + cut.named[i];
+  return out;
+}
+
+/// Adds a row of `values` (left) and `off` (right), one series per backend, each panel
+/// scaled to the backends on the reference's scale.
+void add_row(TwoColumnPlot& plot, const SweepResults& sweep,
+             const std::vector<std::string>& backends, const std::vector<Series>& values,
+             const std::vector<Series>& off, const std::string& left, const std::string& right) {
+  for (std::size_t i = 0; i < backends.size(); ++i) {
+    add_series(plot, false, i, backends[i], sweep, values[i]);
+    add_series(plot, true, i, backends[i], sweep, off[i]);
+  }
+  const PanelCut left_cut = cut_of(backends, values), right_cut = cut_of(backends, off);
+  plot.end_row(panel_label(left, left_cut), panel_label(right, right_cut), left_cut.window,
+               right_cut.window);
+}
+
 }  // namespace
 
 std::string sweep_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
@@ -138,23 +204,28 @@ std::string sweep_plot(const CaseResults& results, FileBatch& batch, const std::
   const std::vector<std::string> backends = sweep_backends(sweep);
   TwoColumnPlot plot(scene.name + ": the sweep of " + sweep.parameter + " at report_dt",
                      sweep.parameter);
+  // Every panel spans the whole sweep: a difference panel has no point where the reference
+  // has no answer, and started at another value than the value panel beside it.
+  Extent swept;
+  for (const SweepPoint& p : sweep.points) swept.add(p.value);
+  if (swept.span() > 0.0) plot.set_x_range(swept.lo, swept.hi);
   for (const Observe& o : scene.observes) {
-    const auto reference = series_of(sweep, "reference", o.name);
-    for (std::size_t i = 0; i < backends.size(); ++i) {
-      const auto values = series_of(sweep, backends[i], o.name);
-      std::vector<std::optional<double>> off(values.size());
-      for (std::size_t k = 0; k < values.size(); ++k)
-        if (values[k] && reference[k]) off[k] = *values[k] - *reference[k];
-      add_series(plot, false, i, backends[i], sweep, values);
-      add_series(plot, true, i, backends[i], sweep, off);
+    const Series reference = series_of(sweep, "reference", o.name);
+    std::vector<Series> values, off;
+    for (const std::string& b : backends) {
+      values.push_back(series_of(sweep, b, o.name));
+      off.emplace_back(reference.size());
+      for (std::size_t k = 0; k < reference.size(); ++k)
+        if (values.back()[k] && reference[k]) off.back()[k] = *values.back()[k] - *reference[k];
     }
-    plot.end_row(o.name, o.name + " minus the reference's");
+    add_row(plot, sweep, backends, values, off, o.name, o.name + " minus the reference's");
   }
-  for (std::size_t i = 0; i < backends.size(); ++i) {
-    add_series(plot, false, i, backends[i], sweep, series_of(sweep, backends[i], "position_max"));
-    add_series(plot, true, i, backends[i], sweep, series_of(sweep, backends[i], "energy_max"));
+  std::vector<Series> position, energy;
+  for (const std::string& b : backends) {
+    position.push_back(series_of(sweep, b, "position_max"));
+    energy.push_back(series_of(sweep, b, "energy_max"));
   }
-  plot.end_row("position_max (m)", "energy_max");
+  add_row(plot, sweep, backends, position, energy, "position_max (m)", "energy_max");
   return plot.draw_into(batch, name);
 }
 
@@ -246,7 +317,8 @@ std::string sweep_markdown(const CaseResults& results, const std::string& plot) 
     out +=
         "Left: each quantity against the parameter, the reference thick and black; right: "
         "its difference from the reference's at the same value (last row: the error "
-        "metrics).\n\n![sweep](" +
+        "metrics); a backend far off the reference's scale in a panel is cut at its edge and "
+        "named above it.\n\n![sweep](" +
         plot + ")\n";
   if (!spec.onset.empty()) out += onset_section(sweep, spec, backends);
 
