@@ -121,7 +121,10 @@ bool alike(std::optional<double> a, std::optional<double> b) {
 int expect_round_trip(const std::string& case_text) {
   const Scene scene = test::scene_from(case_text);
   const Registry registry = Registry::load();
-  const std::string folder = test::fresh_dir("import_round_trip_" + scene.name);
+  // A folder per test: two tests of one scene run at once under ctest -j2.
+  const std::string folder =
+      test::fresh_dir("import_round_trip_" +
+                      std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   fs::create_directories(folder);
   RunOptions written;
   written.cost = false;
