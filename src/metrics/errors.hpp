@@ -16,7 +16,7 @@ struct BodyErrors {
   double velocity_max = 0.0;    ///< metres per second
 };
 
-/// Worst body, over every sample (DESIGN.md "Results").
+/// Worst body, over every sample (docs/design.md, "Results").
 struct ErrorMetrics {
   double position_max = 0.0;    ///< metres
   double position_rms = 0.0;    ///< metres, RMS over samples of the worst body

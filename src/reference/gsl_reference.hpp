@@ -18,11 +18,11 @@ inline constexpr double kReferenceTolerance = 1e-10;
 inline constexpr double kStiffRateTimesSample = 20.0;
 
 /// The implicit method factors a dense Jacobian of 13 values per body; above this many
-/// bodies a stiff scene is beyond the reference (DESIGN.md's fallback).
+/// bodies a stiff scene is beyond the reference (the fallback of docs/design.md).
 inline constexpr std::size_t kMaxImplicitBodies = 80;
 
 /// Above this many bodies a scene with springs is beyond a tight reference in the time a
-/// report allows (DESIGN.md's fallback).
+/// report allows (the fallback of docs/design.md).
 inline constexpr std::size_t kMaxReferenceBodies = 400;
 /// The most moving bodies that may touch each other for which the reference tries an
 /// exact answer: beyond this a crowd (a pile, balls resting on balls) is what a scene makes,

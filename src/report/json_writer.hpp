@@ -1,4 +1,4 @@
-// Results as JSON, schema "beachball-results/1" (DESIGN.md, a contract).
+// Results as JSON, schema "beachball-results/1" (docs/design.md, a contract).
 #pragma once
 
 #include <nlohmann/json.hpp>

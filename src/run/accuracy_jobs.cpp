@@ -181,7 +181,7 @@ AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& refer
                 key_of(*jobs[i].backend, jobs[i].dt, "accuracy"), true);
           return;
         }
-        // DESIGN.md's fallback: each backend's finest run first; it writes itself whole once.
+        // the fallback of docs/design.md: each backend's finest run first; it writes itself whole once.
         for (std::size_t i = 0; i < jobs.size(); ++i) {
           if (!finest_job(i)) continue;
           // The backend's runs, finest first, are taken from the kept ones only all together:

@@ -25,7 +25,7 @@ struct AccuracyRuns {
 
 /// Jobs are grouped by backend, largest dt first. They start once the reference is back:
 /// each child inherits it at fork and measures its run against it. Without an ok reference
-/// (DESIGN.md's fallback) each backend's finest run goes first and writes its whole
+/// (the fallback of docs/design.md) each backend's finest run goes first and writes its whole
 /// trajectory once, to a temporary file that the backend's other runs read in their
 /// children; where the finest run fails, the others come back whole for the caller.
 AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& reference,

@@ -50,7 +50,7 @@ void check_backend_names(const Scene& scene, const RunOptions& options) {
                           joined(runnable_backend_names(scene, engine_catalogue())));
 }
 
-/// Per backend, its ok run at the smallest dt: the fallback reference of DESIGN.md.
+/// Per backend, its ok run at the smallest dt: the fallback reference of docs/design.md.
 std::map<std::string, const RunRecord*> finest_runs(const std::vector<RunRecord>& runs) {
   std::map<std::string, const RunRecord*> out;
   for (const RunRecord& run : runs) {
@@ -179,7 +179,7 @@ void add_missing_engines(const Scene& scene, const Registry& registry, const Run
 }
 
 /// Errors and observables of every run: against the reference; where it has no answer,
-/// against each backend's own run at its finest dt (DESIGN.md's fallback), and
+/// against each backend's own run at its finest dt (the fallback of docs/design.md), and
 /// reference.method says so.
 void measure_runs(const Scene& scene, const std::vector<double>& dts, CaseResults& out) {
   const bool fallback = out.reference_run.status != RunStatus::Ok;

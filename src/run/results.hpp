@@ -72,10 +72,10 @@ struct RunRecord {
   std::optional<StabilityTrial> stability_trial;
   /// What the page plots, not written to JSON: at report_dt the first few bodies' states
   /// (run_summary.hpp), elsewhere times and events only, unless the errors are measured in
-  /// the parent (the reference's own run, and DESIGN.md's fallback).
+  /// the parent (the reference's own run, and the fallback of docs/design.md).
   Trajectory trajectory;
   std::vector<double> energy;  ///< total energy at each sample time (J)
-  /// Largest position distance from the reference (m; in DESIGN.md's fallback, from the
+  /// Largest position distance from the reference (m; in the fallback of docs/design.md, from the
   /// backend's finest run)
   std::vector<double> distance;
   double position_scale = 0.0;  ///< largest |position| over the samples (m)

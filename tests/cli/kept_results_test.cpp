@@ -72,7 +72,7 @@ TEST(KeptResults, AReportReusesItsRunsTrialsAndSweepAndWritesTheSameReport) {
   ASSERT_EQ(first.exit_code, 0) << first.out;
   const test::Outcome second = report("second");
   ASSERT_EQ(second.exit_code, 0) << second.out;
-  // Everything is reused, the runs of DESIGN.md's fallback too (the stacked balls have no
+  // Everything is reused, the runs of the fallback of docs/design.md too (the stacked balls have no
   // reference: a backend's runs are measured against its own finest one).
   const int all = test::kept_counts(first.out).second;
   EXPECT_GT(all, 0) << first.out;

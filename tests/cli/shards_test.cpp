@@ -23,7 +23,7 @@ struct Split {
 };
 
 /// Cases split in three: a minimal one and, `with_stack`, one with a sweep and no reference
-/// (so DESIGN.md's fallback).
+/// (so the fallback of docs/design.md).
 Split split_in_three(const std::string& name, bool with_stack) {
   Split s{test::fresh_dir(name), ""};
   s.cases = test::write_case(s.dir, "a.toml", test::minimal_case("a"));

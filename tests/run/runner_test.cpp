@@ -186,7 +186,7 @@ position = [0.0, 2.0, 0.0]
 }
 
 // Two balls stacked on the ground touch at the start: the reference has no exact answer,
-// so (DESIGN.md's fallback) each backend's errors are against its own finest-dt run, and
+// so (the fallback of docs/design.md) each backend's errors are against its own finest-dt run, and
 // reference.method, the notes and run_gates say so.
 TEST(Runner, WithoutAReferenceErrorsAreAgainstTheFinestDt) {
   const Scene scene = test::scene_from(std::string(test::kStackedBalls) + R"([[gate]]
@@ -294,7 +294,7 @@ TEST(Runner, WithoutAReferenceTheNextFinestStandsInWhenTheFinestFails) {
   EXPECT_FALSE(measured.trajectory.states.empty());
 }
 
-// A case written from DESIGN.md's format alone (a ball thrown into the corner of two
+// A case written from docs/design.md's format alone (a ball thrown into the corner of two
 // walls on a sloped floor, [[contact]] with friction_static and friction_kinetic) loads and
 // runs with no change to the code: the reference and a course method both bounce it.
 TEST(Runner, ACaseWrittenFromTheDesignAloneRuns) {

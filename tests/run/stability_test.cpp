@@ -196,7 +196,7 @@ mass = 1.0
 
 using test::course;
 
-// Stable means bounded (DESIGN.md): semi-implicit Euler 1 percent below 2 / omega swings
+// Stable means bounded (docs/design.md): semi-implicit Euler 1 percent below 2 / omega swings
 // its energy far from its start and is stable; 1 percent above it, and explicit Euler on
 // the undamped spring at any step, the energy grows without bound.
 TEST(Stability, ABoundedSwingIsStableAndGrowthIsNot) {
