@@ -30,7 +30,7 @@ std::string statements(int count) {
 }
 
 /// The spans found, as "name first_line lines" for a readable comparison.
-std::vector<std::string> found(const std::string& text) {
+std::vector<std::string> spans_of(const std::string& text) {
   std::vector<std::string> out;
   for (const test::FunctionSpan& f : test::function_spans(text))
     out.push_back(f.name + " " + std::to_string(f.first_line) + " " + std::to_string(f.lines));
@@ -43,7 +43,8 @@ TEST(SizeLimits, AFunctionRunsFromItsHeadToItsClosingBrace) {
                            "  return x;\n}\n\nTEST(Suite, Name) {\n" + statements(2) +
                            "}\n\nstatic int g(int a,\n              int b) { return a + b; }\n"
                            "}  // namespace\n}  // namespace a\n";
-  EXPECT_EQ(found(text), (std::vector<std::string>{"f 4 8", "TEST(Suite, Name) 13 4", "g 18 2"}));
+  EXPECT_EQ(spans_of(text),
+            (std::vector<std::string>{"f 4 8", "TEST(Suite, Name) 13 4", "g 18 2"}));
 }
 
 TEST(SizeLimits, MembersAreFunctionsButTheirClassIsNot) {
@@ -55,8 +56,8 @@ TEST(SizeLimits, MembersAreFunctionsButTheirClassIsNot) {
       "  bool operator()(int) const { return true; }\n\n private:\n"
       "  struct Inner {\n    void h() {}\n  };\n  int a_, b_;\n};\n"
       "C::~C() {\n}\n";
-  EXPECT_EQ(found(text), (std::vector<std::string>{"C 3 3", "get 7 3", "operator() 10 1", "h 14 1",
-                                                   "C::~C 18 2"}));
+  EXPECT_EQ(spans_of(text), (std::vector<std::string>{"C 3 3", "get 7 3", "operator() 10 1",
+                                                      "h 14 1", "C::~C 18 2"}));
 }
 
 TEST(SizeLimits, TablesEnumsAndInitializersAreNotFunctions) {
@@ -68,7 +69,7 @@ TEST(SizeLimits, TablesEnumsAndInitializersAreNotFunctions) {
                            "constexpr Cap kCap{\n    1.0, 2.0};\n" +
                            "const auto kLambda = [](int v) {\n" + statements(90) + "};\n" +
                            "int f(Options o = {}) {\n  return 0;\n}\n";
-  EXPECT_EQ(found(text), (std::vector<std::string>{"f 201 3"}));
+  EXPECT_EQ(spans_of(text), (std::vector<std::string>{"f 201 3"}));
 }
 
 TEST(SizeLimits, BracesInCommentsLiteralsAndDirectivesCountForNothing) {
@@ -79,7 +80,7 @@ TEST(SizeLimits, BracesInCommentsLiteralsAndDirectivesCountForNothing) {
       "int f() {\n  const char* s = \"}\\\"{\";\n  char c = '}';\n"
       "  const char* r = R\"toml([a]\nb = { c = 1 }\n)\" }\n)toml\";\n  int n = 1'000;\n"
       "  return n;\n}\nint g() { return 0; }\n";
-  EXPECT_EQ(found(text), (std::vector<std::string>{"f 7 10", "g 17 1"}));
+  EXPECT_EQ(spans_of(text), (std::vector<std::string>{"f 7 10", "g 17 1"}));
 }
 
 TEST(SizeLimits, AFileCountsItsLastLineWithOrWithoutANewline) {

@@ -33,6 +33,7 @@ inline int line_count(const std::string& text) {
   return lines + (!text.empty() && text.back() != '\n');
 }
 
+/// A letter, a digit or an underscore: part of a name or a number.
 inline bool is_identifier_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
@@ -107,6 +108,7 @@ inline std::string top_level(const std::string& head) {
   return out;
 }
 
+/// The name a text begins with (empty where it begins with anything else).
 inline std::string first_word(const std::string& text) {
   std::size_t end = 0;
   while (end < text.size() && is_identifier_char(text[end])) ++end;
