@@ -50,60 +50,68 @@ struct Commands {
   CLI::App* merge;
 };
 
-/// Declares every subcommand and its options on `app`, writing into `v`.
-Commands declare_commands(CLI::App& app, Values& v) {
-  app.require_subcommand(1);
-  // Options of every command that runs backends, and of `list`.
-  const auto add_plugin_option = [&](CLI::App* command) {
-    command->add_option("--plugin", v.plugins,
-                        "a backend plugin built outside beachball (PATH.so, repeatable; also "
-                        "every beachball-*.so in the folders of $BEACHBALL_PLUGIN_PATH)");
-  };
+/// --plugin: options of every command that runs backends, and of `list`.
+void add_plugin_option(CLI::App* command, Values& v) {
+  command->add_option("--plugin", v.plugins,
+                      "a backend plugin built outside beachball (PATH.so, repeatable; also "
+                      "every beachball-*.so in the folders of $BEACHBALL_PLUGIN_PATH)");
+}
+
+/// Options shared by the commands that run and time a sweep.
+void add_sweep_options(CLI::App* command, Values& v) {
+  command->add_option("--jobs", v.jobs, "accuracy runs in parallel (1 to 256)")
+      ->default_val(v.default_jobs);
+  command->add_flag("--no-cost", v.no_cost, "skip the timing pass");
+  command
+      ->add_option("--cost-time", v.cost_seconds,
+                   "minimum timed seconds per run in the cost pass (0.001 to 600)")
+      ->default_val(0.005);
+}
+
+/// Options of every command that runs backends.
+void add_isolation_options(CLI::App* command, Values& v) {
+  command->add_option("--timeout", v.timeout,
+                      "seconds a run may take, 0.001 to 86400 (default: from the case's size)");
+  command->add_flag(
+      "--no-isolation", v.no_isolation,
+      "run in this process, not in child processes (for debugging: a crash ends the program)");
+}
+
+/// Programs' trajectories as backend rows: every command that runs a case's rows.
+void add_import_option(CLI::App* command, Values& v) {
+  command->add_option("--trajectory", v.imports,
+                      "NAME@DT=FILE: a program's trajectory of the case at step DT (as --dt "
+                      "takes it) as the backend row import/NAME; repeatable, one case only");
+}
+
+/// Options of every command whose results are kept between invocations.
+void add_cache_options(CLI::App* command, Values& v) {
+  command->add_option("--cache", v.cache,
+                      "folder of kept results, or 'off' (default: $BEACHBALL_CACHE, else "
+                      "$XDG_CACHE_HOME/beachball or ~/.cache/beachball)");
+  command->add_flag("--fresh", v.fresh, "run everything again (new results are still kept)");
+}
+
+/// `list`: cases, backends, and who supports what.
+CLI::App* declare_list(CLI::App& app, Values& v) {
   auto* list = app.add_subcommand("list", "cases, backends, and who supports what");
   list->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
-  add_plugin_option(list);
+  add_plugin_option(list, v);
+  return list;
+}
 
+/// `run`: cases into <out>/<case>.json, .csv and .md.
+CLI::App* declare_run(CLI::App& app, Values& v) {
   auto* run = app.add_subcommand("run", "run cases and write <out>/<case>.json, .csv and .md");
   run->add_option("CASES", v.cases, "case files or folders")->required();
   run->add_option("--out", v.out, "output folder")->default_val("out");
   run->add_option("--backends", v.backends, "comma-separated backend names (default: all)");
   run->add_option("--dt", v.dts, "comma-separated steps from the case's dt, e.g. 1/60,1/120");
-  // Options shared by the commands that run and time a sweep.
-  const auto add_sweep_options = [&](CLI::App* command) {
-    command->add_option("--jobs", v.jobs, "accuracy runs in parallel (1 to 256)")
-        ->default_val(v.default_jobs);
-    command->add_flag("--no-cost", v.no_cost, "skip the timing pass");
-    command
-        ->add_option("--cost-time", v.cost_seconds,
-                     "minimum timed seconds per run in the cost pass (0.001 to 600)")
-        ->default_val(0.005);
-  };
-  add_sweep_options(run);
-  // Options of every command that runs backends.
-  const auto add_isolation_options = [&](CLI::App* command) {
-    command->add_option("--timeout", v.timeout,
-                        "seconds a run may take, 0.001 to 86400 (default: from the case's size)");
-    command->add_flag(
-        "--no-isolation", v.no_isolation,
-        "run in this process, not in child processes (for debugging: a crash ends the program)");
-  };
-  add_isolation_options(run);
-  add_plugin_option(run);
-  // Programs' trajectories as backend rows: every command that runs a case's rows.
-  const auto add_import_option = [&](CLI::App* command) {
-    command->add_option("--trajectory", v.imports,
-                        "NAME@DT=FILE: a program's trajectory of the case at step DT (as --dt "
-                        "takes it) as the backend row import/NAME; repeatable, one case only");
-  };
-  add_import_option(run);
-  // Options of every command whose results are kept between invocations.
-  const auto add_cache_options = [&](CLI::App* command) {
-    command->add_option("--cache", v.cache,
-                        "folder of kept results, or 'off' (default: $BEACHBALL_CACHE, else "
-                        "$XDG_CACHE_HOME/beachball or ~/.cache/beachball)");
-    command->add_flag("--fresh", v.fresh, "run everything again (new results are still kept)");
-  };
-  add_cache_options(run);
+  add_sweep_options(run, v);
+  add_isolation_options(run, v);
+  add_plugin_option(run, v);
+  add_import_option(run, v);
+  add_cache_options(run, v);
   auto* run_shard =
       run->add_option("--shard", v.shard,
                       "I/N: run only share I of N of the work and keep its results in --out, "
@@ -112,19 +120,27 @@ Commands declare_commands(CLI::App& app, Values& v) {
                 "also write every run's state at every step (and the reference's at its "
                 "samples) into <out>/<case>-trajectories/, one CSV file per run")
       ->excludes(run_shard);
+  return run;
+}
 
+/// `report`: the suite and its report pages.
+CLI::App* declare_report(CLI::App& app, Values& v) {
   auto* report = app.add_subcommand("report", "run the suite and write the report pages");
   report->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
   report->add_option("--out", v.out, "report folder")->default_val("reports");
-  add_sweep_options(report);
-  add_isolation_options(report);
-  add_plugin_option(report);
-  add_import_option(report);
-  add_cache_options(report);
+  add_sweep_options(report, v);
+  add_isolation_options(report, v);
+  add_plugin_option(report, v);
+  add_import_option(report, v);
+  add_cache_options(report, v);
   report->add_option("--shard", v.shard,
                      "I/N: run only share I of N of the work and keep its results in --out, "
                      "for `merge` (no pages)");
+  return report;
+}
 
+/// `merge`: the report (or run's files) from the shards' kept results.
+CLI::App* declare_merge(CLI::App& app, Values& v) {
   auto* merge = app.add_subcommand(
       "merge",
       "write the report (or run's files) from the kept results of every `report --shard I/N` "
@@ -136,9 +152,13 @@ Commands declare_commands(CLI::App& app, Values& v) {
   merge->add_option("--out", v.out, "report folder (or run's output folder)")
       ->default_val("reports");
   merge->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
-  add_isolation_options(merge);
-  add_plugin_option(merge);
+  add_isolation_options(merge, v);
+  add_plugin_option(merge, v);
+  return merge;
+}
 
+/// `stability`: the largest stable step per backend.
+CLI::App* declare_stability(CLI::App& app, Values& v) {
   auto* stability =
       app.add_subcommand("stability", "largest stable step per backend, by bisection");
   stability->add_option("CASES", v.cases, "case files or folders")->required();
@@ -146,11 +166,15 @@ Commands declare_commands(CLI::App& app, Values& v) {
   stability->add_option("--backends", v.backends, "comma-separated backend names (default: all)");
   stability->add_option("--jobs", v.jobs, "backends searched in parallel (1 to 256)")
       ->default_val(v.default_jobs);
-  add_isolation_options(stability);
-  add_plugin_option(stability);
-  add_import_option(stability);
-  add_cache_options(stability);
+  add_isolation_options(stability, v);
+  add_plugin_option(stability, v);
+  add_import_option(stability, v);
+  add_cache_options(stability, v);
+  return stability;
+}
 
+/// `check`: the gates, exit 1 when any fails.
+CLI::App* declare_check(CLI::App& app, Values& v) {
   auto* check = app.add_subcommand("check", "check the gates; exit 1 when any fails");
   check->add_option("CASES", v.cases, "case files or folders (default: the bundled suite)");
   check->add_option("--junit", v.junit, "also write the gate results as JUnit XML");
@@ -158,12 +182,25 @@ Commands declare_commands(CLI::App& app, Values& v) {
                     "also compare every error and observable with the results kept in this "
                     "folder (<case>.json of a `run` or a report); exit 1 where one got worse");
   check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
-  add_isolation_options(check);
-  add_plugin_option(check);
-  add_import_option(check);
-  add_cache_options(check);
+  add_isolation_options(check, v);
+  add_plugin_option(check, v);
+  add_import_option(check, v);
+  add_cache_options(check, v);
   check->add_option("--shard", v.shard,
                     "I/N: check only the gates of share I of N of the backends (a CI matrix)");
+  return check;
+}
+
+/// Declares every subcommand and its options on `app`, writing into `v`, in the order the
+/// help lists them.
+Commands declare_commands(CLI::App& app, Values& v) {
+  app.require_subcommand(1);
+  CLI::App* list = declare_list(app, v);
+  CLI::App* run = declare_run(app, v);
+  CLI::App* report = declare_report(app, v);
+  CLI::App* merge = declare_merge(app, v);
+  CLI::App* stability = declare_stability(app, v);
+  CLI::App* check = declare_check(app, v);
   return {list, run, report, stability, check, merge};
 }
 

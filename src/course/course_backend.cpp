@@ -38,72 +38,19 @@ class CourseSimulation : public Simulation {
         start_(scene, dt),
         equations_(scene) {
     const State start = initial_state(scene);
-    for (const BodyState& b : start) {
-      points_.x.push_back(b.position);
-      points_.v.push_back(b.velocity);
-      orientation_.push_back(b.orientation);
-      omega_.push_back(b.angular_velocity);
-      spins_ = spins_ || b.angular_velocity.norm() > 0.0;
-    }
-    // A body whose inertia differs along its axes, or that a torque turns, turns by the
-    // seed's rotation with physics (L += T dt).
-    torques_ = equations_.forces().torques();
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-      const Body& b = scene.bodies[i];
-      const Vec3 principal = principal_inertia(b);
-      principal_.push_back(principal);
-      const bool turned = torques_ && !b.torque.isZero() && principal.minCoeff() > 0.0;
-      rigid_.push_back(!b.fixed && (principal.maxCoeff() > principal.minCoeff() || turned));
-      spins_ = spins_ || (!b.fixed && turned);
-      momentum_.push_back(course::world_inertia(principal, orientation_[i]) * omega_[i]);
-    }
+    take_start(start);
+    choose_rotations();
     work_.resize(start.size());
     start_a_.resize(start.size());
     torque_.assign(start.size(), Vec3::Zero());
     settings_ = {{"integrator", variant.integrator}};
     if (!contacts_.empty()) settings_.push_back({"ground_rule", variant.ground});
     record_contact_rules(variant);
-    if (!friction_.empty()) {
-      settings_.push_back({"friction_rule", variant.friction});
-      settings_.push_back(
-          {"friction_contact",
-           std::string("a body in contact with the ground at the step's start feels friction "
-                       "throughout the step, whatever the ground rule: within 1e-9 m of it or "
-                       "overlapping it, or in contact or resolved against it in the step "
-                       "before and back on it within four steps under gravity alone (gap + "
-                       "v_n T - g_n T^2 / 2 <= 1e-9 m, T = 4 dt); N from the other forces "
-                       "pressing it on the ground; a "
-                       "tangential speed under 1e-12 m/s counts as rest")});
-      if (variant.friction == "clamp")
-        settings_.push_back(
-            {"friction_stop",
-             std::string("clamp: before each step, a slide that the step's kinetic friction "
-                         "(less the other forces' pull along it) would turn back stops: its "
-                         "velocity along the ground becomes 0 and static friction takes the "
-                         "step; after the step, a velocity along the ground that turned back "
-                         "anyway is set to 0")});
-    }
-    for (const Hinge& h : scene.hinges)
-      if (!scene.bodies[h.body].torque.isZero())
-        throw UnsupportedScene("the course's hinge (seed section 5) turns body '" +
-                               scene.bodies[h.body].name +
-                               "' by the torque of the forces at its centre; a torque of its "
-                               "own is not modelled there");
+    record_friction_rules(variant);
+    refuse_hinge_torques();
+    record_hinge_rules();
+    // A hinged body turns from where the step starts, under the forces there.
     if (!hinges_.empty()) {
-      settings_.push_back(
-          {"hinge", std::string("seed section 5, the plank on an axis: L += T dt (T the torque "
-                                "of the forces at the centre about the axis), omega = L / J "
-                                "with the seed's J = 1/3 m d1^2 + 1/3 m d2^2 (a box as a plank "
-                                "along its longest side, split at the axis), the centre carried "
-                                "round the anchor")});
-      for (const Hinge& h : scene.hinges)
-        if (ground_pair(scene, h.body) && scene.bodies[h.body].shape == Shape::Box) {
-          settings_.push_back(
-              {"hinge_ground", std::string("a step that would turn a hinged box further below "
-                                           "the ground is not taken and its L becomes -e L "
-                                           "(section 3's clamp rule applied to the angle)")});
-          break;
-        }
       hinge_a_.resize(start.size());
       spins_ = true;
     }
@@ -189,6 +136,86 @@ class CourseSimulation : public Simulation {
   Settings settings() const override { return settings_; }
 
  private:
+  /// Each body's position, velocity, orientation and spin where the run starts.
+  void take_start(const State& start) {
+    for (const BodyState& b : start) {
+      points_.x.push_back(b.position);
+      points_.v.push_back(b.velocity);
+      orientation_.push_back(b.orientation);
+      omega_.push_back(b.angular_velocity);
+      spins_ = spins_ || b.angular_velocity.norm() > 0.0;
+    }
+  }
+
+  /// A body whose inertia differs along its axes, or that a torque turns, turns by the
+  /// seed's rotation with physics (L += T dt).
+  void choose_rotations() {
+    torques_ = equations_.forces().torques();
+    for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
+      const Body& b = scene_.bodies[i];
+      const Vec3 principal = principal_inertia(b);
+      principal_.push_back(principal);
+      const bool turned = torques_ && !b.torque.isZero() && principal.minCoeff() > 0.0;
+      rigid_.push_back(!b.fixed && (principal.maxCoeff() > principal.minCoeff() || turned));
+      spins_ = spins_ || (!b.fixed && turned);
+      momentum_.push_back(course::world_inertia(principal, orientation_[i]) * omega_[i]);
+    }
+  }
+
+  /// The friction rule and what it does, where the scene has friction.
+  void record_friction_rules(const CourseVariant& variant) {
+    if (friction_.empty()) return;
+    settings_.push_back({"friction_rule", variant.friction});
+    settings_.push_back(
+        {"friction_contact",
+         std::string("a body in contact with the ground at the step's start feels friction "
+                     "throughout the step, whatever the ground rule: within 1e-9 m of it or "
+                     "overlapping it, or in contact or resolved against it in the step "
+                     "before and back on it within four steps under gravity alone (gap + "
+                     "v_n T - g_n T^2 / 2 <= 1e-9 m, T = 4 dt); N from the other forces "
+                     "pressing it on the ground; a "
+                     "tangential speed under 1e-12 m/s counts as rest")});
+    if (variant.friction == "clamp")
+      settings_.push_back(
+          {"friction_stop",
+           std::string("clamp: before each step, a slide that the step's kinetic friction "
+                       "(less the other forces' pull along it) would turn back stops: its "
+                       "velocity along the ground becomes 0 and static friction takes the "
+                       "step; after the step, a velocity along the ground that turned back "
+                       "anyway is set to 0")});
+  }
+
+  /// The course's hinge turns a body by the forces at its centre only: a torque of the body's
+  /// own is a scene it cannot run.
+  void refuse_hinge_torques() const {
+    for (const Hinge& h : scene_.hinges)
+      if (!scene_.bodies[h.body].torque.isZero())
+        throw UnsupportedScene("the course's hinge (seed section 5) turns body '" +
+                               scene_.bodies[h.body].name +
+                               "' by the torque of the forces at its centre; a torque of its "
+                               "own is not modelled there");
+  }
+
+  /// The hinge's rule, and the clamp against the ground of a hinged box, where the scene
+  /// has hinges.
+  void record_hinge_rules() {
+    if (hinges_.empty()) return;
+    settings_.push_back(
+        {"hinge", std::string("seed section 5, the plank on an axis: L += T dt (T the torque "
+                              "of the forces at the centre about the axis), omega = L / J "
+                              "with the seed's J = 1/3 m d1^2 + 1/3 m d2^2 (a box as a plank "
+                              "along its longest side, split at the axis), the centre carried "
+                              "round the anchor")});
+    for (const Hinge& h : scene_.hinges)
+      if (ground_pair(scene_, h.body) && scene_.bodies[h.body].shape == Shape::Box) {
+        settings_.push_back(
+            {"hinge_ground", std::string("a step that would turn a hinged box further below "
+                                         "the ground is not taken and its L becomes -e L "
+                                         "(section 3's clamp rule applied to the angle)")});
+        break;
+      }
+  }
+
   /// The hit and spin rules, where the scene has a ball that can meet a moving box, or a
   /// ball that touches anything.
   void record_contact_rules(const CourseVariant& variant) {

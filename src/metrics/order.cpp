@@ -81,15 +81,18 @@ std::string short_run_reason(const OrderFit& fit, int in_run, double dt,
          " in a row between the rounding floor and saturation, three needed" + others(fit);
 }
 
-}  // namespace
-
-OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
-  OrderFit fit;
+/// The points with a step, smallest dt first.
+std::vector<ErrorPoint> sorted_by_dt(const std::vector<ErrorPoint>& input) {
   std::vector<ErrorPoint> points;
   for (const ErrorPoint& p : input)
     if (p.dt > 0.0) points.push_back(p);
   std::sort(points.begin(), points.end(),
             [](const ErrorPoint& a, const ErrorPoint& b) { return a.dt < b.dt; });
+  return points;
+}
+
+/// What each point is to the fit, counted into `fit` by kind.
+std::vector<Use> uses_of(const std::vector<ErrorPoint>& points, double saturation, OrderFit& fit) {
   std::vector<Use> use;
   for (const ErrorPoint& p : points) {
     const Use u = !std::isfinite(p.error) ? Use::Failed
@@ -101,50 +104,85 @@ OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
     fit.saturated += u == Use::Saturated;
     use.push_back(u);
   }
-  // Local slopes between neighbouring steps that both have an error above zero.
+  return use;
+}
+
+/// The local slope between the points at `i` and `i + 1`.
+double local_slope(const std::vector<ErrorPoint>& points, std::size_t i) {
+  return std::log(points[i + 1].error / points[i].error) /
+         std::log(points[i + 1].dt / points[i].dt);
+}
+
+/// Local slopes between neighbouring steps that both have an error above zero.
+std::vector<LocalSlope> local_slopes(const std::vector<ErrorPoint>& points) {
   const auto measurable = [&](std::size_t i) {
     return std::isfinite(points[i].error) && points[i].error > 0.0;
   };
-  const auto slope = [&](std::size_t i) {
-    return std::log(points[i + 1].error / points[i].error) /
-           std::log(points[i + 1].dt / points[i].dt);
-  };
+  std::vector<LocalSlope> out;
   for (std::size_t i = 0; i + 1 < points.size(); ++i)
     if (measurable(i) && measurable(i + 1))
-      fit.local_slopes.push_back({points[i].dt, points[i + 1].dt, slope(i), false});
+      out.push_back({points[i].dt, points[i + 1].dt, local_slope(points, i), false});
+  return out;
+}
 
-  const auto first = std::find(use.begin(), use.end(), Use::InRange);
-  if (first == use.end()) {
-    fit.reason = points.empty() || fit.failed == static_cast<int>(points.size())
-                     ? "no run with an error to fit"
-                 : fit.saturated == 0 && fit.failed == 0
-                     ? "rounding: every error is at or below its rounding floor"
-                 : fit.below_floor == 0 && fit.failed == 0
-                     ? "saturated: every error is at or above a tenth of the motion's scale (" +
-                           significant_digits(saturation) + " m)"
-                     : "no error between the rounding floor and saturation" + others(fit);
-    return fit;
-  }
-  // From the smallest dt in range upwards, while the next step is in range and the local
-  // slopes so far agree.
-  const std::size_t start = static_cast<std::size_t>(first - use.begin());
-  std::size_t end = start + 1;
+/// Why no point is in range: none has an error, all are at the floor, all saturated, or a mix.
+std::string no_range_reason(const OrderFit& fit, std::size_t points, double saturation) {
+  return points == 0 || fit.failed == static_cast<int>(points) ? "no run with an error to fit"
+         : fit.saturated == 0 && fit.failed == 0
+             ? "rounding: every error is at or below its rounding floor"
+         : fit.below_floor == 0 && fit.failed == 0
+             ? "saturated: every error is at or above a tenth of the motion's scale (" +
+                   significant_digits(saturation) + " m)"
+             : "no error between the rounding floor and saturation" + others(fit);
+}
+
+/// The asymptotic run from `start`: its end (one past its last point), its local slopes, and
+/// the first slope that disagreed with them, if one stopped it.
+struct AgreeingRun {
+  std::size_t end = 0;
   std::vector<double> slopes;
   std::optional<double> disagreeing;
-  for (; end < points.size() && use[end] == Use::InRange; ++end) {
-    slopes.push_back(slope(end - 1));
-    const auto [low, high] = std::minmax_element(slopes.begin(), slopes.end());
+};
+
+/// From the smallest dt in range upwards, while the next step is in range and the local
+/// slopes so far agree.
+AgreeingRun agreeing_run(const std::vector<ErrorPoint>& points, const std::vector<Use>& use,
+                         std::size_t start) {
+  AgreeingRun run;
+  run.end = start + 1;
+  for (; run.end < points.size() && use[run.end] == Use::InRange; ++run.end) {
+    run.slopes.push_back(local_slope(points, run.end - 1));
+    const auto [low, high] = std::minmax_element(run.slopes.begin(), run.slopes.end());
     double mean = 0.0;
-    for (double s : slopes) mean += s / static_cast<double>(slopes.size());
+    for (double s : run.slopes) mean += s / static_cast<double>(run.slopes.size());
     if (*high - *low > slope_tolerance(mean)) {
-      disagreeing = slopes.back();
-      slopes.pop_back();
+      run.disagreeing = run.slopes.back();
+      run.slopes.pop_back();
       break;
     }
   }
+  return run;
+}
+
+}  // namespace
+
+OrderFit fit_order(const std::vector<ErrorPoint>& input, double saturation) {
+  OrderFit fit;
+  const std::vector<ErrorPoint> points = sorted_by_dt(input);
+  const std::vector<Use> use = uses_of(points, saturation, fit);
+  fit.local_slopes = local_slopes(points);
+  const auto first = std::find(use.begin(), use.end(), Use::InRange);
+  if (first == use.end()) {
+    fit.reason = no_range_reason(fit, points.size(), saturation);
+    return fit;
+  }
+  const std::size_t start = static_cast<std::size_t>(first - use.begin());
+  const AgreeingRun run = agreeing_run(points, use, start);
+  const std::size_t end = run.end;
+  const std::vector<double>& slopes = run.slopes;
   const int in_run = static_cast<int>(end - start);
   if (in_run < 3) {
-    fit.reason = short_run_reason(fit, in_run, points[start].dt, slopes, disagreeing);
+    fit.reason = short_run_reason(fit, in_run, points[start].dt, slopes, run.disagreeing);
     return fit;
   }
   // Two local slopes cannot tell an order from a drift (1.19 then 1.32 on the way from 1.7

@@ -58,30 +58,6 @@ std::vector<std::size_t> plotted_slots(const Scene& scene, const std::vector<int
   return out;
 }
 
-/// The guide's last finite value of `pick` for the body at `slot`, if any.
-template <typename Pick>
-std::optional<std::pair<double, double>> last_point(const Trajectory& guide, std::size_t slot,
-                                                    Pick pick) {
-  for (std::size_t j = guide.states.size(); j-- > 0;)
-    if (slot < guide.states[j].size()) {
-      const auto [x, y] = pick(guide.times[j], guide.states[j][slot]);
-      if (std::isfinite(x) && std::isfinite(y)) return std::pair{x, y};
-    }
-  return std::nullopt;
-}
-
-/// The guide's first finite value of `pick` for the body at `slot`, if any.
-template <typename Pick>
-std::optional<std::pair<double, double>> first_point(const Trajectory& guide, std::size_t slot,
-                                                     Pick pick) {
-  for (std::size_t j = 0; j < guide.states.size(); ++j)
-    if (slot < guide.states[j].size()) {
-      const auto [x, y] = pick(guide.times[j], guide.states[j][slot]);
-      if (std::isfinite(x) && std::isfinite(y)) return std::pair{x, y};
-    }
-  return std::nullopt;
-}
-
 /// One run's series on one panel: per body of the group, its (across, value) points.
 struct PanelRun {
   std::size_t run = 0;
@@ -94,156 +70,215 @@ struct OffScale {
   std::string axis;
 };
 
-}  // namespace
-
-/// One panel per group of bodies (body_panels.hpp), every backend over the reference. With
-/// `speed`, each body's speed against time; else its path y against x where the group moves
-/// both ways in the plane, or the coordinate that moves most against time. Bodies sharing a
-/// panel are named at the end of the reference's curve. A run far off the reference's scale
-/// is cut at the axis and named above the panels; the legend has a band of its own.
-std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std::string& name,
-                        bool speed) {
-  const Scene& scene = *results.scene;
-  const auto runs = report_runs(results);
-  // The reference decides what is drawn; without one, the first run that has states.
-  const Trajectory* guide = &results.reference_run.trajectory;
-  for (const RunRecord* r : runs)
-    if (guide->states.empty()) guide = &r->trajectory;
-  const std::vector<int> drawn = drawn_bodies(scene);
-  const auto panels_of = body_panels(scene, drawn, plotted_slots(scene, drawn, runs, *guide));
-  std::string data, script;
-  std::vector<LegendEntry> legend;
-  std::map<std::size_t, OffScale> off;  // by run, the farthest over the panels
-  int block = 0, panels = 0;
-  for (const std::vector<std::size_t>& group : panels_of) {
-    Vec3 range = Vec3::Zero();
-    bool path = !speed && scene.dims == 2;
-    for (std::size_t k : group) {
-      const Vec3 r = motion_range(*guide, k);
-      range = range.cwiseMax(r);
-      path = path && std::min(r.x(), r.y()) > 0.05 * r.maxCoeff();
-    }
-    Eigen::Index axis = 1;
-    range.maxCoeff(&axis);
-    // What the panel plots of a body's state at time t: (across, value).
-    const auto pick = [&](double t, const BodyState& b) {
-      if (speed) return std::pair{t, b.velocity.norm()};
-      return path ? std::pair{b.position.x(), b.position.y()} : std::pair{t, b.position[axis]};
-    };
-    // Every run's points, and the guide's extent on each axis.
-    std::vector<PanelRun> series;
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      const Trajectory& t = runs[i]->trajectory;
-      // A run without states (a reference with no answer) draws nothing.
-      if (t.states.empty()) continue;
-      PanelRun run{i, {}, {}};
-      for (std::size_t k : group) {
-        run.across.emplace_back();
-        run.value.emplace_back();
-        for (std::size_t j = 0; j < t.states.size(); ++j) {
-          const auto [x, y] = pick(t.times[j], t.states[j][k]);
-          run.across.back().push_back(x);
-          run.value.back().push_back(y);
-        }
-      }
-      series.push_back(std::move(run));
-    }
-    Extent guide_x, guide_y;
-    for (std::size_t k : group)
-      for (std::size_t j = 0; j < guide->states.size(); ++j) {
-        const auto [x, y] = pick(guide->times[j], guide->states[j][k]);
-        guide_x.add(x), guide_y.add(y);
-      }
-    // How far each run leaves the guide's extent (across only on a path), against the
-    // panel's scale.
-    std::vector<double> reach;
-    for (const PanelRun& run : series) {
-      double most = 0.0;
-      for (std::size_t g = 0; g < group.size(); ++g)
-        for (std::size_t j = 0; j < run.value[g].size(); ++j) {
-          most = std::max(most, guide_y.beyond(run.value[g][j]));
-          if (path) most = std::max(most, guide_x.beyond(run.across[g][j]));
-        }
-      reach.push_back(most);
-    }
-    const double span = path ? std::max(guide_x.span(), guide_y.span()) : guide_y.span();
-    const double tiny = 1e-9 * (1.0 + std::max(std::abs(guide_y.lo), std::abs(guide_y.hi)));
-    const double limit = off_scale_limit(reach, span, tiny);
-    Extent window_x = guide_x, window_y = guide_y;
-    bool cut = false;
-    std::string plot, labels, names;
-    std::vector<LegendEntry> titled;
-    for (std::size_t s = 0; s < series.size(); ++s) {
-      const PanelRun& run = series[s];
-      const std::size_t i = run.run;
-      const bool off_scale = guide_y.empty() ? false : reach[s] > limit;
-      if (off_scale) {
-        // Named with the value farthest off the guide's extent.
-        cut = true;
-        OffScale& o = off[i];
-        for (std::size_t g = 0; g < group.size(); ++g)
-          for (std::size_t j = 0; j < run.value[g].size(); ++j) {
-            const auto note = [&](double v, const Extent& e, const std::string& on) {
-              if (e.beyond(v) > o.beyond) o = {e.beyond(v), v, on};
-            };
-            note(run.value[g][j], guide_y,
-                 speed  ? "speed"
-                 : path ? "y"
-                        : std::string(1, "xyz"[axis]));
-            if (path) note(run.across[g][j], guide_x, "x");
-          }
-      }
-      for (std::size_t g = 0; g < group.size(); ++g) {
-        if (!off_scale)
-          for (std::size_t j = 0; j < run.value[g].size(); ++j)
-            window_x.add(run.across[g][j]), window_y.add(run.value[g][j]);
-        const std::string rows = series_rows(run.across[g], run.value[g]);
-        if (rows.empty()) continue;
-        data += "# " + runs[i]->backend + "\n" + rows + "\n\n";
-        plot += (plot.empty() ? "plot " : ", \\\n     ") +
-                series_line(i, block++, runs[i]->backend, g == 0);
-        if (g == 0) titled.push_back({runs[i]->backend, series_style(i, runs[i]->backend)});
-      }
-    }
-    for (std::size_t g = 0; g < group.size(); ++g) {
-      const std::size_t k = group[g];
-      const std::string& who = scene.bodies[drawn[k]].name;
-      names += (names.empty() ? "" : ", ") + who;
-      // Each body of a shared panel is named where the reference's curve ends, on the side
-      // of the panel that leaves the text inside it.
-      if (const auto end = last_point(*guide, k, pick); end && group.size() > 1) {
-        // The curve ends right of where it began: the name reads leftwards from its end.
-        const auto begin = first_point(*guide, k, pick);
-        const bool right_half = !begin || end->first > begin->first;
-        labels += fmt::format("set label {} at {:.9g},{:.9g} {} offset {},0.8 front\n", quote(who),
-                              end->first, end->second, right_half ? "right" : "left",
-                              right_half ? -0.5 : 0.5);
-      }
-    }
-    // A group no run has a finite value for leaves its panel empty.
-    if (plot.empty()) continue;
-    // The legend is the first panel's.
-    if (++panels == 1) legend = titled;
-    const std::string y_label = speed  ? names + " speed (m/s)"
-                                : path ? names + " y (m)"
-                                       : names + " " + "xyz"[axis] + " (m)";
-    const std::string x_label = path ? names + " x (m)" : "t (s)";
-    // The axes of a panel with a run cut: the guide's and the kept runs' values, padded.
-    std::string window = "set autoscale xy\n";
-    const auto padded = [](const Extent& e) {
-      const double pad = 0.05 * std::max(e.span(), 1e-9 * (1.0 + std::abs(e.hi)));
-      return fmt::format("[{:.9g}:{:.9g}]", e.lo - pad, e.hi + pad);
-    };
-    if (cut) {
-      window += "set yrange " + padded(window_y) + "\n";
-      if (path) window += "set xrange " + padded(window_x) + "\n";
-    }
-    script += fmt::format("unset label\n{}{}set xlabel {}\nset ylabel {}\n{}\n", labels, window,
-                          quote(x_label), quote(y_label), plot);
+/// What a panel plots of a body's state at time t, as (across, value): with `speed` its
+/// speed against time, on a `path` its y against its x, else its coordinate along `axis`
+/// against time.
+struct PanelPick {
+  bool speed = false, path = false;
+  Eigen::Index axis = 1;
+  std::pair<double, double> operator()(double t, const BodyState& b) const {
+    if (speed) return std::pair{t, b.velocity.norm()};
+    return path ? std::pair{b.position.x(), b.position.y()} : std::pair{t, b.position[axis]};
   }
-  if (panels == 0)
-    return "no run has a finite " + std::string(speed ? "velocity" : "position") + " to draw";
-  // The runs cut at an axis, in the order of the runs, each with the farthest it goes.
+  /// The name of the value's axis, as a cut run's reach is given.
+  std::string value_axis() const {
+    return speed ? "speed" : path ? "y" : std::string(1, "xyz"[axis]);
+  }
+};
+
+/// The guide's first finite point of the body at `slot` (its last with `from_end`), if any.
+std::optional<std::pair<double, double>> finite_point(const Trajectory& guide, std::size_t slot,
+                                                      const PanelPick& pick, bool from_end) {
+  const std::size_t n = guide.states.size();
+  for (std::size_t step = 0; step < n; ++step) {
+    const std::size_t j = from_end ? n - 1 - step : step;
+    if (slot < guide.states[j].size()) {
+      const auto [x, y] = pick(guide.times[j], guide.states[j][slot]);
+      if (std::isfinite(x) && std::isfinite(y)) return std::pair{x, y};
+    }
+  }
+  return std::nullopt;
+}
+
+/// The pick of a group's panel: its path where the group moves both ways in the plane (a
+/// 2D scene, without `speed`), else the coordinate the guide moves most.
+PanelPick panel_pick(const Scene& scene, const Trajectory& guide,
+                     const std::vector<std::size_t>& group, bool speed) {
+  PanelPick pick;
+  pick.speed = speed;
+  pick.path = !speed && scene.dims == 2;
+  Vec3 range = Vec3::Zero();
+  for (std::size_t k : group) {
+    const Vec3 r = motion_range(guide, k);
+    range = range.cwiseMax(r);
+    pick.path = pick.path && std::min(r.x(), r.y()) > 0.05 * r.maxCoeff();
+  }
+  range.maxCoeff(&pick.axis);
+  return pick;
+}
+
+/// Every run's points on the panel of `group`; a run without states (a reference with no
+/// answer) draws nothing.
+std::vector<PanelRun> panel_series(const std::vector<const RunRecord*>& runs,
+                                   const std::vector<std::size_t>& group, const PanelPick& pick) {
+  std::vector<PanelRun> series;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const Trajectory& t = runs[i]->trajectory;
+    if (t.states.empty()) continue;
+    PanelRun run{i, {}, {}};
+    for (std::size_t k : group) {
+      run.across.emplace_back();
+      run.value.emplace_back();
+      for (std::size_t j = 0; j < t.states.size(); ++j) {
+        const auto [x, y] = pick(t.times[j], t.states[j][k]);
+        run.across.back().push_back(x);
+        run.value.back().push_back(y);
+      }
+    }
+    series.push_back(std::move(run));
+  }
+  return series;
+}
+
+/// The extent of a panel's points on each of its axes.
+struct PanelExtent {
+  Extent x, y;
+};
+
+/// The guide's extent on the panel of `group`.
+PanelExtent guide_extent(const Trajectory& guide, const std::vector<std::size_t>& group,
+                         const PanelPick& pick) {
+  PanelExtent out;
+  for (std::size_t k : group)
+    for (std::size_t j = 0; j < guide.states.size(); ++j) {
+      const auto [x, y] = pick(guide.times[j], guide.states[j][k]);
+      out.x.add(x), out.y.add(y);
+    }
+  return out;
+}
+
+/// Per series, whether it is off the panel's scale: how far it leaves the guide's extent
+/// (across only on a path), against the guide's span and the other runs' reach.
+std::vector<bool> off_scale_series(const std::vector<PanelRun>& series, const PanelExtent& guide,
+                                   bool path) {
+  std::vector<double> reach;
+  for (const PanelRun& run : series) {
+    double most = 0.0;
+    for (std::size_t g = 0; g < run.value.size(); ++g)
+      for (std::size_t j = 0; j < run.value[g].size(); ++j) {
+        most = std::max(most, guide.y.beyond(run.value[g][j]));
+        if (path) most = std::max(most, guide.x.beyond(run.across[g][j]));
+      }
+    reach.push_back(most);
+  }
+  const double span = path ? std::max(guide.x.span(), guide.y.span()) : guide.y.span();
+  const double tiny = 1e-9 * (1.0 + std::max(std::abs(guide.y.lo), std::abs(guide.y.hi)));
+  const double limit = off_scale_limit(reach, span, tiny);
+  std::vector<bool> out;
+  for (double r : reach) out.push_back(guide.y.empty() ? false : r > limit);
+  return out;
+}
+
+/// Notes in `o` the value of a cut run farthest off the guide's extent, and its axis.
+void note_farthest(const PanelRun& run, const PanelExtent& guide, const PanelPick& pick,
+                   OffScale& o) {
+  const auto note = [&](double v, const Extent& e, const std::string& on) {
+    if (e.beyond(v) > o.beyond) o = {e.beyond(v), v, on};
+  };
+  for (std::size_t g = 0; g < run.value.size(); ++g)
+    for (std::size_t j = 0; j < run.value[g].size(); ++j) {
+      note(run.value[g][j], guide.y, pick.value_axis());
+      if (pick.path) note(run.across[g][j], guide.x, "x");
+    }
+}
+
+/// A panel's series drawn: its plot command, the legend entries its runs bring, whether a
+/// run was cut, and the extent of the guide and the runs kept on the scale.
+struct DrawnSeries {
+  std::string plot;
+  std::vector<LegendEntry> titled;
+  bool cut = false;
+  PanelExtent window;
+};
+
+/// Every series of a panel: its rows into `data` as gnuplot's blocks, numbered on from
+/// `block`, and its line in the plot command.
+DrawnSeries draw_series(const std::vector<const RunRecord*>& runs,
+                        const std::vector<PanelRun>& series, const std::vector<bool>& off_scale,
+                        const PanelExtent& guide, std::string& data, int& block) {
+  DrawnSeries out;
+  out.window = guide;
+  for (std::size_t s = 0; s < series.size(); ++s) {
+    const PanelRun& run = series[s];
+    const std::size_t i = run.run;
+    out.cut = out.cut || off_scale[s];
+    for (std::size_t g = 0; g < run.value.size(); ++g) {
+      if (!off_scale[s])
+        for (std::size_t j = 0; j < run.value[g].size(); ++j)
+          out.window.x.add(run.across[g][j]), out.window.y.add(run.value[g][j]);
+      const std::string rows = series_rows(run.across[g], run.value[g]);
+      if (rows.empty()) continue;
+      data += "# " + runs[i]->backend + "\n" + rows + "\n\n";
+      out.plot += (out.plot.empty() ? "plot " : ", \\\n     ") +
+                  series_line(i, block++, runs[i]->backend, g == 0);
+      if (g == 0) out.titled.push_back({runs[i]->backend, series_style(i, runs[i]->backend)});
+    }
+  }
+  return out;
+}
+
+/// A panel's bodies by name, and the gnuplot labels that name each where the reference's
+/// curve ends when they share the panel.
+struct BodyNames {
+  std::string names, labels;
+};
+
+BodyNames body_names(const Scene& scene, const std::vector<int>& drawn,
+                     const std::vector<std::size_t>& group, const Trajectory& guide,
+                     const PanelPick& pick) {
+  BodyNames out;
+  for (std::size_t k : group) {
+    const std::string& who = scene.bodies[drawn[k]].name;
+    out.names += (out.names.empty() ? "" : ", ") + who;
+    // Each body of a shared panel is named where the reference's curve ends, on the side
+    // of the panel that leaves the text inside it.
+    if (const auto end = finite_point(guide, k, pick, true); end && group.size() > 1) {
+      // The curve ends right of where it began: the name reads leftwards from its end.
+      const auto begin = finite_point(guide, k, pick, false);
+      const bool right_half = !begin || end->first > begin->first;
+      out.labels += fmt::format("set label {} at {:.9g},{:.9g} {} offset {},0.8 front\n",
+                                quote(who), end->first, end->second, right_half ? "right" : "left",
+                                right_half ? -0.5 : 0.5);
+    }
+  }
+  return out;
+}
+
+/// A panel's gnuplot commands: its labels, its axes (where a run is cut, the guide's and the
+/// kept runs' values, padded), its axis titles and its plot.
+std::string panel_script(const PanelPick& pick, const BodyNames& bodies, const DrawnSeries& drawn) {
+  const std::string& names = bodies.names;
+  const std::string y_label = pick.speed  ? names + " speed (m/s)"
+                              : pick.path ? names + " y (m)"
+                                          : names + " " + "xyz"[pick.axis] + " (m)";
+  const std::string x_label = pick.path ? names + " x (m)" : "t (s)";
+  std::string window = "set autoscale xy\n";
+  const auto padded = [](const Extent& e) {
+    const double pad = 0.05 * std::max(e.span(), 1e-9 * (1.0 + std::abs(e.hi)));
+    return fmt::format("[{:.9g}:{:.9g}]", e.lo - pad, e.hi + pad);
+  };
+  if (drawn.cut) {
+    window += "set yrange " + padded(drawn.window.y) + "\n";
+    if (pick.path) window += "set xrange " + padded(drawn.window.x) + "\n";
+  }
+  return fmt::format("unset label\n{}{}set xlabel {}\nset ylabel {}\n{}\n", bodies.labels, window,
+                     quote(x_label), quote(y_label), drawn.plot);
+}
+
+/// The plot's title: the case and what it shows, then the runs cut at an axis, in the order
+/// of the runs, each with the farthest it goes.
+std::vector<std::string> plot_title(const Scene& scene, const std::vector<const RunRecord*>& runs,
+                                    const std::map<std::size_t, OffScale>& off, bool speed) {
   std::vector<std::string> cut_runs;
   for (const auto& [i, o] : off)
     cut_runs.push_back(fmt::format("{} (reaches {}{:.3g} {})", runs[i]->backend,
@@ -255,6 +290,53 @@ std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std:
     for (const std::string& line :
          wrapped_items("off this scale, cut at its edge:", cut_runs, kPlotWidth - 80, 12.0))
       title.push_back(line);
+  return title;
+}
+
+/// The trajectory that decides what is drawn: the reference's, or without one the first
+/// run's that has states.
+const Trajectory& guide_of(const CaseResults& results, const std::vector<const RunRecord*>& runs) {
+  const Trajectory* guide = &results.reference_run.trajectory;
+  for (const RunRecord* r : runs)
+    if (guide->states.empty()) guide = &r->trajectory;
+  return *guide;
+}
+
+}  // namespace
+
+/// One panel per group of bodies (body_panels.hpp), every backend over the reference. With
+/// `speed`, each body's speed against time; else its path y against x where the group moves
+/// both ways in the plane, or the coordinate that moves most against time. Bodies sharing a
+/// panel are named at the end of the reference's curve. A run far off the reference's scale
+/// is cut at the axis and named above the panels; the legend has a band of its own.
+std::string bodies_plot(const CaseResults& results, FileBatch& batch, const std::string& name,
+                        bool speed) {
+  const Scene& scene = *results.scene;
+  const auto runs = report_runs(results);
+  const Trajectory& guide = guide_of(results, runs);
+  const std::vector<int> drawn = drawn_bodies(scene);
+  const auto panels_of = body_panels(scene, drawn, plotted_slots(scene, drawn, runs, guide));
+  std::string data, script;
+  std::vector<LegendEntry> legend;
+  std::map<std::size_t, OffScale> off;  // by run, the farthest over the panels
+  int block = 0, panels = 0;
+  for (const std::vector<std::size_t>& group : panels_of) {
+    const PanelPick pick = panel_pick(scene, guide, group, speed);
+    const std::vector<PanelRun> series = panel_series(runs, group, pick);
+    const PanelExtent extent = guide_extent(guide, group, pick);
+    const std::vector<bool> off_scale = off_scale_series(series, extent, pick.path);
+    for (std::size_t s = 0; s < series.size(); ++s)
+      if (off_scale[s]) note_farthest(series[s], extent, pick, off[series[s].run]);
+    const DrawnSeries drawn_series = draw_series(runs, series, off_scale, extent, data, block);
+    // A group no run has a finite value for leaves its panel empty.
+    if (drawn_series.plot.empty()) continue;
+    // The legend is the first panel's.
+    if (++panels == 1) legend = drawn_series.titled;
+    script += panel_script(pick, body_names(scene, drawn, group, guide, pick), drawn_series);
+  }
+  if (panels == 0)
+    return "no run has a finite " + std::string(speed ? "velocity" : "position") + " to draw";
+  const std::vector<std::string> title = plot_title(scene, runs, off, speed);
   const int title_extra = 16 * static_cast<int>(title.size() - 1);
   // One legend, in its band right of the panels; every panel keeps the same right margin to
   // line up.

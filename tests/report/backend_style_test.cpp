@@ -111,5 +111,21 @@ TEST(BackendStyle, EveryTwoBackendsThatCanShareAPlotAreFarApartInColour) {
   EXPECT_GT(pairs, 1000);
 }
 
+TEST(BackendStyle, EveryBackendOfEveryBundledCaseHasAColourOfItsOwnInItsCase) {
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_path("cases"))) {
+    const Scene scene = load_case(entry.path().string());
+    std::set<std::string> names;
+    for (const std::string& name : backend_names(scene, engine_catalogue())) names.insert(name);
+    names.insert("reference");
+    std::set<std::string> colours;
+    for (const std::string& name : names) {
+      const BackendStyle style = backend_style(name);
+      EXPECT_EQ(style.colour, backend_style(name).colour);
+      EXPECT_TRUE(colours.insert(style.colour).second)
+          << scene.name << ": " << name << " shares " << style.colour;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bb

@@ -1,21 +1,19 @@
-// The runner: capability matching, the sample grid, divergence and backend failures.
+// The runner: capability matching, the sample grid, divergence and backend failures, and
+// what each child measures and brings back. (Without a reference: runner_fallback_test.cpp;
+// the divergence bounds of a correct fast run: runner_bounds_test.cpp.)
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <utility>
 #include <vector>
 
 #include "course/course_backend.hpp"
 #include "metrics/errors.hpp"
 #include "physics/energy.hpp"
-#include "report/summary_tables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
-#include "run/divergence.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
 #include "scene/case_error.hpp"
-#include "scene/motion.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -123,26 +121,6 @@ TEST(Runner, ADivergingBackendDoesNotStopTheOthers) {
   EXPECT_GE(ok, 4);  // at least the four course integrators
 }
 
-// Without a reference, each backend is measured against its own finest run: that run has no
-// difference from a reference in its observables (it was "(0)", itself against itself),
-// while its coarser runs have one.
-TEST(Runner, TheFallbacksFinestRunHasNoReferenceValueOfItsOwn) {
-  const Scene scene = test::scene_from(std::string(test::kStackedBalls) +
-                                       "[[observe]]\nkind = \"final_speed\"\nbody = \"high\"\n");
-  RunOptions options;
-  options.cost = false;
-  options.backends = {"course/semi-implicit-euler"};
-  const CaseResults results = run_case(scene, Registry::load(), options);
-  ASSERT_EQ(results.runs.size(), 3u);
-  for (const RunRecord& run : results.runs) {
-    ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
-    ASSERT_EQ(run.observables.size(), 1u);
-    EXPECT_TRUE(run.observables[0].measured.value);
-    const bool finest = *run.dt == scene.dt.back();
-    EXPECT_EQ(run.observables[0].reference.has_value(), !finest) << *run.dt;
-  }
-}
-
 TEST(Runner, OptionsNamingUnknownBackendsOrStepsAreBadInput) {
   const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
   const Registry registry = Registry::load();
@@ -153,145 +131,6 @@ TEST(Runner, OptionsNamingUnknownBackendsOrStepsAreBadInput) {
   options.backends = {};
   options.dts = {0.0123};
   EXPECT_THROW(run_case(scene, registry, options), CaseError);
-}
-
-// When the reference has no answer, the notes under the table (terminal and page) say why
-// first, in words, and that no error can be measured without it.
-TEST(Runner, AMissingReferenceIsExplainedFirstInTheNotes) {
-  const Scene scene = test::scene_from(R"(name = "tumbling_crate"
-dims = 2
-duration = 1.0
-sample = 0.1
-dt = [0.01]
-[ground]
-restitution = 0.5
-[[body]]
-name = "crate"
-shape = "box"
-half_extents = [0.5, 0.25, 0.25]
-mass = 1.0
-position = [0.0, 2.0, 0.0]
-)");
-  RunOptions options;
-  options.backends = {"course/semi-implicit-euler"};
-  options.cost = false;
-  options.isolation = false;
-  const CaseResults results = run_case(scene, Registry::load(), options);
-  ASSERT_NE(results.reference_run.status, RunStatus::Ok);
-  const std::vector<std::string> notes = run_notes(results, scene.report_dt);
-  ASSERT_FALSE(notes.empty());
-  EXPECT_EQ(notes.front().rfind("reference: unsupported: ", 0), 0u) << notes.front();
-  EXPECT_NE(notes.front().find("moving box"), std::string::npos) << notes.front();
-  EXPECT_NE(notes.front().find("no error column"), std::string::npos) << notes.front();
-}
-
-// Two balls stacked on the ground touch at the start: the reference has no exact answer,
-// so (the fallback of docs/design.md) each backend's errors are against its own finest-dt run, and
-// reference.method, the notes and run_gates say so.
-TEST(Runner, WithoutAReferenceErrorsAreAgainstTheFinestDt) {
-  const Scene scene = test::scene_from(std::string(test::kStackedBalls) + R"([[gate]]
-backend = "course/semi-implicit-euler"
-metric = "position_max"
-max = 10.0
-)");
-  RunOptions options;
-  options.backends = {"course/semi-implicit-euler"};
-  options.cost = false;
-  options.isolation = false;
-  const CaseResults results = run_case(scene, Registry::load(), options);
-  ASSERT_EQ(results.reference_run.status, RunStatus::Unsupported);
-  EXPECT_NE(results.reference.method.find("finest dt"), std::string::npos);
-  ASSERT_EQ(results.runs.size(), 3u);
-  // The two coarser runs are compared with the finest, which is its own reference.
-  const RunRecord& finest = results.runs[2];
-  EXPECT_FALSE(finest.errors.has_value());
-  // It measured itself in its child too, after writing itself whole once for the others.
-  EXPECT_TRUE(finest.summarised);
-  EXPECT_TRUE(finest.trajectory.states.empty());
-  for (int i = 0; i < 2; ++i) {
-    const RunRecord& run = results.runs[i];
-    ASSERT_TRUE(run.errors.has_value()) << *run.dt;
-    // Measured in its child against the finest run, read from the file that run wrote.
-    EXPECT_TRUE(run.summarised);
-    EXPECT_EQ(run.trajectory.states.empty(), *run.dt != scene.report_dt);
-    // Measured again here from the whole runs (the results keep only what the page plots).
-    const RunRecord whole = run_accuracy(
-        CourseBackend({"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"}),
-        scene, *run.dt);
-    const RunRecord whole_finest = run_accuracy(
-        CourseBackend({"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"}),
-        scene, *finest.dt);
-    EXPECT_DOUBLE_EQ(run.errors->position_max,
-                     compare(scene, whole.trajectory, whole_finest.trajectory).position_max);
-    EXPECT_GT(run.errors->position_max, 0.0);
-  }
-  EXPECT_NE(run_notes(results, scene.report_dt).front().find("finest dt"), std::string::npos);
-  // check runs report_dt and, for the fallback, the finest dt too, so the gate has a value.
-  const CaseResults gated = run_gates(scene, Registry::load(), options);
-  ASSERT_EQ(gated.gates.size(), 1u);
-  EXPECT_TRUE(gated.gates[0].value.has_value());
-  EXPECT_TRUE(gated.gates[0].passed);
-}
-
-/// The course's semi-implicit Euler, except that it refuses steps of `finest` and below.
-class FinestFailsBackend : public Backend {
- public:
-  explicit FinestFailsBackend(double finest) : finest_(finest) {}
-  std::string name() const override { return "fails-finest"; }
-  FeatureSet supports() const override { return inner_.supports(); }
-  std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
-                                        double dt) const override {
-    if (dt <= finest_) throw std::runtime_error("no step this small");
-    return inner_.start_run(world, settings, dt);
-  }
-
- private:
-  double finest_;
-  CourseBackend inner_{{"fails-finest", "semi-implicit-euler", "mirror", "clamp"}};
-};
-
-// In the fallback, in child processes: each backend's finest run writes itself to a file
-// that its other runs read in their children; where the finest run fails, the others come
-// back whole and the next finest stands in, measured in the parent.
-TEST(Runner, WithoutAReferenceTheNextFinestStandsInWhenTheFinestFails) {
-  const Scene scene = test::scene_from(test::kStackedBalls);
-  Registry registry = Registry::load();
-  registry.add_engine(std::make_unique<FinestFailsBackend>(scene.dt.back()));
-  RunOptions options;
-  options.cost = false;
-  const CaseResults results = run_case(scene, registry, options);
-  ASSERT_NE(results.reference_run.status, RunStatus::Ok);
-  const auto run_of = [&](const std::string& backend, double dt) {
-    for (const RunRecord& run : results.runs)
-      if (run.backend == backend && run.dt == dt) return &run;
-    return static_cast<const RunRecord*>(nullptr);
-  };
-  const double coarse = scene.dt[0], middle = scene.dt[1], finest = scene.dt[2];
-  ASSERT_EQ(run_of("fails-finest", finest)->status, RunStatus::Error);
-  const RunRecord& stand_in = *run_of("fails-finest", middle);
-  const RunRecord& measured = *run_of("fails-finest", coarse);
-  ASSERT_EQ(stand_in.status, RunStatus::Ok);
-  ASSERT_EQ(measured.status, RunStatus::Ok);
-  EXPECT_FALSE(stand_in.summarised);
-  EXPECT_FALSE(stand_in.errors.has_value());
-  ASSERT_TRUE(measured.errors.has_value());
-  // The same as course/semi-implicit-euler at these steps, measured against its middle run.
-  const CourseBackend same({"x", "semi-implicit-euler", "mirror", "clamp"});
-  EXPECT_DOUBLE_EQ(measured.errors->position_max,
-                   compare(scene, run_accuracy(same, scene, coarse).trajectory,
-                           run_accuracy(same, scene, middle).trajectory)
-                       .position_max);
-  // The course's own runs went through the file, and agree with the same measure here.
-  const RunRecord& course = *run_of("course/semi-implicit-euler", coarse);
-  EXPECT_TRUE(course.summarised);
-  ASSERT_TRUE(course.errors.has_value());
-  EXPECT_DOUBLE_EQ(course.errors->position_max,
-                   compare(scene, run_accuracy(same, scene, coarse).trajectory,
-                           run_accuracy(same, scene, finest).trajectory)
-                       .position_max);
-  // Kept: the report_dt run's states only.
-  EXPECT_TRUE(stand_in.trajectory.states.empty());
-  EXPECT_FALSE(measured.trajectory.states.empty());
 }
 
 // A case written from docs/design.md's format alone (a ball thrown into the corner of two
@@ -384,126 +223,6 @@ TEST(Runner, EachChildMeasuresItsRunAndBringsBackOnlyWhatThePagePlots) {
       EXPECT_TRUE(run.trajectory.states.empty());
     }
   }
-}
-
-/// Every run of `scene` at report_dt, the reference's first, on every backend there is.
-std::vector<RunRecord> every_run(const Scene& scene) {
-  RunOptions options;
-  options.cost = false;
-  options.dts = {scene.report_dt};
-  CaseResults results = run_case(scene, Registry::load(), options);
-  std::vector<RunRecord> out = {results.reference_run};
-  for (RunRecord& r : results.runs) out.push_back(std::move(r));
-  return out;
-}
-
-// Correct runs are never called diverged: the push case with impulses of 20 N s sends the
-// light ball off at 20 m/s (30 m in the 1.5 s after the push), which every backend, the
-// reference first, computes correctly; the bound must count the impulses.
-TEST(Runner, ABigPushIsNotADivergence) {
-  std::string text = test::bytes(test::source_path("cases/push.toml"));
-  for (const auto& [from, to] :
-       {std::pair<std::string, std::string>{"[-2.0, 0.0, 0.0]", "[-20.0, 0.0, 0.0]"},
-        {"[2.0, 0.0, 0.0]", "[20.0, 0.0, 0.0]"}})
-    text.replace(text.find(from), from.size(), to);
-  const Scene scene = parse_case(text, "push.toml");
-  const std::vector<RunRecord> runs = every_run(scene);
-  EXPECT_GE(runs.size(), 5u);
-  for (const RunRecord& r : runs) {
-    EXPECT_EQ(r.status, RunStatus::Ok) << r.backend << ": " << r.reason;
-    // Right, too: the light ball's speed is J / m.
-    if (r.status == RunStatus::Ok) {
-      EXPECT_NEAR(r.trajectory.states.back()[0].velocity.norm(), 20.0, 1e-3) << r.backend;
-    }
-  }
-}
-
-// A couple of impulses off the centre spins a light ball at 1200 rad/s without moving it:
-// 12 kJ of spin from nothing but the case's impulses (the bound was 10 kJ). The energy bound counts
-// the spin the impulses give: no backend is diverged, and the reference and the course spin the
-// ball exactly.
-TEST(Runner, AFastSpinFromAnOffCentreImpulseIsNotADivergence) {
-  const Scene scene = test::scene_from(R"(name = "spun"
-dims = 2
-duration = 1.0
-sample = 0.0166666666666666667
-dt = [0.0166666666666666667]
-report_dt = 0.0166666666666666667
-gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "ball"
-radius = 0.5
-mass = 0.1
-shell = true
-position = [0.0, 2.0, 0.0]
-[[impulse]]
-body = "ball"
-time = 0.5
-impulse = [20.0, 0.0, 0.0]
-point = [0.0, 2.5, 0.0]
-[[impulse]]
-body = "ball"
-time = 0.5
-impulse = [-20.0, 0.0, 0.0]
-point = [0.0, 1.5, 0.0]
-)");
-  const std::vector<RunRecord> runs = every_run(scene);
-  int exact = 0;
-  for (const RunRecord& r : runs) {
-    // An engine may limit a spin per step (its own result), but nothing here blows up.
-    EXPECT_NE(r.status, RunStatus::Diverged) << r.backend << ": " << r.reason;
-    if (r.backend != "reference" && r.backend.rfind("course/", 0) != 0) continue;
-    ++exact;
-    ASSERT_EQ(r.status, RunStatus::Ok) << r.backend << ": " << r.reason;
-    // The couple's moment 2 J r = 20 N m s over the shell's 2/3 m r^2 = 1/60 kg m^2.
-    EXPECT_NEAR(std::abs(r.trajectory.states.back()[0].angular_velocity.z()), 1200.0, 1e-6)
-        << r.backend;
-  }
-  EXPECT_EQ(exact, 5);
-}
-
-// A wall the wind pushes with 1000 N, free in the air: 2000 m in 2 s, from the case's own
-// numbers. Every backend was "diverged" (the bound left out the wind's force); none is now.
-TEST(Runner, AWallBlownAwayByAStrongWindIsNotADivergence) {
-  const Scene scene = test::scene_from(R"(name = "blown"
-dims = 2
-duration = 2.0
-sample = 0.0333333333333333333
-dt = [0.0166666666666666667]
-report_dt = 0.0166666666666666667
-[[body]]
-name = "panel"
-shape = "box"
-half_extents = [0.05, 0.5, 0.5]
-mass = 1.0
-position = [0.0, 0.0, 0.0]
-wind_force = [1000.0, 0.0, 0.0]
-)");
-  EXPECT_GE(divergence_bounds(scene).travel[0], 0.5 * 1000.0 * 4.0);
-  int exact = 0;
-  for (const RunRecord& r : every_run(scene)) {
-    EXPECT_NE(r.status, RunStatus::Diverged) << r.backend << ": " << r.reason;
-    if (r.backend != "reference") continue;
-    ++exact;
-    ASSERT_EQ(r.status, RunStatus::Ok) << r.reason;
-    EXPECT_NEAR(r.trajectory.states.back()[0].position.x(), 0.5 * 1000.0 * 4.0, 1e-6);
-  }
-  EXPECT_EQ(exact, 1);
-}
-
-// The bounds of the push case (2 N s on a 1 kg and a 4 kg ball, no gravity) count what the
-// impulses give, and stay of that order: ten times the reach, not a bound that never fires.
-TEST(Runner, TheDivergenceBoundsCountTheImpulses) {
-  const Scene scene = load_case(test::source_path("cases/push.toml"));
-  const DivergenceBounds bounds = divergence_bounds(scene);
-  // Each ball's reach: at least J / m times the run, ten times over, and of that order.
-  for (double travel : bounds.travel) {
-    EXPECT_GE(travel, 10.0 * 0.5 * scene.duration);
-    EXPECT_LT(travel, 100.0 * (2.0 * scene.duration + 2.0));
-  }
-  // The energy the impulses can give: at least the light ball's 1/2 (2 m/s)^2 x 1 kg.
-  EXPECT_GE(bounds.scale.impulses, 2.0);
-  EXPECT_LT(bounds.scale.total(), 100.0);
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 namespace bb {
 namespace {
 
-TEST(Wire, ARunRecordComesBackWhole) {
+/// A run record with every field the wire carries set: a diverged run with settings, errors
+/// per body, observables, series and events of every kind.
+RunRecord a_record_of_every_field() {
   RunRecord run;
   run.backend = "course/rk4";
   run.dt = 0.01;
@@ -37,7 +39,11 @@ TEST(Wire, ARunRecordComesBackWhole) {
   run.trajectory.events.bodies[0].hinge_crossings = {0.25, 1.5};
   run.trajectory.events.bodies[1].unresolved_contact = UnresolvedContact{0, 0.5, 2.0, 0.03};
   run.trajectory_problem = "No space left on device";
+  return run;
+}
 
+TEST(Wire, ARunRecordComesBackWhole) {
+  const RunRecord run = a_record_of_every_field();
   const RunRecord back = wire::decode_run(wire::encode(run));
   EXPECT_EQ(back.backend, run.backend);
   EXPECT_EQ(back.dt, run.dt);
