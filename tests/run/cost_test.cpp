@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include "course/course_backend.hpp"
 #include "support/test_support.hpp"
 
@@ -68,6 +70,46 @@ TEST(CostRepeats, ALongRunIsTimedOverItsFirstCalls) {
   EXPECT_GT(t.median_seconds, 0.0);
   options.max_seconds_per_repeat = 1e9;
   EXPECT_EQ(timing(options, 1000).calls_timed, 1000);
+}
+
+/// A backend whose every step takes at least `step_seconds` of the clock, counting its starts.
+class SlowBackend : public Backend {
+ public:
+  explicit SlowBackend(double step_seconds) : step_seconds_(step_seconds) {}
+  std::string name() const override { return "test/slow"; }
+  FeatureSet supports() const override { return {Feature::ThreeD, Feature::Gravity}; }
+  std::unique_ptr<Simulation> start_run(const World&, const BackendSettings&,
+                                        double) const override {
+    ++starts;
+    return std::make_unique<Run>(step_seconds_);
+  }
+  mutable int starts = 0;
+
+ private:
+  struct Run : Simulation {
+    explicit Run(double step_seconds) : step_seconds(step_seconds) {}
+    void step() override {
+      const auto until =
+          std::chrono::steady_clock::now() + std::chrono::duration<double>(step_seconds);
+      while (std::chrono::steady_clock::now() < until) {
+      }
+    }
+    void read(State&) const override {}
+    double step_seconds;
+  };
+  double step_seconds_;
+};
+
+// A slow step stops a repeat within a few calls of max_seconds_per_repeat: five steps of at
+// least a millisecond reach 5 ms, and no block of calls runs past them.
+TEST(CostRepeats, ASlowStepStopsARepeatWithinAFewCalls) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const SlowBackend backend(0.001);
+  CostOptions options = repeat_rule(1, 0.0);
+  options.max_seconds_per_repeat = 0.005;
+  const Timing t = time_steps(backend, scene, scene.report_dt, 1000, options);
+  EXPECT_EQ(t.repeats, 1);
+  EXPECT_LE(t.calls_timed, 5);
 }
 
 TEST(CostRepeats, TheFastestAndSlowestRepeatStandBesideTheMedian) {
