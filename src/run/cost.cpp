@@ -36,6 +36,7 @@ Timing time_steps(const Backend& backend, const Scene& scene, double dt, long st
   std::vector<double> per_call;
   double total = 0.0;
   long most_calls = 0;
+  int builds = 0;
   const auto started = Clock::now();
   const auto more = [&] {
     const int n = static_cast<int>(per_call.size());
@@ -50,6 +51,7 @@ Timing time_steps(const Backend& backend, const Scene& scene, double dt, long st
   while (more()) {
     // Building the scene is outside the timer; only the step loop is inside.
     const auto sim = backend.start(scene, dt);
+    ++builds;
     const auto begin = Clock::now();
     long calls = 0;
     double seconds = 0.0;
@@ -69,8 +71,13 @@ Timing time_steps(const Backend& backend, const Scene& scene, double dt, long st
   std::nth_element(per_call.begin(), per_call.begin() + per_call.size() / 2, per_call.end());
   const auto [fastest, slowest] = std::minmax_element(per_call.begin(), per_call.end());
   const double calls = static_cast<double>(steps);
-  return {per_call[per_call.size() / 2] * calls, static_cast<int>(per_call.size()), most_calls,
-          *fastest * calls, *slowest * calls};
+  return {per_call[per_call.size() / 2] * calls,
+          static_cast<int>(per_call.size()),
+          most_calls,
+          *fastest * calls,
+          *slowest * calls,
+          total,
+          builds};
 }
 
 bool timed_on_a_busy_machine(const Cost& cost) {
