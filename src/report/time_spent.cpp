@@ -51,6 +51,39 @@ std::string accuracy_runs_text(long runs, long reused, double seconds, double st
       kept, steps, steps / jobs, jobs);
 }
 
+/// Seconds of a core the steps alone took in one part of the work, and the part's name.
+struct StepPart {
+  const char* name;
+  double seconds;
+};
+
+/// Seconds of the sweep runs' blocks of steps that this invocation ran.
+double sweep_step_seconds(const CaseResults& r) {
+  double out = 0.0;
+  if (r.sweep)
+    for (const SweepPoint& point : r.sweep->points)
+      for (const RunRecord& run : point.runs) out += run.step_seconds;
+  return out;
+}
+
+/// The whole report against its floor: the parts' wall time (`wall`, pages aside) over the
+/// seconds its steps took of a core divided by the jobs.
+std::string floor_text(const std::vector<StepPart>& parts, double wall, int jobs) {
+  double steps = 0.0;
+  std::string each;
+  for (const StepPart& p : parts) {
+    steps += p.seconds;
+    each += fmt::format("{}{} {:.1f} s", each.empty() ? "" : ", ", p.name, p.seconds);
+  }
+  if (steps <= 0.0) return "";
+  const double floor = steps / jobs;
+  return fmt::format(
+      "The whole report's floor: its steps alone took {:.1f} s of one core ({}), so {:.1f} s on "
+      "{} {}. Its runs took {:.1f} s (the table's total, pages aside): **{:.2f} times its "
+      "floor**.\n\n",
+      steps, each, floor, jobs, jobs == 1 ? "job" : "jobs", wall, wall / floor);
+}
+
 }  // namespace
 
 std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
@@ -68,7 +101,11 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
     for (const RunRecord& run : r.runs) count(run);
   }
   std::vector<const CaseResults*> cases;
+  double cost_steps = 0.0, stability_steps = 0.0, sweep_steps = 0.0;
   for (const CaseResults& r : all) {
+    cost_steps += r.time_spent.cost_steps;
+    for (const StabilityResult& s : r.stability) stability_steps += s.step_seconds;
+    sweep_steps += sweep_step_seconds(r);
     sum.accuracy += r.time_spent.accuracy;
     sum.cost += r.time_spent.cost;
     sum.stability += r.time_spent.stability;
@@ -89,7 +126,13 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
          "parallel, measured), the serial cost pass, the stability search and the sweeps; "
          "writing the pages is not counted. Measured like cost, so they change from one run "
          "to the next.\n\n" +
-         accuracy_runs_text(runs, reused, sum.accuracy, steps, jobs) + render_markdown(t);
+         accuracy_runs_text(runs, reused, sum.accuracy, steps, jobs) +
+         floor_text({{"accuracy runs, from their costs", steps},
+                     {"the cost pass's timed steps", cost_steps},
+                     {"the stability trials' step loops", stability_steps},
+                     {"the sweep runs' steps", sweep_steps}},
+                    sum.total(), jobs) +
+         render_markdown(t);
 }
 
 }  // namespace bb

@@ -30,6 +30,10 @@ struct Timing {
   long calls_timed = 0;  ///< most calls timed in one repeat (`steps` unless cut short)
   double min_seconds = 0.0;
   double max_seconds = 0.0;
+  /// Seconds of calls timed over every repeat: the steps this measurement ran.
+  double timed_seconds = 0.0;
+  /// Scenes built: one per repeat, or one in all where the simulation rewinds.
+  int builds = 0;
 };
 Timing time_steps(const Backend& backend, const Scene& scene, double dt, long steps,
                   const CostOptions& options);

@@ -67,9 +67,10 @@ std::string utc_now() {
 /// (a fork per backend rather than per run), filling each run's cost when it is done. A
 /// measurement that crashes or times out leaves the batch's runs without a cost. A batch
 /// kept from an earlier invocation is not timed again: its costs say when they were.
+/// `timed_steps` gains the seconds of steps the measurement timed.
 void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
                  std::vector<RunRecord*> runs, const RunOptions& options,
-                 const std::function<void(const std::string&)>& progress) {
+                 const std::function<void(const std::string&)>& progress, double& timed_steps) {
   std::erase_if(runs, [](const RunRecord* r) {
     return !ran_to_end(r->status) && r->status != RunStatus::Diverged;
   });
@@ -105,13 +106,15 @@ void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
         return wire::encode(timings);
       },
       limit,
-      [runs, measures, progress, key, &options](const ChildOutcome& outcome) {
+      [runs, measures, progress, key, &options, &timed_steps](const ChildOutcome& outcome) {
         for (RunRecord* run : runs) progress("cost of " + run->backend);
         if (outcome.kind != ChildOutcome::Kind::Done) {
           if (!key.empty()) options.cache->keep(key, kNotTimed, false);
           return;
         }
-        apply_timings(runs, measures, wire::decode_timings(outcome.payload), "");
+        const std::vector<Timing> timings = wire::decode_timings(outcome.payload);
+        for (const Timing& t : timings) timed_steps += t.timed_seconds;
+        apply_timings(runs, measures, timings, "");
         if (!key.empty()) options.cache->keep(key, utc_now() + "\n" + outcome.payload, true);
       });
 }
@@ -125,14 +128,15 @@ void time_costs(const Scene& scene, const ReferenceBackend& reference,
                 const std::function<void(const std::string&)>& progress, CaseResults& out) {
   if (options.cost) {
     ChildPool serial(1, options.isolation);
-    queue_costs(serial, reference, scene, {&out.reference_run}, options, progress);
+    double& timed = out.time_spent.cost_steps;
+    queue_costs(serial, reference, scene, {&out.reference_run}, options, progress, timed);
     // One child per backend measures all its runs, in the order of the sweep.
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       if (i > 0 && jobs[i].backend == jobs[i - 1].backend) continue;
       std::vector<RunRecord*> runs;
       for (std::size_t k = i; k < jobs.size() && jobs[k].backend == jobs[i].backend; ++k)
         runs.push_back(&out.runs[k]);
-      queue_costs(serial, *jobs[i].backend, scene, runs, options, progress);
+      queue_costs(serial, *jobs[i].backend, scene, runs, options, progress, timed);
     }
     serial.run();
   }

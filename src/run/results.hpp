@@ -53,6 +53,9 @@ struct StabilityTrial {
   /// "capped" (held at the engine's cap), or "failed" (the run did not finish: an
   /// exception, a crash, a timeout)
   std::string growth;
+  /// Seconds of the trial's step loop (its steps and the watch on each), measured like cost:
+  /// the stability search's share of a report's floor; never written to the results.
+  double step_seconds = 0.0;
 };
 
 struct RunRecord {
@@ -84,6 +87,10 @@ struct RunRecord {
   /// Taken from kept results, not run by this invocation (where the time went counts only
   /// runs that ran); never written to the results or the wire.
   bool reused = false;
+  /// Seconds of the run's blocks of steps between samples (with the observation of each
+  /// step where an observable needs it), measured like cost: a sweep run's share of a
+  /// report's floor; never written to the results.
+  double step_seconds = 0.0;
   /// Why its trajectory file (run --trajectories) could not be written, from its child;
   /// "" when it was, or none was asked. Never written to the results.
   std::string trajectory_problem;
@@ -152,6 +159,9 @@ struct StabilityResult {
   std::string theory_formula;
   std::string theory_note;  ///< how to read the measured limit beside the theory
   int trials = 0;
+  /// Seconds of the step loops of the trials this invocation ran (not those taken from kept
+  /// results or from the accuracy runs); never written to the results.
+  double step_seconds = 0.0;
 };
 
 /// A run's value for an error metric, or the size of an observable's difference from the
@@ -180,6 +190,9 @@ struct TimeSpent {
   double cost = 0.0;       ///< the serial cost pass
   double stability = 0.0;  ///< the stability search
   double sweep = 0.0;      ///< the case's [[sweep]]
+  /// Seconds of the cost pass's timed steps, every repeat of every run it timed: its share
+  /// of the report's floor (time_spent.hpp).
+  double cost_steps = 0.0;
   double total() const { return accuracy + cost + stability + sweep; }
 };
 

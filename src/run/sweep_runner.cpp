@@ -80,6 +80,8 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
                       : "";
     if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
       out.points[i].runs = wire::decode_runs(*kept);
+      // Kept, not run: its steps took none of this report's time.
+      for (RunRecord& run : out.points[i].runs) run.step_seconds = 0.0;
       progress("sweep " + label);
       continue;
     }

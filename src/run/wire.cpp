@@ -198,6 +198,7 @@ std::string encode(const RunRecord& run) {
   w.raw<char>(run.stability_trial.has_value());
   if (const auto& t = run.stability_trial) w.text(encode(*t));
   w.text(run.trajectory_problem);
+  w.raw(run.step_seconds);
   return w.take();
 }
 
@@ -260,6 +261,7 @@ RunRecord decode_run(const std::string& bytes) {
   run.messages = r.text();
   if (r.raw<char>()) run.stability_trial = decode_trial(r.text());
   run.trajectory_problem = r.text();
+  run.step_seconds = r.raw<double>();
   return run;
 }
 
@@ -301,7 +303,7 @@ std::string encode(const std::vector<Timing>& timings) {
   w.raw<std::uint64_t>(timings.size());
   for (const Timing& t : timings)
     w.raw(t.median_seconds), w.raw(t.repeats), w.raw(t.calls_timed), w.raw(t.min_seconds),
-        w.raw(t.max_seconds);
+        w.raw(t.max_seconds), w.raw(t.timed_seconds), w.raw(t.builds);
   return w.take();
 }
 
@@ -314,6 +316,8 @@ std::vector<Timing> decode_timings(const std::string& bytes) {
     t.calls_timed = r.raw<long>();
     t.min_seconds = r.raw<double>();
     t.max_seconds = r.raw<double>();
+    t.timed_seconds = r.raw<double>();
+    t.builds = r.raw<int>();
   }
   return out;
 }
@@ -323,6 +327,7 @@ std::string encode(const StabilityTrial& trial) {
   w.raw<char>(trial.stable);
   w.text(trial.reason);
   w.text(trial.growth);
+  w.raw(trial.step_seconds);
   return w.take();
 }
 
@@ -332,6 +337,7 @@ StabilityTrial decode_trial(const std::string& bytes) {
   t.stable = r.raw<char>() != 0;
   t.reason = r.text();
   t.growth = r.text();
+  t.step_seconds = r.raw<double>();
   return t;
 }
 

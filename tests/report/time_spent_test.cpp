@@ -3,6 +3,7 @@
 // and a report with nothing timed has no section.
 #include "report/time_spent.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -93,6 +94,48 @@ TEST(TimeSpent, RunsTakenFromKeptResultsAreNotCountedAsRuns) {
   const std::string none = time_spent_section(all, 2);
   EXPECT_NE(none.find("none ran"), std::string::npos) << none;
   EXPECT_EQ(none.find("per run"), std::string::npos) << none;
+}
+
+// The whole report against its floor: the parts' wall time over the steps' seconds of a core
+// (the accuracy runs' from their costs, the cost pass's timed steps, the stability trials'
+// and the sweep runs' step loops) divided by the jobs, all from the run's own figures.
+TEST(TimeSpent, PrintsTheWholeReportsRatioToItsFloor) {
+  Scene scene;
+  scene.name = "floored";
+  std::vector<CaseResults> all(1);
+  CaseResults& r = all[0];
+  r.scene = &scene;
+  r.time_spent = {6.0, 1.5, 2.0, 0.5};  // 10 s of wall
+  r.time_spent.cost_steps = 1.0;
+  r.reference_run.steps = 1000;
+  r.reference_run.cost = Cost{1e6, 0.0, 3, 1e6, 1e6, ""};  // 1 s of steps
+  r.runs.resize(1);
+  r.runs[0].steps = 2000;
+  r.runs[0].cost = Cost{1.5e6, 0.0, 3, 1e6, 2e6, ""};  // 3 s
+  r.stability.resize(2);
+  r.stability[0].step_seconds = 0.75;
+  r.stability[1].step_seconds = 0.25;
+  r.sweep = SweepResults{"drop height", {}};
+  r.sweep->points.resize(2);
+  r.sweep->points[0].runs.resize(1);
+  r.sweep->points[0].runs[0].step_seconds = 0.5;
+  r.sweep->points[1].runs.resize(1);
+  r.sweep->points[1].runs[0].step_seconds = 0.5;
+  // Steps: 4 + 1 + 1 + 1 = 7 s of a core, 3.5 s on 2 jobs; 10 s of wall: 2.86 times.
+  const std::string page = time_spent_section(all, 2);
+  EXPECT_NE(page.find("its steps alone took 7.0 s of one core (accuracy runs, from their costs "
+                      "4.0 s, the cost pass's timed steps 1.0 s, the stability trials' step "
+                      "loops 1.0 s, the sweep runs' steps 1.0 s), so 3.5 s on 2 jobs"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("Its runs took 10.0 s"), std::string::npos) << page;
+  EXPECT_NE(page.find(fmt::format("**{:.2f} times its floor**", 10.0 / 3.5)), std::string::npos)
+      << page;
+  // Nothing stepped: no ratio to print.
+  all[0] = CaseResults{};
+  all[0].scene = &scene;
+  all[0].time_spent = {6.0, 1.5, 2.0, 0.5};
+  EXPECT_EQ(time_spent_section(all, 2).find("times its floor"), std::string::npos);
 }
 
 TEST(TimeSpent, NothingTimedIsNoSection) {

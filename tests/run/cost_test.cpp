@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "course/course_backend.hpp"
+#include "support/slow_backend.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -68,6 +69,32 @@ TEST(CostRepeats, ALongRunIsTimedOverItsFirstCalls) {
   EXPECT_GT(t.median_seconds, 0.0);
   options.max_seconds_per_repeat = 1e9;
   EXPECT_EQ(timing(options, 1000).calls_timed, 1000);
+}
+
+// A slow step stops a repeat within a few calls of max_seconds_per_repeat: five steps of at
+// least a millisecond reach 5 ms, and no block of calls runs past them.
+TEST(CostRepeats, ASlowStepStopsARepeatWithinAFewCalls) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const test::SlowBackend backend(0.001);
+  CostOptions options = repeat_rule(1, 0.0);
+  options.max_seconds_per_repeat = 0.005;
+  const Timing t = time_steps(backend, scene, scene.report_dt, 1000, options);
+  EXPECT_EQ(t.repeats, 1);
+  EXPECT_LE(t.calls_timed, 5);
+}
+
+// The seconds timed are every repeat's: at least the fastest repeat's each time (every call
+// timed), and a backend that cannot rewind is built once per repeat.
+TEST(CostRepeats, TheTimedSecondsAreEveryRepeatsAndEachRepeatBuildsTheScene) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  const test::SlowBackend backend(1e-5);
+  const Timing t = time_steps(backend, scene, scene.report_dt, 20, repeat_rule(4, 1e9));
+  EXPECT_EQ(t.repeats, 4);
+  EXPECT_EQ(t.calls_timed, 20);
+  EXPECT_GE(t.timed_seconds, 4 * t.min_seconds);
+  EXPECT_GE(t.timed_seconds, 4 * 20 * 1e-5);
+  EXPECT_EQ(t.builds, 4);
+  EXPECT_EQ(backend.starts, 4);
 }
 
 TEST(CostRepeats, TheFastestAndSlowestRepeatStandBesideTheMedian) {

@@ -14,6 +14,7 @@
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
 #include "scene/case_error.hpp"
+#include "support/slow_backend.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -68,6 +69,16 @@ TEST(Runner, SamplesOnTheGridWithTimeAsStepsTimesDt) {
   EXPECT_EQ(run.steps, static_cast<long>(scene.sample_count()) * scene.steps_per_sample(dt));
   for (std::size_t j = 0; j < run.trajectory.times.size(); ++j)
     EXPECT_EQ(run.trajectory.times[j], static_cast<double>(j * scene.steps_per_sample(dt)) * dt);
+}
+
+// A run times its blocks of steps between samples, for the report's floor: at least what its
+// steps take.
+TEST(Runner, TimesItsStepsBetweenSamples) {
+  const Scene scene = test::scene_from(test::kMinimalCase);
+  const RunRecord run = run_accuracy(test::SlowBackend(1e-4), scene, scene.report_dt);
+  ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
+  EXPECT_GT(run.steps, 0);
+  EXPECT_GE(run.step_seconds, static_cast<double>(run.steps) * 1e-4);
 }
 
 TEST(Runner, DivergenceIsAResultWithItsTime) {

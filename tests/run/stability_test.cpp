@@ -13,6 +13,7 @@
 #include "run/stability_watch.hpp"
 #include "scene/case_error.hpp"
 #include "support/course_support.hpp"
+#include "support/slow_backend.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -70,6 +71,14 @@ Scene searched_scene() {
   std::string text = test::kMinimalCase;
   text += "\n[stability]\ndt_min = 1e-4\ndt_max = 0.5\n";
   return test::scene_from(text);
+}
+
+// A trial times its step loop, for the report's floor: at least what its steps take.
+TEST(StabilityTrialTime, ATrialTimesItsStepLoop) {
+  const Scene scene = test::scene_from(test::kMinimalCase);
+  const StabilityTrial trial = try_step(test::SlowBackend(1e-4), scene, 0.05, 20);
+  EXPECT_TRUE(trial.stable) << trial.reason;
+  EXPECT_GE(trial.step_seconds, 20 * 1e-4);
 }
 
 TEST(Stability, BracketsAKnownCriticalStepWithinOnePercent) {

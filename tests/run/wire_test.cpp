@@ -39,12 +39,14 @@ RunRecord a_record_of_every_field() {
   run.trajectory.events.bodies[0].hinge_crossings = {0.25, 1.5};
   run.trajectory.events.bodies[1].unresolved_contact = UnresolvedContact{0, 0.5, 2.0, 0.03};
   run.trajectory_problem = "No space left on device";
+  run.step_seconds = 0.125;
   return run;
 }
 
 TEST(Wire, ARunRecordComesBackWhole) {
   const RunRecord run = a_record_of_every_field();
   const RunRecord back = wire::decode_run(wire::encode(run));
+  EXPECT_EQ(back.step_seconds, 0.125);
   EXPECT_EQ(back.backend, run.backend);
   EXPECT_EQ(back.dt, run.dt);
   EXPECT_EQ(back.status, run.status);
@@ -117,7 +119,8 @@ TEST(Wire, StatesOfAFewBodiesComeBack) {
 }
 
 TEST(Wire, ABackendsTimingsComeBackInOrder) {
-  const std::vector<Timing> timings = {{0.5, 3, 100, 0.4, 0.9}, {1e-6, 30, 7, 8e-7, 3e-6}};
+  const std::vector<Timing> timings = {{0.5, 3, 100, 0.4, 0.9, 1.25, 3},
+                                       {1e-6, 30, 7, 8e-7, 3e-6, 2e-5, 1}};
   const std::vector<Timing> back = wire::decode_timings(wire::encode(timings));
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[1].median_seconds, 1e-6);
@@ -125,15 +128,19 @@ TEST(Wire, ABackendsTimingsComeBackInOrder) {
   EXPECT_EQ(back[1].calls_timed, 7);
   EXPECT_EQ(back[1].min_seconds, 8e-7);
   EXPECT_EQ(back[1].max_seconds, 3e-6);
+  EXPECT_EQ(back[1].timed_seconds, 2e-5);
+  EXPECT_EQ(back[1].builds, 1);
+  EXPECT_EQ(back[0].builds, 3);
   EXPECT_EQ(back[0].median_seconds, 0.5);
 }
 
 TEST(Wire, AStabilityTrialComesBackWhole) {
   const StabilityTrial back =
-      wire::decode_trial(wire::encode(StabilityTrial{true, "energy drifts", "drift"}));
+      wire::decode_trial(wire::encode(StabilityTrial{true, "energy drifts", "drift", 0.5}));
   EXPECT_TRUE(back.stable);
   EXPECT_EQ(back.reason, "energy drifts");
   EXPECT_EQ(back.growth, "drift");
+  EXPECT_EQ(back.step_seconds, 0.5);
 }
 
 }  // namespace
