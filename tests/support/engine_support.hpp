@@ -13,6 +13,7 @@
 #include "run/engine_catalogue.hpp"
 #include "run/registry.hpp"
 #include "scene/engine_catalogue.hpp"
+#include "support/missing.hpp"
 
 namespace bb::test {
 
@@ -27,6 +28,23 @@ inline const Backend* engine(const std::string& name) {
   for (const Backend* b : registry().engines())
     if (b->name() == name) return b;
   return nullptr;
+}
+
+/// "" when every backend of `names` was built here; else which were not and why, as the
+/// registry says (for BB_SKIP_IF_MISSING).
+inline std::string not_built(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string& name = names[i];
+    const bool named_before =
+        std::find(names.begin(), names.begin() + i, name) != names.begin() + i;
+    if (engine(name) != nullptr || named_before) continue;
+    std::string why = "no plugin in " + plugin_folder();
+    for (const Registry::Missing& missing : registry().missing_engines())
+      if (missing.name == name) why = missing.why;
+    out += (out.empty() ? "" : "; ") + name + " was not built (" + why + ")";
+  }
+  return out;
 }
 
 /// The description of the engine that provides backend `name` (nullptr for none).
@@ -64,6 +82,12 @@ inline std::vector<std::string> rigid_engines_with(Feature feature) {
 inline bool described_with(const std::string& name, Feature feature) {
   const EngineDescription* d = description_of(name);
   return d != nullptr && d->supports.count(name) && d->supports.at(name).has(feature);
+}
+
+/// Whether `name` is an engine backend the catalogue describes whose plugin is not here: a
+/// row of it says "not built" rather than running.
+inline bool described_but_not_built(const std::string& name) {
+  return description_of(name) != nullptr && engine(name) == nullptr;
 }
 
 /// The engines built a second way with their springs added by hand (`<engine>/force`).
