@@ -16,9 +16,9 @@ namespace bb {
 inline BackendDeclaration described_backend(const EngineDescription& engine,
                                             const std::string& name,
                                             std::pair<std::string, std::string> library_version) {
-  const auto needs = engine.needs.find(name);
-  return {name, description_supports(engine, name),
-          needs == engine.needs.end() ? FeatureSet{} : needs->second, std::move(library_version)};
+  const EngineVariant* variant = find_variant(engine, name);
+  return {name, variant ? variant->supports : FeatureSet{}, variant ? variant->needs : FeatureSet{},
+          std::move(library_version)};
 }
 
 /// Starts a `Sim(world, the case's engine tables, dt)`, as every engine's simulation is made.

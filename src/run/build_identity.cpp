@@ -96,7 +96,7 @@ std::string build_digest() {
     all += p.filename().string() + " " + file_digest(p.string()) + "\n";
   // The plugins from outside the tree, by their backends' names: a merge needs the same ones.
   for (const OutsidePlugin& p : outside_plugins())
-    all += p.description.backends.front() + " " + file_digest(p.real) + "\n";
+    all += p.description.variants.front().name + " " + file_digest(p.real) + "\n";
   return digest(all);
 }
 

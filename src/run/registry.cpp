@@ -34,20 +34,20 @@ Registry Registry::load() {
   Registry r;
   const std::filesystem::path folder = plugin_folder();
   for (const EngineDescription& engine : built_in_engine_catalogue())
-    for (const std::string& name : engine.backends) r.load_plugin(folder, name, engine);
+    for (const EngineVariant& variant : engine.variants) r.load_plugin(folder, variant, engine);
   // The plugins from outside the tree, checked when they were opened (outside_plugins.hpp).
   for (const OutsidePlugin& plugin : outside_plugins()) r.engines_.emplace_back(plugin.create());
   return r;
 }
 
-void Registry::load_plugin(const std::filesystem::path& folder, const std::string& name,
+void Registry::load_plugin(const std::filesystem::path& folder, const EngineVariant& variant,
                            const EngineDescription& engine) {
+  const std::string& name = variant.name;
   if (!engine.has_adapter) {
     missing_.push_back({name, "no adapter in this version of beachball", false});
     return;
   }
-  const auto requirement = engine.needs.find(name);
-  const FeatureSet needs = requirement == engine.needs.end() ? FeatureSet{} : requirement->second;
+  const FeatureSet& needs = variant.needs;
   const std::filesystem::path path = folder / plugin_file_name(name);
   if (!std::filesystem::exists(path)) {
     missing_.push_back(

@@ -42,8 +42,8 @@ class Registry {
 
  private:
   Registry() = default;
-  /// Loads backend `name` of `engine` from `folder`, or records why it is missing.
-  void load_plugin(const std::filesystem::path& folder, const std::string& name,
+  /// Loads backend `variant` of `engine` from `folder`, or records why it is missing.
+  void load_plugin(const std::filesystem::path& folder, const EngineVariant& variant,
                    const EngineDescription& engine);
   std::vector<std::unique_ptr<Backend>> engines_;
   std::vector<Missing> missing_;

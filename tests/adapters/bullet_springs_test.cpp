@@ -316,7 +316,8 @@ TEST(BulletSprings, SpringVariantsJoinOnlySpringScenes) {
   for (const EngineDescription& e : engine_catalogue()) {
     if (e.engine != "bullet") continue;
     for (const char* name : {"bullet/force", "bullet-softbody"}) {
-      EXPECT_TRUE(e.needs.count(name) && e.needs.at(name).has(Feature::Springs)) << name;
+      ASSERT_NE(find_variant(e, name), nullptr) << name;
+      EXPECT_TRUE(find_variant(e, name)->needs.has(Feature::Springs)) << name;
     }
   }
 }

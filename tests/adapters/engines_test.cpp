@@ -66,8 +66,7 @@ std::vector<EngineCase> engine_cases() {
     for (const char* c : {"drag_fall", "beachball_shells", "three_beachballs_2", "magnus_throw"})
       // The 3D case only on an engine that declares 3D (Box2D is 2D only;
       // Engines.Box2dSaysItCannotRunA3dCase covers it there).
-      if (test::description_of(e)->supports.at(e).has(Feature::ThreeD) ||
-          std::string(c) != "beachball_shells")
+      if (test::described_with(e, Feature::ThreeD) || std::string(c) != "beachball_shells")
         out.push_back({e, c});
   return out;
 }
@@ -83,7 +82,8 @@ TEST(Engines, TheStandardEnginesAreBuilt) {
   ASSERT_FALSE(test::rigid_engines().empty());
   std::vector<std::string> described;
   for (const EngineDescription& e : built_in_engine_catalogue())
-    if (e.has_adapter) described.insert(described.end(), e.backends.begin(), e.backends.end());
+    if (e.has_adapter)
+      for (const std::string& name : variant_names(e)) described.push_back(name);
   BB_SKIP_IF_MISSING(test::not_built(described));
 }
 
