@@ -58,18 +58,23 @@ void load_one(const std::string& path) {
   auto opened = open_plugin(real);
   if (const auto* why = std::get_if<std::string>(&opened)) throw CaseError(path, 0, *why);
   const OpenedPlugin plugin = std::get<OpenedPlugin>(opened);
-  const std::unique_ptr<Backend> backend(plugin.create());
-  if (!backend) throw CaseError(path, 0, "its " BEACHBALL_PLUGIN_ENTRY " returned no backend");
-  const std::string name = backend->name();
-  if (const std::string problem = name_problem(name); !problem.empty())
-    throw CaseError(path, 0, problem);
-  const EngineDescription description{.engine = name,
-                                      // No colour of its own: the report picks one by its name.
-                                      .variants = {{.name = name,
-                                                    .colour = "",
-                                                    .supports = backend->supports(),
-                                                    .needs = backend->needs()}}};
-  loaded().push_back({path, real, plugin.create, description, backend->library_version()});
+  const std::vector<std::unique_ptr<Backend>> backends = plugin_backends(plugin);
+  if (backends.empty())
+    throw CaseError(path, 0, "its " BEACHBALL_PLUGIN_ENTRY " returned no backend");
+  for (std::size_t index = 0; index < backends.size(); ++index) {
+    const Backend& backend = *backends[index];
+    const std::string name = backend.name();
+    if (const std::string problem = name_problem(name); !problem.empty())
+      throw CaseError(path, 0, problem);
+    const EngineDescription description{.engine = name,
+                                        // No colour of its own: the report picks one by its name.
+                                        .variants = {{.name = name,
+                                                      .colour = "",
+                                                      .supports = backend.supports(),
+                                                      .needs = backend.needs()}}};
+    loaded().push_back({path, real, plugin.create, static_cast<int>(index), description,
+                        backend.library_version()});
+  }
 }
 
 /// Every beachball-*.so in the folders of $BEACHBALL_PLUGIN_PATH, each folder in name order.

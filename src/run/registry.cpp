@@ -36,7 +36,8 @@ Registry Registry::load() {
   for (const EngineDescription& engine : built_in_engine_catalogue())
     for (const EngineVariant& variant : engine.variants) r.load_plugin(folder, variant, engine);
   // The plugins from outside the tree, checked when they were opened (outside_plugins.hpp).
-  for (const OutsidePlugin& plugin : outside_plugins()) r.engines_.emplace_back(plugin.create());
+  for (const OutsidePlugin& plugin : outside_plugins())
+    r.engines_.emplace_back(plugin.create(plugin.index));
   return r;
 }
 
@@ -59,7 +60,7 @@ void Registry::load_plugin(const std::filesystem::path& folder, const EngineVari
     missing_.push_back({name, "plugin " + *why, true, needs});
     return;
   }
-  engines_.emplace_back(std::get<OpenedPlugin>(opened).create());
+  engines_.emplace_back(std::get<OpenedPlugin>(opened).create(0));
 }
 
 FeatureSet Registry::course_features() const {
