@@ -22,10 +22,13 @@ inline EngineDescription bullet_engine() {
   return {
       .engine = e,
       .variants = {{.name = "bullet", .colour = "#9367bd", .supports = bullet_rigid_supports()},
+                   // Bullet's single-precision libraries, whose symbols are the double ones'
+                   // names: a plugin of its own, loaded apart (RTLD_LOCAL).
                    {.name = "bullet-float",
                     .colour = "#e476c2",
                     .supports = bullet_rigid_supports(),
-                    .single_precision = true},
+                    .single_precision = true,
+                    .plugin = "bullet-float"},
                    {.name = "bullet/force",
                     .colour = "#8a564b",
                     .supports = bullet_rigid_supports(),

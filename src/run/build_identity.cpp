@@ -80,7 +80,7 @@ const std::string& shared_code_digest() {
 
 std::string plugin_digest(const std::string& backend) {
   if (const OutsidePlugin* outside = outside_plugin(backend)) return file_digest(outside->real);
-  return file_digest((fs::path(plugin_folder()) / plugin_file_name(backend)).string());
+  return file_digest((fs::path(plugin_folder()) / backend_plugin_file(backend)).string());
 }
 
 std::string build_digest() {

@@ -16,6 +16,10 @@ const EngineVariant* find_variant(const EngineDescription& engine, const std::st
   return found == engine.variants.end() ? nullptr : &*found;
 }
 
+std::string variant_plugin(const EngineDescription& engine, const EngineVariant& variant) {
+  return variant.plugin.empty() ? engine.engine : variant.plugin;
+}
+
 FeatureSet description_supports(const EngineDescription& engine, const std::string& name) {
   const EngineVariant* variant = find_variant(engine, name);
   return variant == nullptr ? FeatureSet{} : variant->supports;

@@ -40,6 +40,10 @@ struct EngineVariant {
   /// Euler: what the adapter applies before a step (the force stage, a torque that cancels a
   /// term) is held over the stages while the engine's own forces are not; "" for none.
   std::string staged_step = "";
+  /// The plugin file that gives it, beachball-<plugin>.so; "" for the engine's own
+  /// (beachball-<engine>.so). A build against another library whose symbols clash with the
+  /// engine's (bullet-float) is a plugin of its own.
+  std::string plugin = "";
 };
 
 struct EngineDescription {
@@ -64,6 +68,9 @@ std::vector<std::string> variant_names(const EngineDescription& engine);
 
 /// Backend `name` of `engine`, or nullptr for a name it does not provide.
 const EngineVariant* find_variant(const EngineDescription& engine, const std::string& name);
+
+/// The plugin that gives `variant` of `engine`: its own name, or the engine's.
+std::string variant_plugin(const EngineDescription& engine, const EngineVariant& variant);
 
 /// Every engine the adapters describe, in the adapters' CMake order.
 using EngineCatalogue = std::vector<EngineDescription>;
