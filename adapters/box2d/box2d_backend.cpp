@@ -1,6 +1,6 @@
-// Box2D 2.4 as a backend: 2D scenes only, single precision. Built twice: `box2d`, whose
-// springs are distance joints with stiffness and damping, and `box2d/force`
-// (BB_SPRINGS_BY_HAND), whose springs are forces added before each step.
+// Box2D 2.4 as a plugin of two backends: 2D scenes only, single precision. `box2d`, whose
+// springs are distance joints with stiffness and damping, and `box2d/force`, whose springs
+// are forces added before each step.
 #include <box2d/box2d.h>
 
 #include <cfloat>
@@ -24,12 +24,6 @@ namespace bb {
 
 namespace {
 
-#ifdef BB_SPRINGS_BY_HAND
-constexpr bool kSpringsByHand = true;
-#else
-constexpr bool kSpringsByHand = false;
-#endif
-
 /// Box2D 2.4.1's caps on a step's motion (b2_common.h), applied in b2Island::Solve.
 constexpr StepCap kMaxTranslation{
     "Box2D",
@@ -52,10 +46,11 @@ constexpr StepCap kMaxRotation{
 
 class Box2dSimulation : public Simulation {
  public:
-  Box2dSimulation(const World& scene, const EngineTables& engines, double dt)
+  Box2dSimulation(const World& scene, const EngineTables& engines, double dt, SpringsAs springs)
       : scene_(scene),
         engines_(engines),
-        start_(scene, dt, {kSpringsByHand}),
+        springs_(springs),
+        start_(scene, dt, {springs == SpringsAs::Forces}),
         dt_(float(dt)),
         world_(to_b2(scene.gravity)) {
     velocity_iterations_ =
@@ -92,7 +87,7 @@ class Box2dSimulation : public Simulation {
         b2MassData mass{float(b.mass), b2Vec2(0.0f, 0.0f), float(engine_inertia(b).z())};
         bodies_[i]->SetMassData(&mass);
       }
-    if (!kSpringsByHand) make_spring_joints();
+    if (springs_ == SpringsAs::Joints) make_spring_joints();
     make_box2d_hinges(scene, world_, bodies_);
   }
 
@@ -141,12 +136,11 @@ class Box2dSimulation : public Simulation {
       add_contact_settings(scene_, *contacts_, s);
     else
       s.push_back({"collision", std::string("none (no fixtures; mass set with SetMassData)")});
-    if (!scene_.springs.empty()) {
-#ifdef BB_SPRINGS_BY_HAND
+    if (!scene_.springs.empty() && springs_ == SpringsAs::Forces)
       s.push_back({"springs", std::string("force k (l - L) + c (v_b - v_a).u along each spring, "
                                           "added with b2Body::ApplyForceToCenter before each "
                                           "step")});
-#else
+    if (!scene_.springs.empty() && springs_ == SpringsAs::Joints) {
       s.push_back(
           {"springs", std::string("a distance joint (b2DistanceJointDef) per spring between the "
                                   "bodies' centres: length = the rest length, stiffness = k N/m, "
@@ -154,9 +148,8 @@ class Box2dSimulation : public Simulation {
                                   "limit acts; Box2D solves it as a soft constraint (implicit in "
                                   "the spring), in float")});
       s.push_back({"spring_stiffness_first", double(first_stiffness_)});
-#endif
-      s.push_back({"spring_bodies_collide", false});
     }
+    if (!scene_.springs.empty()) s.push_back({"spring_bodies_collide", false});
     if (!scene_.hinges.empty()) add_box2d_hinge_settings(s);
     if (!scene_.impulses.empty())
       s.push_back({"impulse", std::string("b2Body::ApplyLinearImpulse(J, point, true) before "
@@ -206,6 +199,7 @@ class Box2dSimulation : public Simulation {
 
   const World& scene_;
   const EngineTables& engines_;  ///< the case's [engines.box2d] table among the others
+  SpringsAs springs_;            ///< box2d: Box2D's joints; box2d/force: forces
   StepStart start_;              ///< impulses due and the force model's loads
   float dt_;
   int velocity_iterations_ = 8;
@@ -235,6 +229,17 @@ std::pair<std::string, std::string> box2d_version() {
 
 }  // namespace bb
 
-BEACHBALL_PLUGIN(new bb::DeclaredBackend(
-    bb::described_backend(bb::box2d_description(), BB_BACKEND_NAME, bb::box2d_version()),
-    bb::start_engine<bb::Box2dSimulation>))
+namespace {
+
+/// The plugin's backends: the springs as Box2D's joints, or as forces.
+bb::Backend* box2d_backend(int index) {
+  using bb::SpringsAs;
+  static const std::vector<bb::VariantStart> starts = {
+      {"box2d", bb::start_engine<bb::Box2dSimulation>(SpringsAs::Joints)},
+      {"box2d/force", bb::start_engine<bb::Box2dSimulation>(SpringsAs::Forces)}};
+  return bb::engine_backend(bb::box2d_description(), bb::box2d_version(), starts, index);
+}
+
+}  // namespace
+
+BEACHBALL_PLUGIN_BACKENDS(box2d_backend)

@@ -16,24 +16,29 @@ inline FeatureSet box2d_supports() {
 
 inline EngineDescription box2d_engine() {
   const std::string e = "box2d";
-  return {e,
-          {"box2d", "box2d/force"},
-          {{e, "velocity_iterations", KeyKind::Integer, 8, "velocity solver iterations"},
-           {e, "position_iterations", KeyKind::Integer, 3, "position solver iterations"},
-           {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
-           {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"},
-           {e, "restitution_threshold", KeyKind::Number, 1.0,
-            "normal approach speed below which a contact does not bounce, m/s "
-            "(b2FixtureDef::restitutionThreshold; Box2D's default)"},
-           {e, "bullet", KeyKind::Boolean, 0.0,
-            "continuous collision between moving bodies (b2BodyDef::bullet; Box2D's default "
-            "is off)"}},
-          true,
-          {{"box2d/force", {Feature::Springs}}},
-          {{"box2d", box2d_supports()}, {"box2d/force", box2d_supports()}},
-          false,
-          {"box2d", "box2d/force"},
-          {{"hinge", "b2RevoluteJoint"}}};
+  return {
+      .engine = e,
+      // Box2D computes in float.
+      .variants = {{.name = "box2d",
+                    .colour = "#00c0cf",
+                    .supports = box2d_supports(),
+                    .single_precision = true},
+                   {.name = "box2d/force",
+                    .colour = "#006d79",
+                    .supports = box2d_supports(),
+                    .needs = {Feature::Springs},
+                    .single_precision = true}},
+      .keys = {{e, "velocity_iterations", KeyKind::Integer, 8, "velocity solver iterations"},
+               {e, "position_iterations", KeyKind::Integer, 3, "position solver iterations"},
+               {e, "linear_damping", KeyKind::Number, 0.0, "built-in linear damping, 1/s"},
+               {e, "angular_damping", KeyKind::Number, 0.0, "built-in angular damping, 1/s"},
+               {e, "restitution_threshold", KeyKind::Number, 1.0,
+                "normal approach speed below which a contact does not bounce, m/s "
+                "(b2FixtureDef::restitutionThreshold; Box2D's default)"},
+               {e, "bullet", KeyKind::Boolean, 0.0,
+                "continuous collision between moving bodies (b2BodyDef::bullet; Box2D's default "
+                "is off)"}},
+      .names_in_settings = {{"hinge", "b2RevoluteJoint"}}};
 }
 
 /// The description, made once: what the adapter reads its settings' defaults from.

@@ -1,7 +1,7 @@
-// Bullet as a backend. Built three times from this file: against Bullet's double-precision
-// libraries (backend "bullet") and its single-precision ones ("bullet-float"), both with
-// springs as Bullet's own constraints, and with BB_BULLET_SPRINGS_BY_HAND ("bullet/force"),
-// springs applied as forces before each step instead.
+// Bullet's rigid bodies as a backend, built against Bullet's double-precision libraries
+// (backends "bullet", and "bullet/force" whose springs are forces applied before each step
+// instead of Bullet's own constraints: bullet_plugin.cpp) and its single-precision ones
+// ("bullet-float": bullet_float_plugin.cpp).
 #include <btBulletDynamicsCommon.h>
 
 #include <cfloat>
@@ -26,16 +26,9 @@
 #include "scene/engine_keys.hpp"
 #include "scene/plugin_api.hpp"
 
-#ifndef BB_BULLET_SPRINGS_BY_HAND
-#define BB_BULLET_SPRINGS_BY_HAND 0
-#endif
-
 namespace bb {
 
 namespace {
-
-/// Whether this build applies the springs by hand (bullet/force) instead of as joints.
-constexpr bool kSpringsByHand = BB_BULLET_SPRINGS_BY_HAND != 0;
 
 /// How bullet/force applies the springs, for engine_settings.
 constexpr const char* kSpringsByHandMethod =
@@ -73,8 +66,12 @@ double inner_radius(const Body& b) {
 
 class BulletSimulation : public Simulation {
  public:
-  BulletSimulation(const World& scene, const EngineTables& engines, double dt)
-      : scene_(scene), engines_(engines), dt_(dt), contacts_(scene_has_contacts(scene)) {
+  BulletSimulation(const World& scene, const EngineTables& engines, double dt, SpringsAs springs)
+      : scene_(scene),
+        engines_(engines),
+        springs_(springs),
+        dt_(dt),
+        contacts_(scene_has_contacts(scene)) {
     world_.setGravity(to_bt(scene.gravity));
     dispatcher_.setDispatcherFlags(
         btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
@@ -92,7 +89,7 @@ class BulletSimulation : public Simulation {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
       add_body(scene.bodies[i], static_cast<int>(i));
     if (scene.ground) add_ground(*scene.ground);
-    if (!kSpringsByHand && !scene.springs.empty())
+    if (springs_ == SpringsAs::Joints && !scene.springs.empty())
       joints_ = std::make_unique<BulletSpringJoints>(scene, engines, dt, bodies_, world_);
     if (!scene.hinges.empty())
       hinges_ = std::make_unique<BulletHingeJoints>(scene, bodies_, world_);
@@ -157,7 +154,7 @@ class BulletSimulation : public Simulation {
                              "(gDeactivationTime) would freeze, a slow oscillator with it")});
     if (joints_) joints_->add_settings(s);
     if (hinges_) hinges_->add_settings(s);
-    if (kSpringsByHand && !scene_.springs.empty())
+    if (springs_ == SpringsAs::Forces && !scene_.springs.empty())
       s.push_back({"springs", std::string(kSpringsByHandMethod)});
     if (contacts_)
       add_contact_settings(scene_, engines_, world_.getSolverInfo(), shape_figures_, multipoint_,
@@ -261,6 +258,7 @@ class BulletSimulation : public Simulation {
 
   const World& scene_;
   const EngineTables& engines_;  ///< the case's [engines.bullet] table among the others
+  SpringsAs springs_;  ///< bullet, bullet-float: Bullet's constraints; bullet/force: forces
   double dt_;
   bool contacts_;
   PlaneMultipoint multipoint_ = plane_multipoint(scene_);
@@ -277,19 +275,19 @@ class BulletSimulation : public Simulation {
   std::unique_ptr<btCollisionShape> ground_shape_;
   std::unique_ptr<btRigidBody> ground_;
   std::vector<std::unique_ptr<btRigidBody>> bodies_;
-  std::unique_ptr<BulletSpringJoints> joints_;      ///< the springs as constraints, or none
-  std::unique_ptr<BulletHingeJoints> hinges_;       ///< the hinges as constraints, or none
-  StepStart start_{scene_, dt_, {kSpringsByHand}};  ///< impulses due, the force model's loads
-  State state_{scene_.bodies.size()};               ///< read before each step for the forces
-  long steps_ = 0;                                  ///< steps taken
+  std::unique_ptr<BulletSpringJoints> joints_;  ///< the springs as constraints, or none
+  std::unique_ptr<BulletHingeJoints> hinges_;   ///< the hinges as constraints, or none
+  StepStart start_{scene_, dt_, {springs_ == SpringsAs::Forces}};  ///< impulses due, the loads
+  State state_{scene_.bodies.size()};  ///< read before each step for the forces
+  long steps_ = 0;                     ///< steps taken
   /// The first body held at the cap, judged to the rounding of btScalar.
   CapWatch caps_{scene_, dt_, sizeof(btScalar) == 8 ? DBL_EPSILON : double(FLT_EPSILON)};
 };
 
 }  // namespace
 
-}  // namespace bb
+DeclaredBackend::Start bullet_rigid_start(SpringsAs springs) {
+  return start_engine<BulletSimulation>(springs);
+}
 
-BEACHBALL_PLUGIN(new bb::DeclaredBackend(
-    bb::described_backend(bb::bullet_description(), BB_BULLET_NAME, bb::bullet_version()),
-    bb::start_engine<bb::BulletSimulation>))
+}  // namespace bb

@@ -165,9 +165,8 @@ class SoftBodySimulation : public Simulation {
 
 }  // namespace
 
-}  // namespace bb
+DeclaredBackend::Start bullet_softbody_start() {
+  return start_engine<SoftBodySimulation>();
+}
 
-// Points on springs under gravity, pushed by impulses: no contacts, no spin, no air.
-BEACHBALL_PLUGIN(new bb::DeclaredBackend(
-    bb::described_backend(bb::bullet_description(), "bullet-softbody", bb::bullet_version()),
-    bb::start_engine<bb::SoftBodySimulation>))
+}  // namespace bb

@@ -1,5 +1,6 @@
-// MuJoCo as a backend: the World written as MJCF (mujoco_model.hpp), loaded from memory,
-// stepped with mj_step. Forces and torques of the force model go in through xfrc_applied
+// MuJoCo as a plugin of three backends, one per integrator of MuJoCo's own (`mujoco`: Euler,
+// `mujoco/rk4`, `mujoco/implicit`): the World written as MJCF (mujoco_model.hpp), loaded from
+// memory, stepped with mj_step. Forces and torques of the force model go in through xfrc_applied
 // before each step, as a game adds them; an impulse changes qvel at the step's start.
 #include <mujoco/mujoco.h>
 
@@ -55,20 +56,23 @@ constexpr const char* kGyroscopicOff =
     "each step cancels the bias force's gyroscopic part, so a free body keeps its world "
     "angular velocity and never flips";
 
-// How this build steps: BB_MUJOCO_INTEGRATOR is MuJoCo's option integrator.
-constexpr std::string_view kIntegrator = BB_MUJOCO_INTEGRATOR;
-constexpr const char* kIntegratorText =
-    kIntegrator == "RK4"
-        ? "RK4 (option integrator): MuJoCo's classic fourth-order Runge-Kutta, each stage "
-          "computing MuJoCo's own forces (gravity, contacts, joints, the bias force) again; the "
-          "force model's forces go in through xfrc_applied once per step and are held over its "
-          "four stages, as a game sets them"
-    : kIntegrator == "implicit"
-        ? "implicit (option integrator): implicit in velocity, the derivative of MuJoCo's own "
-          "velocity-dependent forces (the bias force's Coriolis and gyroscopic terms, damping) "
-          "taken into the step; the positions then with the new velocities"
-        : "Euler (MuJoCo's default, set explicitly): the new velocities first, then the "
-          "positions with them";
+/// How a run of MuJoCo's option integrator `integrator` steps, for engine_settings.
+const char* integrator_text(std::string_view integrator) {
+  return integrator == "RK4"
+             ? "RK4 (option integrator): MuJoCo's classic fourth-order Runge-Kutta, each stage "
+               "computing MuJoCo's own forces (gravity, contacts, joints, the bias force) again; "
+               "the "
+               "force model's forces go in through xfrc_applied once per step and are held over "
+               "its "
+               "four stages, as a game sets them"
+         : integrator == "implicit"
+             ? "implicit (option integrator): implicit in velocity, the derivative of MuJoCo's own "
+               "velocity-dependent forces (the bias force's Coriolis and gyroscopic terms, "
+               "damping) "
+               "taken into the step; the positions then with the new velocities"
+             : "Euler (MuJoCo's default, set explicitly): the new velocities first, then the "
+               "positions with them";
+}
 
 constexpr const char* kHingeText =
     "a MuJoCo hinge joint (<joint type=\"hinge\">) per [[hinge]], the body's parent the world: "
@@ -78,12 +82,15 @@ constexpr const char* kHingeText =
 
 class MujocoSimulation : public Simulation {
  public:
-  MujocoSimulation(const World& world, const EngineTables& engines, double dt)
+  /// A run stepped by MuJoCo's option integrator `integrator` ("Euler", "RK4", "implicit").
+  MujocoSimulation(const World& world, const EngineTables& engines, double dt,
+                   std::string integrator)
       : world_(world),
         engines_(engines),
+        integrator_(std::move(integrator)),
         dt_(dt),
         start_(world, dt, {false}),  // springs are MuJoCo tendons
-        xml_(mujoco_model_xml(world, dt, BB_MUJOCO_INTEGRATOR)),
+        xml_(mujoco_model_xml(world, dt, integrator_)),
         gyroscopic_(engine_setting(engines, mujoco_description(), "gyroscopic_term") != 0.0) {
     std::tie(model_, data_) = kept_model().take(xml_);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
@@ -158,9 +165,9 @@ class MujocoSimulation : public Simulation {
   Settings settings() const override {
     Settings s = engine_key_settings(engines_, mujoco_description());
     s.push_back({"precision", std::string(sizeof(mjtNum) == 8 ? "double" : "float")});
-    s.push_back({"integrator", std::string(kIntegratorText)});
+    s.push_back({"integrator", std::string(integrator_text(integrator_))});
     std::string gyroscopic = gyroscopic_ ? kGyroscopicOn : kGyroscopicOff;
-    if (!gyroscopic_ && kIntegrator == "RK4")
+    if (!gyroscopic_ && integrator_ == "RK4")
       gyroscopic +=
           " (under RK4 the torque is held over the four stages while the bias force "
           "is computed again at each: it cancels the term at the step's start only, "
@@ -333,6 +340,7 @@ class MujocoSimulation : public Simulation {
 
   const World& world_;
   const EngineTables& engines_;  ///< the case's [engines.mujoco] table among the others
+  std::string integrator_;       ///< MuJoCo's option integrator: what tells the backends apart
   double dt_;
   StepStart start_;  ///< impulses due and the force model's loads
   std::string xml_;
@@ -353,21 +361,34 @@ std::pair<std::string, std::string> mujoco_version() {
                         std::to_string(v % 10)};
 }
 
-/// Starts a run, MuJoCo's error and warning handlers set first (once per process).
-std::unique_ptr<Simulation> start_mujoco(const World& world, const BackendSettings& settings,
-                                         double dt) {
-  static std::once_flag handlers;
-  std::call_once(handlers, [] {
-    mju_user_error = mujoco_error;
-    mju_user_warning = mujoco_warning;
-  });
-  return start_engine<MujocoSimulation>(world, settings, dt);
+/// How the backend stepped by `integrator` starts a run: MuJoCo's error and warning handlers
+/// set first (once per process).
+DeclaredBackend::Start mujoco_start(const std::string& integrator) {
+  return [integrator](const World& world, const BackendSettings& settings, double dt) {
+    static std::once_flag handlers;
+    std::call_once(handlers, [] {
+      mju_user_error = mujoco_error;
+      mju_user_warning = mujoco_warning;
+    });
+    return start_engine<MujocoSimulation>(integrator)(world, settings, dt);
+  };
 }
 
 }  // namespace
 
 }  // namespace bb
 
-BEACHBALL_PLUGIN(new bb::DeclaredBackend(
-    bb::described_backend(bb::mujoco_description(), BB_BACKEND_NAME, bb::mujoco_version()),
-    bb::start_mujoco))
+namespace {
+
+/// The plugin's backends: MuJoCo's own integrators.
+bb::Backend* mujoco_backend(int index) {
+  static const std::vector<bb::VariantStart> starts = {
+      {"mujoco", bb::mujoco_start("Euler")},
+      {"mujoco/rk4", bb::mujoco_start("RK4")},
+      {"mujoco/implicit", bb::mujoco_start("implicit")}};
+  return bb::engine_backend(bb::mujoco_description(), bb::mujoco_version(), starts, index);
+}
+
+}  // namespace
+
+BEACHBALL_PLUGIN_BACKENDS(mujoco_backend)

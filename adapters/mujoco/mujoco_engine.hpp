@@ -24,28 +24,29 @@ inline FeatureSet mujoco_supports_with_springs() {
   return mujoco_supports() | FeatureSet{Feature::Springs};
 }
 
+/// Why mujoco/rk4 does not step like semi-implicit Euler.
+inline constexpr const char* kMujocoRk4Stages =
+    "MuJoCo's RK4 computes its own forces (gravity, contacts, joints, the bias force) again at "
+    "each of its four stages, while xfrc_applied, set once before the step, is held over them: "
+    "the force model's forces (drag, Magnus, wind) enter at first order, and a cancelling "
+    "gyroscopic torque cancels only at the step's start";
+
 inline EngineDescription mujoco_engine() {
   const std::string e = "mujoco";
-  return {e,
-          {"mujoco", "mujoco/rk4", "mujoco/implicit"},
-          {{e, "gyroscopic_term", KeyKind::Boolean, 1,
-            "the gyroscopic term w x I w of a free body, part of MuJoCo's bias force "
-            "qfrc_bias (on, as MuJoCo always has it); false cancels it with the opposite "
-            "torque through xfrc_applied before each step"}},
-          true,
-          {},
-          {{"mujoco", mujoco_supports_with_springs()},
-           {"mujoco/rk4", mujoco_supports_with_springs()},
-           {"mujoco/implicit", mujoco_supports()}},
-          false,
-          {},
-          {{"gyroscopic", "qfrc_bias"}, {"plane_2d", "slide joints"}, {"hinge", "hinge joint"}},
-          {},
-          {{"mujoco/rk4",
-            "MuJoCo's RK4 computes its own forces (gravity, contacts, joints, the bias force) "
-            "again at each of its four stages, while xfrc_applied, set once before the step, "
-            "is held over them: the force model's forces (drag, Magnus, wind) enter at first "
-            "order, and a cancelling gyroscopic torque cancels only at the step's start"}}};
+  return {.engine = e,
+          .variants =
+              {{.name = "mujoco", .colour = "#393a78", .supports = mujoco_supports_with_springs()},
+               {.name = "mujoco/rk4",
+                .colour = "#87a3eb",
+                .supports = mujoco_supports_with_springs(),
+                .staged_step = kMujocoRk4Stages},
+               {.name = "mujoco/implicit", .colour = "#657b3a", .supports = mujoco_supports()}},
+          .keys = {{e, "gyroscopic_term", KeyKind::Boolean, 1,
+                    "the gyroscopic term w x I w of a free body, part of MuJoCo's bias force "
+                    "qfrc_bias (on, as MuJoCo always has it); false cancels it with the opposite "
+                    "torque through xfrc_applied before each step"}},
+          .names_in_settings = {
+              {"gyroscopic", "qfrc_bias"}, {"plane_2d", "slide joints"}, {"hinge", "hinge joint"}}};
 }
 
 /// The description, made once: what the adapter reads its settings' defaults from.

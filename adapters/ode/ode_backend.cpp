@@ -1,6 +1,5 @@
-// ODE as a backend, double precision. Built twice: `ode`, whose springs are ODE joints
-// made soft by ERP and CFM, and `ode/force` (BB_SPRINGS_BY_HAND), whose springs are
-// forces added before each step.
+// ODE as a plugin of two backends, double precision: `ode`, whose springs are ODE joints
+// made soft by ERP and CFM, and `ode/force`, whose springs are forces added before each step.
 #include <ode/ode.h>
 
 #include <cmath>
@@ -88,19 +87,14 @@ Vec3 from_ode(const dReal* v) {
   return {v[0], v[1], v[2]};
 }
 
-#ifdef BB_SPRINGS_BY_HAND
-constexpr bool kSpringsByHand = true;
-#else
-constexpr bool kSpringsByHand = false;
-#endif
-
 class OdeSimulation : public Simulation {
  public:
-  OdeSimulation(const World& scene, const EngineTables& engines, double dt)
+  OdeSimulation(const World& scene, const EngineTables& engines, double dt, SpringsAs springs)
       : scene_(scene),
         engines_(engines),
+        springs_(springs),
         dt_(dt),
-        start_(scene, dt, {kSpringsByHand}),
+        start_(scene, dt, {springs == SpringsAs::Forces}),
         world_(dWorldCreate()),
         threading_(dThreadingAllocateSelfThreadedImplementation()) {
     // ODE's default stepping context is one shared object; worlds stepped on different
@@ -151,7 +145,7 @@ class OdeSimulation : public Simulation {
       contacts_ = std::make_unique<OdeContacts>(
           scene, world_, bodies_, engine_setting(engines, ode_description(), "bounce_vel"));
     }
-    if (!kSpringsByHand) make_spring_joints();
+    if (springs_ == SpringsAs::Joints) make_spring_joints();
     make_ode_hinges(scene, world_, bodies_);
   }
   ~OdeSimulation() override {
@@ -235,18 +229,16 @@ class OdeSimulation : public Simulation {
                                "called)")});
       s.push_back({"contacts_made", static_cast<double>(contacts_->contacts_made())});
     }
-    if (!scene_.springs.empty()) {
-#ifdef BB_SPRINGS_BY_HAND
+    if (!scene_.springs.empty() && springs_ == SpringsAs::Forces)
       s.push_back({"springs", std::string("force k (l - L) + c (v_b - v_a).u along each spring, "
                                           "added with dBodyAddForce before each step")});
-#else
+    if (!scene_.springs.empty() && springs_ == SpringsAs::Joints) {
       s.push_back(
           {"springs", std::string("a distance joint (dJointCreateDBall) per spring at the rest "
                                   "length, made soft as the ODE manual says: ERP = h k / (h k + "
                                   "c), CFM = 1 / (h k + c) per joint, h the step")});
       s.push_back({"spring_erp_first", spring_erp_});
       s.push_back({"spring_cfm_first", spring_cfm_});
-#endif
     }
     if (!scene_.hinges.empty()) add_ode_hinge_settings(world_, s);
     if (!scene_.impulses.empty())
@@ -280,6 +272,7 @@ class OdeSimulation : public Simulation {
   std::vector<dBodyID> planar_;  ///< moving, unhinged bodies of a 2D scene
   const World& scene_;
   const EngineTables& engines_;  ///< the case's [engines.ode] table among the others
+  SpringsAs springs_;            ///< ode: ODE's joints; ode/force: forces
   dReal dt_;
   StepStart start_;  ///< impulses due and the force model's loads
   bool quick_step_ = false;
@@ -329,9 +322,10 @@ class OdeSimulation : public Simulation {
   }
 };
 
-/// Starts a run, ODE made ready first: once per process, and once per thread that steps.
+/// Starts a run with the springs as `springs`, ODE made ready first: once per process, and
+/// once per thread that steps.
 std::unique_ptr<Simulation> start_ode(const World& world, const BackendSettings& settings,
-                                      double dt) {
+                                      double dt, SpringsAs springs) {
   static std::once_flag initialised;
   std::call_once(initialised, [] {
     dInitODE2(0);
@@ -341,13 +335,30 @@ std::unique_ptr<Simulation> start_ode(const World& world, const BackendSettings&
   });
   // ODE keeps per-thread data; each thread that steps a world must allocate it.
   dAllocateODEDataForThread(dAllocateMaskAll);
-  return start_engine<OdeSimulation>(world, settings, dt);
+  return start_engine<OdeSimulation>(springs)(world, settings, dt);
+}
+
+/// How variant `springs` starts its runs.
+DeclaredBackend::Start ode_start(SpringsAs springs) {
+  return [springs](const World& world, const BackendSettings& settings, double dt) {
+    return start_ode(world, settings, dt, springs);
+  };
 }
 
 }  // namespace
 
 }  // namespace bb
 
-BEACHBALL_PLUGIN(new bb::DeclaredBackend(
-    bb::described_backend(bb::ode_description(), BB_BACKEND_NAME, {"ode", BB_ODE_VERSION}),
-    bb::start_ode))
+namespace {
+
+/// The plugin's backends: the springs as ODE's joints, or as forces.
+bb::Backend* ode_backend(int index) {
+  static const std::vector<bb::VariantStart> starts = {
+      {"ode", bb::ode_start(bb::SpringsAs::Joints)},
+      {"ode/force", bb::ode_start(bb::SpringsAs::Forces)}};
+  return bb::engine_backend(bb::ode_description(), {"ode", BB_ODE_VERSION}, starts, index);
+}
+
+}  // namespace
+
+BEACHBALL_PLUGIN_BACKENDS(ode_backend)

@@ -17,8 +17,14 @@ inline FeatureSet ode_supports() {
 
 inline EngineDescription ode_engine() {
   const std::string e = "ode";
-  return {e,
-          {"ode", "ode/force"},
+  return {
+      .engine = e,
+      .variants = {{.name = "ode", .colour = "#797e81", .supports = ode_supports()},
+                   {.name = "ode/force",
+                    .colour = "#bebe22",
+                    .supports = ode_supports(),
+                    .needs = {Feature::Springs}}},
+      .keys =
           {{e, "erp", KeyKind::Number, 0.2, "error reduction parameter"},
            {e, "cfm", KeyKind::Number, 1e-5,
             "constraint force mixing of every contact and hinge row: beachball's 1e-5, as ODE's "
@@ -36,15 +42,11 @@ inline EngineDescription ode_engine() {
            {e, "contact_surface_layer", KeyKind::Number, 0.0,
             "depth contacts may sink before ERP pushes them out, m "
             "(dWorldSetContactSurfaceLayer; ODE's default)"}},
-          true,
-          {{"ode/force", {Feature::Springs}}},
-          {{"ode", ode_supports()}, {"ode/force", ode_supports()}},
-          true,
-          {},
-          {{"gyroscopic", "dBodySetGyroscopicMode(body, 1)"},
-           {"hinge", "dJointCreateHinge"},
-           {"plane_2d", "put back in the plane"}},
-          {"hinge_erp", "hinge_cfm"}};
+      .friction_pyramid = true,
+      .names_in_settings = {{"gyroscopic", "dBodySetGyroscopicMode(body, 1)"},
+                            {"hinge", "dJointCreateHinge"},
+                            {"plane_2d", "put back in the plane"}},
+      .hinge_numbers = {"hinge_erp", "hinge_cfm"}};
 }
 
 /// The description, made once: what the adapter reads its settings' defaults from.

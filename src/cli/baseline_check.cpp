@@ -39,7 +39,7 @@ RunSelection baseline_selection(const Scene& scene, const KeptResults& kept,
   RunSelection also;
   for (const RunRecord& run : kept.runs) {
     const bool known = std::find(names.begin(), names.end(), run.backend) != names.end() ||
-                       run.backend == "reference";
+                       run.backend == kReferenceName;
     if (known && in_shard(shard, scene, run.backend) &&
         std::find(also.backends.begin(), also.backends.end(), run.backend) == also.backends.end())
       also.backends.push_back(run.backend);

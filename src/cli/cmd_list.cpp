@@ -22,7 +22,7 @@ int list_command(const std::vector<std::string>& paths) {
   const std::vector<Scene> scenes = load_cases(paths);
   const Registry registry = Registry::load();
   fmt::print("Backends:\n");
-  fmt::print("  {:<28} {}\n", "reference", feature_list(registry.reference().supports()));
+  fmt::print("  {:<28} {}\n", kReferenceName, feature_list(registry.reference().supports()));
   fmt::print("  {:<28} {}\n", "course/<integrator>", feature_list(registry.course_features()));
   for (const Backend* e : registry.engines()) {
     const auto [library, version] = e->library_version();

@@ -36,7 +36,7 @@ std::string stability_page(const CaseResults& results) {
 /// The backends a stability search of `scene` runs: those that run it, but the reference.
 std::vector<std::string> searched(const Scene& scene) {
   std::vector<std::string> out = runnable_backend_names(scene, engine_catalogue());
-  std::erase(out, "reference");
+  std::erase(out, kReferenceName);
   return out;
 }
 
@@ -50,7 +50,7 @@ int stability_command(const std::vector<std::string>& paths, const std::string& 
   for (const Scene& scene : scenes) {
     const std::vector<std::string> known = backend_names(scene, engine_catalogue());
     for (const std::string& b : backends)
-      if (b == "reference" || std::find(known.begin(), known.end(), b) == known.end())
+      if (b == kReferenceName || std::find(known.begin(), known.end(), b) == known.end())
         throw CaseError(scene.file, 0,
                         "--backends names '" + b + "'; the stability search runs: " +
                             joined(searched(scene)) + " (not the adaptive reference)");

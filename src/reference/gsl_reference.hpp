@@ -6,6 +6,7 @@
 #pragma once
 
 #include "scene/backend.hpp"
+#include "scene/backend_names.hpp"
 
 namespace bb {
 
@@ -51,7 +52,7 @@ class ReferenceBackend : public Backend {
                             double max_step_per_sample = 0.0,
                             ReferenceSolver solver = ReferenceSolver::Main)
       : tolerance_(tolerance), max_step_per_sample_(max_step_per_sample), solver_(solver) {}
-  std::string name() const override { return "reference"; }
+  std::string name() const override { return kReferenceName; }
   FeatureSet supports() const override;
   std::pair<std::string, std::string> library_version() const override;
   std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,

@@ -5,33 +5,33 @@
 #include <functional>
 #include <utility>
 
+#include "run/engine_catalogue.hpp"
+#include "scene/backend_names.hpp"
+
 namespace bb {
 
 namespace {
 
-/// The colours of every backend the course and the engine catalogue name. Every two
-/// colours that can share a plot (these, the reference's black and the course variants'
-/// shades below) are at least 20 apart in CIELAB (CIE76 delta E; 2.3 is a just noticeable
-/// difference, and lines on a projector need far more), and none is lighter than L* 76, so
-/// each stands out on white (tests/report/backend_style_test.cpp).
+/// The colours of the reference and the course integrators; an engine's backends have theirs
+/// in its description (adapters/<engine>/<engine>_engine.hpp). Every two colours that can
+/// share a plot (these, the engines' and the course variants' shades below) are at least 20
+/// apart in CIELAB (CIE76 delta E; 2.3 is a just noticeable difference, and lines on a
+/// projector need far more), and none is lighter than L* 76, so each stands out on white
+/// (tests/report/backend_style_test.cpp).
 constexpr std::pair<const char*, const char*> kNamed[] = {
-    {"reference", "#000000"},
+    {kReferenceName, "#000000"},
     {"course/explicit-euler", "#d32326"},
     {"course/semi-implicit-euler", "#f37400"},
     {"course/velocity-verlet", "#2ba02c"},
     {"course/rk4", "#0b76b2"},
-    {"bullet", "#9367bd"},
-    {"bullet-float", "#e476c2"},
-    {"bullet/force", "#8a564b"},
-    {"bullet-softbody", "#c39b93"},
-    {"box2d", "#00c0cf"},
-    {"box2d/force", "#006d79"},
-    {"ode", "#797e81"},
-    {"ode/force", "#bebe22"},
-    {"mujoco", "#393a78"},
-    {"mujoco/rk4", "#87a3eb"},
-    {"mujoco/implicit", "#657b3a"},
 };
+
+/// The colour the engine catalogue gives backend `name`, or "".
+std::string engine_colour(const std::string& name) {
+  for (const EngineDescription& engine : engine_catalogue())
+    if (const EngineVariant* variant = find_variant(engine, name)) return variant->colour;
+  return "";
+}
 
 /// For a name no one has listed (an engine added without a colour): one of these, by a
 /// hash of the name.
@@ -72,13 +72,14 @@ double variant_shade(const std::string& suffix) {
 
 BackendStyle backend_style(const std::string& backend) {
   BackendStyle style;
-  style.kind = backend == "reference"             ? LineKind::Reference
+  style.kind = backend == kReferenceName          ? LineKind::Reference
                : backend.rfind("course/", 0) == 0 ? LineKind::Course
                                                   : LineKind::Engine;
   const std::size_t plus = backend.find('+');
   const std::string base = backend.substr(0, plus);
   for (const auto& [name, colour] : kNamed)
     if (base == name) style.colour = colour, style.named = true;
+  if (style.colour.empty()) style.colour = engine_colour(base), style.named = !style.colour.empty();
   if (style.colour.empty())
     style.colour = kSpare[std::hash<std::string>{}(base) % (sizeof kSpare / sizeof kSpare[0])];
   if (plus != std::string::npos)

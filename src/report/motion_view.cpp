@@ -13,6 +13,7 @@
 #include "report/motion_paint.hpp"
 #include "report/motion_panels.hpp"
 #include "report/plot_layout.hpp"
+#include "scene/backend_names.hpp"
 #include "scene/text.hpp"
 
 namespace bb {
@@ -180,7 +181,7 @@ const State& state_at(const Trajectory& t, double instant) {
 
 /// What the title says of the reference: drawn filled grey, or absent with no answer.
 std::string reference_note(const std::vector<const RunRecord*>& runs, bool multiples) {
-  if (runs.front()->backend != "reference")
+  if (runs.front()->backend != kReferenceName)
     return "the reference has no answer here: every backend on its own";
   return multiples ? "the reference filled grey, under each backend" : "the reference filled grey";
 }
@@ -249,7 +250,7 @@ std::string motion_svg(const CaseResults& results, const std::vector<int>& drawn
                            speed + "; " + reference_note(runs, multiples), off);
   const motion::MarkTiming timing{total, play, 0.0};
   // In small panels, the reference (when it has an answer) is drawn once, under each.
-  const bool ghost = runs.front()->backend == "reference";
+  const bool ghost = runs.front()->backend == kReferenceName;
   const auto springs_of = [&](std::size_t r) { return r < spring_runs ? all_springs : Springs{}; };
   const std::string backdrop = motion::ground_svg(scene, c) + motion::fixed_svg(scene, c) +
                                motion::wind_svg(scene, c, thick);
@@ -325,7 +326,7 @@ std::string motion_still_svg(const CaseResults& results, const std::vector<int>&
                          instants.size(), format_dt(scene.report_dt)),
              reference_note(runs, multiples), off);
   svg += row_names;
-  const bool ghost = multiples && runs.front()->backend == "reference";
+  const bool ghost = multiples && runs.front()->backend == kReferenceName;
   if (ghost) {
     svg += "<defs>\n";
     for (std::size_t i = 0; i < instants.size(); ++i)

@@ -10,6 +10,7 @@
 #include "report/markdown_text.hpp"
 #include "report/off_scale.hpp"
 #include "report/table.hpp"
+#include "scene/backend_names.hpp"
 
 namespace bb {
 
@@ -140,7 +141,7 @@ struct PanelCut {
 };
 
 PanelCut cut_of(const std::vector<std::string>& backends, const std::vector<Series>& series) {
-  const auto guide_at = std::find(backends.begin(), backends.end(), "reference");
+  const auto guide_at = std::find(backends.begin(), backends.end(), kReferenceName);
   if (guide_at == backends.end()) return {};
   Extent guide;
   for (const auto& v : series[guide_at - backends.begin()])
@@ -210,7 +211,7 @@ std::string sweep_plot(const CaseResults& results, FileBatch& batch, const std::
   for (const SweepPoint& p : sweep.points) swept.add(p.value);
   if (swept.span() > 0.0) plot.set_x_range(swept.lo, swept.hi);
   for (const Observe& o : scene.observes) {
-    const Series reference = series_of(sweep, "reference", o.name);
+    const Series reference = series_of(sweep, kReferenceName, o.name);
     std::vector<Series> values, off;
     for (const std::string& b : backends) {
       values.push_back(series_of(sweep, b, o.name));
@@ -297,7 +298,7 @@ std::string sweep_markdown(const CaseResults& results, const std::string& plot) 
     out += "**What the published study found.** " + markdown_text(spec.published) + "\n\n";
   const auto no_reference =
       std::count_if(sweep.points.begin(), sweep.points.end(), [](const SweepPoint& p) {
-        const RunRecord* r = run_of(p, "reference");
+        const RunRecord* r = run_of(p, kReferenceName);
         return r == nullptr || r->status != RunStatus::Ok;
       });
   out += fmt::format(

@@ -80,7 +80,7 @@ const std::string& shared_code_digest() {
 
 std::string plugin_digest(const std::string& backend) {
   if (const OutsidePlugin* outside = outside_plugin(backend)) return file_digest(outside->real);
-  return file_digest((fs::path(plugin_folder()) / plugin_file_name(backend)).string());
+  return file_digest((fs::path(plugin_folder()) / backend_plugin_file(backend)).string());
 }
 
 std::string build_digest() {
@@ -96,7 +96,7 @@ std::string build_digest() {
     all += p.filename().string() + " " + file_digest(p.string()) + "\n";
   // The plugins from outside the tree, by their backends' names: a merge needs the same ones.
   for (const OutsidePlugin& p : outside_plugins())
-    all += p.description.backends.front() + " " + file_digest(p.real) + "\n";
+    all += p.description.variants.front().name + " " + file_digest(p.real) + "\n";
   return digest(all);
 }
 

@@ -313,7 +313,7 @@ CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOpt
   if (!scene.gates.empty() || also.dts.empty()) options.dts.push_back(scene.report_dt);
   options.cost = false;
   options.sweep = false;
-  if (options.backends.empty()) options.backends.push_back("reference");
+  if (options.backends.empty()) options.backends.push_back(kReferenceName);
   CaseResults results = run_case(scene, registry, options);
   // Without a reference, errors are against the finest dt: run it too.
   const double finest = *std::min_element(scene.dt.begin(), scene.dt.end());

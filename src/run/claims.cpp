@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "run/claim_causes.hpp"
+#include "scene/backend_names.hpp"
 #include "scene/metric_names.hpp"
 #include "scene/text.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 
 /// Backend `backend`'s runs: the reference's one, or one per dt, largest dt first.
 std::vector<const RunRecord*> runs_of(const CaseResults& results, const std::string& backend) {
-  if (backend == "reference") return {&results.reference_run};
+  if (backend == kReferenceName) return {&results.reference_run};
   std::vector<const RunRecord*> out;
   for (const RunRecord& run : results.runs)
     if (run.backend == backend) out.push_back(&run);
@@ -24,7 +25,7 @@ std::vector<const RunRecord*> runs_of(const CaseResults& results, const std::str
 const RunRecord* run_at(const CaseResults& results, const std::string& backend,
                         std::optional<double> dt) {
   for (const RunRecord* run : runs_of(results, backend))
-    if (backend == "reference" || run->dt == dt) return run;
+    if (backend == kReferenceName || run->dt == dt) return run;
   return nullptr;
 }
 
@@ -148,7 +149,7 @@ std::vector<ClaimResult> judge_claims(const CaseResults& results) {
     std::vector<std::string> backends;
     if (claim.left.backend == "*") {
       if (!results.reference_run.backend.empty() && judges_the_reference(claim))
-        backends.push_back("reference");
+        backends.push_back(kReferenceName);
       for (const RunRecord& run : results.runs)
         if (std::find(backends.begin(), backends.end(), run.backend) == backends.end())
           backends.push_back(run.backend);
@@ -162,11 +163,11 @@ std::vector<ClaimResult> judge_claims(const CaseResults& results) {
 }
 
 bool judges_the_reference(const Claim& claim) {
-  if (claim.left.backend != "*") return claim.left.backend == "reference";
+  if (claim.left.backend != "*") return claim.left.backend == kReferenceName;
   // Errors are measured against the reference, and a comparison with the reference is no
   // comparison for the reference itself: it has nothing of its own to judge.
   return !claim.against_reference && !is_error_metric(claim.left.metric) &&
-         claim.right.backend != "reference";
+         claim.right.backend != kReferenceName;
 }
 
 ClaimStanding claim_standing(const ClaimResult& claim) {

@@ -33,7 +33,7 @@ std::string name_problem(const std::string& name) {
     return "its backend's name '" + name +
            "' is not 1 to 64 letters, digits and - _ . / + (not starting with /)";
   // The reference, the course's variants and imported trajectories name their own rows.
-  for (const char* own : {"reference", "course", "import"})
+  for (const char* own : {kReferenceName, "course", "import"})
     if (name == own || name.rfind(std::string(own) + "/", 0) == 0 ||
         name.rfind(std::string(own) + "+", 0) == 0)
       return "its backend's name '" + name + "' is one of beachball's own (" + own +
@@ -42,7 +42,7 @@ std::string name_problem(const std::string& name) {
     if (name == built_in)
       return "its backend's name '" + name + "' is a built-in backend's name: give it another name";
   for (const OutsidePlugin& p : loaded())
-    if (p.description.backends.front() == name)
+    if (p.description.variants.front().name == name)
       return "its backend's name '" + name + "' is the name of the backend of " + p.path +
              ": give one of them another name";
   return "";
@@ -58,15 +58,23 @@ void load_one(const std::string& path) {
   auto opened = open_plugin(real);
   if (const auto* why = std::get_if<std::string>(&opened)) throw CaseError(path, 0, *why);
   const OpenedPlugin plugin = std::get<OpenedPlugin>(opened);
-  const std::unique_ptr<Backend> backend(plugin.create());
-  if (!backend) throw CaseError(path, 0, "its " BEACHBALL_PLUGIN_ENTRY " returned no backend");
-  const std::string name = backend->name();
-  if (const std::string problem = name_problem(name); !problem.empty())
-    throw CaseError(path, 0, problem);
-  EngineDescription description{name, {name}, {}};
-  description.needs[name] = backend->needs();
-  description.supports[name] = backend->supports();
-  loaded().push_back({path, real, plugin.create, description, backend->library_version()});
+  const std::vector<std::unique_ptr<Backend>> backends = plugin_backends(plugin);
+  if (backends.empty())
+    throw CaseError(path, 0, "its " BEACHBALL_PLUGIN_ENTRY " returned no backend");
+  for (std::size_t index = 0; index < backends.size(); ++index) {
+    const Backend& backend = *backends[index];
+    const std::string name = backend.name();
+    if (const std::string problem = name_problem(name); !problem.empty())
+      throw CaseError(path, 0, problem);
+    const EngineDescription description{.engine = name,
+                                        // No colour of its own: the report picks one by its name.
+                                        .variants = {{.name = name,
+                                                      .colour = "",
+                                                      .supports = backend.supports(),
+                                                      .needs = backend.needs()}}};
+    loaded().push_back({path, real, plugin.create, static_cast<int>(index), description,
+                        backend.library_version()});
+  }
 }
 
 /// Every beachball-*.so in the folders of $BEACHBALL_PLUGIN_PATH, each folder in name order.
@@ -119,7 +127,7 @@ const EngineCatalogue& engine_catalogue() {
 
 const OutsidePlugin* outside_plugin(const std::string& name) {
   for (const OutsidePlugin& p : loaded())
-    if (p.description.backends.front() == name) return &p;
+    if (p.description.variants.front().name == name) return &p;
   return nullptr;
 }
 

@@ -1,8 +1,9 @@
 // Backend plugins built outside beachball's tree, against its SDK: the files named with
 // `--plugin PATH.so` and every beachball-*.so in the folders of $BEACHBALL_PLUGIN_PATH. Each
 // is opened and checked before any work (a missing file, not a plugin, another interface
-// version, a name another backend has: refused, exit 2); each then joins the engine catalogue
-// as an engine of one backend, so that cases, rows, gates and caches treat it as a built-in.
+// version, a name another backend has: refused, exit 2); each of its backends then joins the
+// engine catalogue as an engine of one backend, so that cases, rows, gates and caches treat it
+// as a built-in.
 #pragma once
 
 #include <string>
@@ -13,11 +14,13 @@
 
 namespace bb {
 
-/// One plugin from outside the tree, opened and checked.
+/// One backend of a plugin from outside the tree, opened and checked (a plugin of several
+/// backends is one of these for each).
 struct OutsidePlugin {
   std::string path;  ///< as given (or found in the search path)
   std::string real;  ///< its real path: what the build's identity reads
-  Backend* (*create)() = nullptr;
+  Backend* (*create)(int index) = nullptr;
+  int index = 0;                  ///< the backend's number in its plugin: create(index) makes it
   EngineDescription description;  ///< one backend: its name, features and needs
   std::pair<std::string, std::string> library_version;
 };

@@ -26,9 +26,19 @@ std::variant<OpenedPlugin, std::string> open_plugin(const std::string& path) {
     return "was built against beachball plugin interface " + std::to_string(theirs) +
            ", this beachball has " + std::to_string(BEACHBALL_PLUGIN_INTERFACE_VERSION) +
            ": rebuild it";
-  auto create = reinterpret_cast<Backend* (*)()>(dlsym(handle, BEACHBALL_PLUGIN_ENTRY));
+  auto create = reinterpret_cast<Backend* (*)(int)>(dlsym(handle, BEACHBALL_PLUGIN_ENTRY));
   if (create == nullptr) return std::string("has no " BEACHBALL_PLUGIN_ENTRY);
   return OpenedPlugin{handle, create};
+}
+
+std::vector<std::unique_ptr<Backend>> plugin_backends(const OpenedPlugin& plugin) {
+  std::vector<std::unique_ptr<Backend>> out;
+  for (int index = 0; index < kMostBackendsPerPlugin; ++index) {
+    std::unique_ptr<Backend> backend(plugin.create(index));
+    if (!backend) break;
+    out.push_back(std::move(backend));
+  }
+  return out;
 }
 
 }  // namespace bb

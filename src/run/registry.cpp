@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 
 #include "course/course_backend.hpp"
 #include "run/engine_catalogue.hpp"
@@ -24,42 +25,80 @@ std::string plugin_folder() {
   return ec ? std::string("plugins") : (exe.parent_path() / "plugins").string();
 }
 
-std::string plugin_file_name(const std::string& backend) {
-  std::string file = "beachball-" + backend + ".so";
+std::string plugin_file_name(const std::string& plugin) {
+  std::string file = "beachball-" + plugin + ".so";
   std::replace(file.begin(), file.end(), '/', '-');
   return file;
 }
 
-Registry Registry::load() {
-  Registry r;
-  const std::filesystem::path folder = plugin_folder();
+std::string backend_plugin_file(const std::string& backend) {
   for (const EngineDescription& engine : built_in_engine_catalogue())
-    for (const std::string& name : engine.backends) r.load_plugin(folder, name, engine);
-  // The plugins from outside the tree, checked when they were opened (outside_plugins.hpp).
-  for (const OutsidePlugin& plugin : outside_plugins()) r.engines_.emplace_back(plugin.create());
-  return r;
+    if (const EngineVariant* variant = find_variant(engine, backend))
+      return plugin_file_name(variant_plugin(engine, *variant));
+  return plugin_file_name(backend);
 }
 
-void Registry::load_plugin(const std::filesystem::path& folder, const std::string& name,
-                           const EngineDescription& engine) {
-  if (!engine.has_adapter) {
-    missing_.push_back({name, "no adapter in this version of beachball", false});
-    return;
-  }
-  const auto requirement = engine.needs.find(name);
-  const FeatureSet needs = requirement == engine.needs.end() ? FeatureSet{} : requirement->second;
-  const std::filesystem::path path = folder / plugin_file_name(name);
+namespace {
+
+/// One engine plugin file, opened: its backends by name, or why it gives none.
+struct EnginePlugin {
+  std::map<std::string, std::unique_ptr<Backend>> backends;
+  std::string why;
+};
+
+EnginePlugin open_engine_plugin(const std::filesystem::path& path) {
+  EnginePlugin out;
   if (!std::filesystem::exists(path)) {
-    missing_.push_back(
-        {name, "not built: its Debian package was not found at build time", true, needs});
-    return;
+    out.why = "not built: its Debian package was not found at build time";
+    return out;
   }
   auto opened = open_plugin(path.string());
   if (const auto* why = std::get_if<std::string>(&opened)) {
-    missing_.push_back({name, "plugin " + *why, true, needs});
-    return;
+    out.why = "plugin " + *why;
+    return out;
   }
-  engines_.emplace_back(std::get<OpenedPlugin>(opened).create());
+  for (std::unique_ptr<Backend>& backend : plugin_backends(std::get<OpenedPlugin>(opened))) {
+    const std::string name = backend->name();
+    out.backends.emplace(name, std::move(backend));
+  }
+  return out;
+}
+
+}  // namespace
+
+Registry Registry::load() {
+  Registry r;
+  const std::filesystem::path folder = plugin_folder();
+  for (const EngineDescription& engine : built_in_engine_catalogue()) r.load_engine(folder, engine);
+  // The plugins from outside the tree, checked when they were opened (outside_plugins.hpp).
+  for (const OutsidePlugin& plugin : outside_plugins())
+    r.engines_.emplace_back(plugin.create(plugin.index));
+  return r;
+}
+
+void Registry::load_engine(const std::filesystem::path& folder, const EngineDescription& engine) {
+  // Each plugin file is opened once, however many of the engine's backends it gives.
+  std::map<std::string, EnginePlugin> plugins;
+  for (const EngineVariant& variant : engine.variants) {
+    const std::string& name = variant.name;
+    if (!engine.has_adapter) {
+      missing_.push_back({name, "no adapter in this version of beachball", false});
+      continue;
+    }
+    const std::string file = plugin_file_name(variant_plugin(engine, variant));
+    auto [at, first] = plugins.try_emplace(file);
+    if (first) at->second = open_engine_plugin(folder / file);
+    EnginePlugin& plugin = at->second;
+    const auto found = plugin.backends.find(name);
+    if (!plugin.why.empty() || found == plugin.backends.end()) {
+      const std::string why =
+          !plugin.why.empty() ? plugin.why
+                              : "plugin " + file + " gives no backend '" + name + "': rebuild it";
+      missing_.push_back({name, why, true, variant.needs});
+      continue;
+    }
+    engines_.push_back(std::move(found->second));
+  }
 }
 
 FeatureSet Registry::course_features() const {

@@ -22,8 +22,8 @@ class Registry {
   Registry& operator=(Registry&&) noexcept;
   ~Registry();
 
-  /// Engines whose plugin loaded, in engine_backend_names() order, then the plugins from
-  /// outside the tree.
+  /// Engine backends whose plugin loaded, in engine_backend_names() order, then the plugins
+  /// from outside the tree.
   std::vector<const Backend*> engines() const;
   /// An engine backend whose plugin is not here.
   struct Missing {
@@ -42,9 +42,9 @@ class Registry {
 
  private:
   Registry() = default;
-  /// Loads backend `name` of `engine` from `folder`, or records why it is missing.
-  void load_plugin(const std::filesystem::path& folder, const std::string& name,
-                   const EngineDescription& engine);
+  /// Loads the backends of `engine` from its plugins in `folder`, in the description's order,
+  /// and records why each one that is not there is missing.
+  void load_engine(const std::filesystem::path& folder, const EngineDescription& engine);
   std::vector<std::unique_ptr<Backend>> engines_;
   std::vector<Missing> missing_;
   ReferenceBackend reference_;
@@ -61,8 +61,12 @@ BackendSet backends_for(const Scene& scene, const Registry& registry);
 /// Where engine plugins are looked for: $BEACHBALL_PLUGIN_DIR, else plugins/ next to the program.
 std::string plugin_folder();
 
-/// The plugin file of an engine backend: beachball-<name>.so, a slash in the name (a second
-/// way of building the same physics, `box2d/force`) written as a dash.
-std::string plugin_file_name(const std::string& backend);
+/// The file of plugin `plugin`: beachball-<plugin>.so, a slash in the name written as a dash.
+std::string plugin_file_name(const std::string& plugin);
+
+/// The plugin file that gives backend `backend`: its engine's plugin (one for all of an
+/// engine's variants, or the one its description names: bullet-float's), or, for a name no
+/// engine describes, plugin_file_name(backend).
+std::string backend_plugin_file(const std::string& backend);
 
 }  // namespace bb

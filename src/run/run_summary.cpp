@@ -6,6 +6,7 @@
 #include "physics/energy.hpp"
 #include "run/divergence.hpp"
 #include "run/drawn_bodies.hpp"
+#include "scene/backend_names.hpp"
 
 namespace bb {
 
@@ -31,7 +32,7 @@ void add_observables(const Scene& scene, RunRecord& run, const RunRecord& agains
     // run already measured in its child has its own value, not its states, to give.
     if (const auto formula = formula_value(scene, o))
       r.reference = formula;
-    else if (&against == &run && run.backend != "reference")
+    else if (&against == &run && run.backend != kReferenceName)
       r.reference = std::nullopt;
     else if (against.status == RunStatus::Ok && against.summarised)
       r.reference = measured_value(against, o.name);
@@ -84,7 +85,7 @@ void record_position_scale(RunRecord& run) {
 
 void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& against) {
   // A body far outside everywhere the reference's bodies go has blown up (divergence.hpp).
-  if (run.status == RunStatus::Ok && &against != &run && against.backend == "reference")
+  if (run.status == RunStatus::Ok && &against != &run && against.backend == kReferenceName)
     if (auto beyond = beyond_reference(scene, run.trajectory, against.trajectory)) {
       run.status = RunStatus::Diverged;
       run.reason = beyond->reason;

@@ -36,7 +36,7 @@ const std::vector<std::string>& known_spin_rules() {
 std::vector<std::string> engine_backend_names(const EngineCatalogue& catalogue) {
   std::vector<std::string> out;
   for (const EngineDescription& e : catalogue)
-    for (const std::string& b : e.backends) out.push_back(b);
+    for (const EngineVariant& v : e.variants) out.push_back(v.name);
   return out;
 }
 
@@ -69,7 +69,7 @@ std::vector<CourseVariant> course_variants(const Scene& scene) {
 }
 
 std::vector<std::string> backend_names(const Scene& scene, const EngineCatalogue& catalogue) {
-  std::vector<std::string> out = {"reference"};
+  std::vector<std::string> out = {kReferenceName};
   for (const CourseVariant& v : course_variants(scene)) out.push_back(v.name);
   for (const std::string& e : engine_backend_names(catalogue)) out.push_back(e);
   return out;
@@ -79,32 +79,19 @@ std::vector<std::string> backend_names(const Scene& scene, const EngineCatalogue
 
 namespace bb {
 
-FeatureSet description_supports(const EngineDescription& engine, const std::string& name) {
-  const auto at = engine.supports.find(name);
-  return at == engine.supports.end() ? FeatureSet{} : at->second;
-}
-
-FeatureSet catalogue_supports(const EngineCatalogue& catalogue, const std::string& name) {
-  for (const EngineDescription& e : catalogue)
-    if (e.supports.count(name) != 0) return description_supports(e, name);
-  return {};
-}
-
 std::string why_backend_cannot_run(const Scene& scene, const std::string& name,
                                    const EngineCatalogue& catalogue) {
   for (const EngineDescription& e : catalogue) {
-    if (std::find(e.backends.begin(), e.backends.end(), name) == e.backends.end()) continue;
+    const EngineVariant* variant = find_variant(e, name);
+    if (variant == nullptr) continue;
     if (!e.has_adapter) return "it has no adapter in this version of beachball";
     const FeatureSet used = scene.features();
-    if (const auto need = e.needs.find(name); need != e.needs.end()) {
-      std::vector<std::string> absent;
-      for (Feature f : need->second.missing_from(used)) absent.push_back(feature_name(f));
-      if (!absent.empty())
-        return "it takes part only in scenes with " + joined(absent) + ", and this case has none";
-    }
+    std::vector<std::string> absent;
+    for (Feature f : variant->needs.missing_from(used)) absent.push_back(feature_name(f));
+    if (!absent.empty())
+      return "it takes part only in scenes with " + joined(absent) + ", and this case has none";
     std::vector<std::string> unsupported;
-    for (Feature f : used.missing_from(catalogue_supports(catalogue, name)))
-      unsupported.push_back(feature_name(f));
+    for (Feature f : used.missing_from(variant->supports)) unsupported.push_back(feature_name(f));
     if (!unsupported.empty()) return "it does not support " + joined(unsupported);
     return "";
   }

@@ -42,6 +42,9 @@ std::vector<std::string> backend_names(const Scene& scene, const EngineCatalogue
 std::string why_backend_cannot_run(const Scene& scene, const std::string& name,
                                    const EngineCatalogue& catalogue);
 
+/// The reference's backend name: the row every other is measured against.
+inline constexpr const char* kReferenceName = "reference";
+
 /// The prefix of a program's trajectory brought in as a backend (run --trajectory
 /// NAME@DT=FILE): "import/NAME".
 inline constexpr const char* kImportPrefix = "import/";

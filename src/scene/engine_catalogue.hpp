@@ -24,35 +24,53 @@ struct EngineKey {
   std::string meaning;  ///< one line, with the unit
 };
 
+/// One backend of an engine: the engine run one way (its springs as joints or as forces, its
+/// precision, its integrator). The engine's plugin chooses the way at run time.
+struct EngineVariant {
+  std::string name;    ///< the backend's name: "bullet/force"
+  std::string colour;  ///< its line on every plot, "#8a564b" ("": one by its name's hash)
+  /// The features it can simulate (Backend::supports of its plugin, which returns this), known
+  /// here so that a case naming a backend that cannot run it is refused at load, built or not.
+  FeatureSet supports;
+  /// The features a scene must use for it to take part (Backend::needs); usually none.
+  FeatureSet needs = {};
+  /// Whether it computes in single precision (tests expect its rounding from here).
+  bool single_precision = false;
+  /// Why its step has stages (an engine's own RK4) and so does not step like semi-implicit
+  /// Euler: what the adapter applies before a step (the force stage, a torque that cancels a
+  /// term) is held over the stages while the engine's own forces are not; "" for none.
+  std::string staged_step = "";
+  /// The plugin file that gives it, beachball-<plugin>.so; "" for the engine's own
+  /// (beachball-<engine>.so). A build against another library whose symbols clash with the
+  /// engine's (bullet-float) is a plugin of its own.
+  std::string plugin = "";
+};
+
 struct EngineDescription {
-  std::string engine;                 ///< the settings table: [engines.<engine>]
-  std::vector<std::string> backends;  ///< backend names, one plugin each
-  std::vector<EngineKey> keys;
+  std::string engine;                   ///< the settings table: [engines.<engine>]
+  std::vector<EngineVariant> variants;  ///< its backends, in the order they are listed
+  std::vector<EngineKey> keys = {};
   /// False for an engine with no adapter yet: it has a row only when asked for by name.
   bool has_adapter = true;
-  /// Per backend name, the features a scene must use for it to take part (Backend::needs
-  /// of its plugin, known here even when the plugin was not built); absent: none.
-  std::map<std::string, FeatureSet> needs = {};
-  /// Per backend name, the features it can simulate (Backend::supports of its plugin, which
-  /// returns this); known here so that a case naming a backend that cannot run it is refused
-  /// at load, built or not.
-  std::map<std::string, FeatureSet> supports = {};
   /// What the engine does differently, declared here so that tests expect it from the
   /// description, never from the engine's name:
   /// the friction limit is a pyramid (a row per tangent axis: a diagonal slide meets
   /// sqrt(2) mu N) rather than a circle (one row along the slide);
   bool friction_pyramid = false;
-  /// the backends that compute in single precision;
-  std::vector<std::string> single_precision = {};
   /// per engine_settings key, words its text always holds (the engine's own API, named);
   std::map<std::string, std::string> names_in_settings = {};
-  /// the number settings a scene with a hinge reports (a soft joint's ERP and CFM);
+  /// the number settings a scene with a hinge reports (a soft joint's ERP and CFM).
   std::vector<std::string> hinge_numbers = {};
-  /// per backend name whose step has stages (an engine's own RK4), why it does not step like
-  /// semi-implicit Euler: what the adapter applies before a step (the force stage, a torque
-  /// that cancels a term) is held over the stages while the engine's own forces are not.
-  std::map<std::string, std::string> staged_steps = {};
 };
+
+/// The backend names of `engine`, in its order.
+std::vector<std::string> variant_names(const EngineDescription& engine);
+
+/// Backend `name` of `engine`, or nullptr for a name it does not provide.
+const EngineVariant* find_variant(const EngineDescription& engine, const std::string& name);
+
+/// The plugin that gives `variant` of `engine`: its own name, or the engine's.
+std::string variant_plugin(const EngineDescription& engine, const EngineVariant& variant);
 
 /// Every engine the adapters describe, in the adapters' CMake order.
 using EngineCatalogue = std::vector<EngineDescription>;

@@ -257,7 +257,7 @@ void read_claim_reading(TomlReader& r, Claim& c) {
   c.against_reference = compare == "error";
   // The reference's distance from itself is zero by definition: nothing to compare.
   for (const auto& [key, side] : {std::pair{"left", &c.left}, std::pair{"right", &c.right}})
-    if (c.against_reference && side->backend == "reference")
+    if (c.against_reference && side->backend == kReferenceName)
       r.fail(r.line_of(key), std::string("[[claim]] with compare = \"error\" reads each side "
                                          "as its distance from the reference; '") +
                                  key + "' names the reference itself");

@@ -30,8 +30,7 @@ RunRecord run_ok(const Scene& scene, double dt) {
   return run;
 }
 
-#define REQUIRE_BOX2D() \
-  if (box2d() == nullptr) GTEST_SKIP() << "box2d was not built"
+#define REQUIRE_BOX2D() BB_SKIP_IF_MISSING(test::not_built({"box2d"}))
 
 TEST(Box2dContacts, MomentumIsKeptAcrossTheFirstCollision) {
   REQUIRE_BOX2D();

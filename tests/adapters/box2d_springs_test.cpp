@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "physics/energy.hpp"
 #include "course/course_backend.hpp"
 #include "observe/observables.hpp"
+#include "physics/energy.hpp"
 #include "reference/closed_form.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
@@ -26,10 +26,7 @@ using test::number_setting;
 
 class Box2dSprings : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (engine("box2d") == nullptr || engine("box2d/force") == nullptr)
-      GTEST_SKIP() << "box2d or box2d/force was not built";
-  }
+  void SetUp() override { BB_SKIP_IF_MISSING(test::not_built({"box2d", "box2d/force"})); }
 };
 
 double energy_ratio(const Scene& scene, const RunRecord& run) {

@@ -41,7 +41,7 @@ INSTANTIATE_TEST_SUITE_P(Builds, BulletContacts, ::testing::Values("bullet", "bu
 // (a) The contact impulses between the two balls are equal and opposite, so their total
 // momentum, less gravity's impulse, does not change across their first collision.
 TEST_P(BulletContacts, DoubleBounceKeepsMomentumAcrossTheBallsCollision) {
-  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene scene = load_case(test::source_path("cases/double_bounce.toml"));
   const RunRecord run = run_accuracy(*backend(), scene, scene.report_dt);
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
@@ -58,7 +58,7 @@ TEST_P(BulletContacts, DoubleBounceKeepsMomentumAcrossTheBallsCollision) {
 
 // (b) Each velocity changes by exactly J / m at the step that starts at the impulse's time.
 TEST_P(BulletContacts, PushChangesEachVelocityByImpulseOverMass) {
-  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene scene = load_case(test::source_path("cases/push.toml"));
   const double dt = scene.report_dt;
   auto sim = backend()->start(scene, dt);
@@ -87,7 +87,7 @@ const std::string kDrop = test::dropped_ball("9.0", "0.0333333333333333333",
 // (c) The first contact comes when the closed form says, and the ball bounces with the
 // case's restitution, give or take what Bullet's penetration recovery adds.
 TEST_P(BulletContacts, ADroppedBallBouncesWithTheCasesRestitution) {
-  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene scene = test::scene_from(kDrop);
   const double dt = scene.report_dt, g = 9.81, r = 0.5, h = 10.0, e = 0.8;
   auto sim = backend()->start(scene, dt);
@@ -127,7 +127,7 @@ TEST_P(BulletContacts, ADroppedBallBouncesWithTheCasesRestitution) {
 
 // (d) What changes bounces is in the run, with the engine's rule and the adapter's answer.
 TEST_P(BulletContacts, RunsWithContactsNameTheirRulesAndThresholds) {
-  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene scene = load_case(test::source_path("cases/double_bounce.toml"));
   const RunRecord run = run_accuracy(*backend(), scene, scene.report_dt);
   const Settings& s = run.engine_settings;
@@ -156,7 +156,7 @@ TEST_P(BulletContacts, RunsWithContactsNameTheirRulesAndThresholds) {
 
 // (e) Only the pairs the case lists collide; the same scene with the pair listed does.
 TEST_P(BulletContacts, APairTheCaseDoesNotListPassesThrough) {
-  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene apart = test::scene_from(three_in_a_row(R"(["a", "c"])"));
   const RunRecord through = run_accuracy(*backend(), apart, apart.report_dt);
   ASSERT_EQ(through.status, RunStatus::Ok) << through.reason;
@@ -176,7 +176,7 @@ TEST_P(BulletContacts, APairTheCaseDoesNotListPassesThrough) {
 // ccd key its swept sphere stops it (a CCD contact has restitution 0, so it bounces back
 // slower than e v), as a user who turns CCD on sees.
 TEST_P(BulletContacts, TheFastBallTunnelsUnlessCcdIsOn) {
-  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   std::ifstream file(test::source_path("cases/tunnelling.toml"));
   std::stringstream text;
   text << file.rdbuf();
@@ -224,7 +224,7 @@ velocity = [0.0, -0.15, 0.0]
 }
 
 TEST_P(BulletContacts, ABounceBelowTheRestitutionThresholdIsLost) {
-  if (backend() == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene engine_default = test::scene_from(slow_approach(""));
   const Scene no_threshold =
       test::scene_from(slow_approach("[engines.bullet]\nrestitution_velocity_threshold = 0.0\n"));

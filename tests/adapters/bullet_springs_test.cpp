@@ -80,7 +80,7 @@ TEST(BulletSprings, SpringPairOscillatesWithTheClosedFormPeriod) {
     EXPECT_NEAR(*period / exact, 1.0, 0.01) << name;
   }
   const Backend* force = engine("bullet/force");
-  if (force == nullptr) GTEST_SKIP() << "bullet/force was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet/force"}));
   const RunRecord by_hand = run_accuracy(*force, scene, scene.report_dt);
   const BackendSet set = backends_for(scene, registry());
   for (const Backend* b : set.all)
@@ -154,7 +154,7 @@ Scene spring_pair_with(const std::string& stiffness, const std::string& engine_k
 // without it, as the hand force does.
 TEST(BulletSprings, AtTenThousandTheLimitHoldsWhatWouldExplode) {
   const Backend* b = engine("bullet");
-  if (b == nullptr) GTEST_SKIP() << "bullet was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet"}));
   const Scene limited = spring_pair_with("1.0e4", "");
   const RunRecord run = run_accuracy(*b, limited, limited.report_dt);
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
@@ -176,7 +176,7 @@ TEST(BulletSprings, AtTenThousandTheLimitHoldsWhatWouldExplode) {
 // (k' stretch dt / m), is the one engine_settings names.
 TEST(BulletSprings, TheFirstStepShowsTheStiffnessTheSettingsName) {
   const Backend* b = engine("bullet");
-  if (b == nullptr) GTEST_SKIP() << "bullet was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet"}));
   const Scene scene = spring_case("spring_pair_stiff");
   const double dt = scene.report_dt;
   auto sim = b->start(scene, dt);
@@ -223,7 +223,7 @@ TEST(BulletSprings, SettingsNameTheConstructionSleepingAndTheLimit) {
 // period, as the hand force does.
 TEST(BulletSprings, TheLimitCanBeTurnedOff) {
   const Backend* b = engine("bullet");
-  if (b == nullptr) GTEST_SKIP() << "bullet was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet"}));
   std::ifstream file(test::source_path("cases/spring_pair_stiff.toml"));
   std::stringstream text;
   text << file.rdbuf();
@@ -316,7 +316,8 @@ TEST(BulletSprings, SpringVariantsJoinOnlySpringScenes) {
   for (const EngineDescription& e : engine_catalogue()) {
     if (e.engine != "bullet") continue;
     for (const char* name : {"bullet/force", "bullet-softbody"}) {
-      EXPECT_TRUE(e.needs.count(name) && e.needs.at(name).has(Feature::Springs)) << name;
+      ASSERT_NE(find_variant(e, name), nullptr) << name;
+      EXPECT_TRUE(find_variant(e, name)->needs.has(Feature::Springs)) << name;
     }
   }
 }
@@ -325,7 +326,7 @@ TEST(BulletSprings, SpringVariantsJoinOnlySpringScenes) {
 // anchors of every spring backend are tested in spring_variants_test.cpp.)
 TEST(BulletSprings, TheSoftBodyRunsTheSheets) {
   const Backend* b = engine("bullet-softbody");
-  if (b == nullptr) GTEST_SKIP() << "bullet-softbody was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet-softbody"}));
   for (const char* name : {"sproing_2d", "cloth"}) {
     const Scene scene = spring_case(name);
     const RunRecord run = run_accuracy(*b, scene, scene.report_dt);
@@ -343,7 +344,7 @@ TEST(BulletSprings, TheSoftBodyRunsTheSheets) {
 // (1.8% long at 1/60 s), and loses amplitude by 1 / sqrt(1 + (w dt)^2) every step.
 TEST(BulletSprings, TheSoftBodyLinkIsBackwardEulerOfTheCasesSpring) {
   const Backend* b = engine("bullet-softbody");
-  if (b == nullptr) GTEST_SKIP() << "bullet-softbody was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet-softbody"}));
   const Scene scene = spring_case("spring_pair");
   const double dt = scene.report_dt, w = std::sqrt(100.0 / 0.5);
   const RunRecord run = run_accuracy(*b, scene, dt);
@@ -380,7 +381,7 @@ TEST(BulletSprings, TheSoftBodyLinkIsBackwardEulerOfTheCasesSpring) {
 // The soft body refuses what it cannot hold: contacts.
 TEST(BulletSprings, TheSoftBodyIsUnsupportedWithContacts) {
   const Backend* b = engine("bullet-softbody");
-  if (b == nullptr) GTEST_SKIP() << "bullet-softbody was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet-softbody"}));
   const Scene scene = load_case(test::source_path("cases/double_bounce.toml"));
   EXPECT_EQ(run_accuracy(*b, scene, scene.report_dt).status, RunStatus::Unsupported);
 }

@@ -54,7 +54,7 @@ Scene spinning_box(double spin) {
 
 TEST(Box2dCaps, ABodyInAHurricaneOfWindIsCappedAtTwoMetresAStepAndSaysSo) {
   const Backend* box2d = engine("box2d");
-  if (box2d == nullptr) GTEST_SKIP() << "box2d was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"box2d"}));
   const Scene scene = one_body(
       "radius = 0.1\nmass = 1.0\nposition = [0.0, 0.0, 0.0]\n"
       "drag_coefficient = 0.47\n",
@@ -73,7 +73,7 @@ TEST(Box2dCaps, ABodyInAHurricaneOfWindIsCappedAtTwoMetresAStepAndSaysSo) {
 
 TEST(Box2dCaps, ABodyJustBelowEitherCapIsNotHeld) {
   const Backend* box2d = engine("box2d");
-  if (box2d == nullptr) GTEST_SKIP() << "box2d was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"box2d"}));
   // Ten parts in a million below the caps, far above float's rounding (6e-8), free of force.
   const double below = 1.0 - 1e-5;
   const Scene moving = one_body(
@@ -89,7 +89,7 @@ TEST(Box2dCaps, ABodyJustBelowEitherCapIsNotHeld) {
 
 TEST(Box2dCaps, ABodySpinningPastAQuarterTurnAStepIsCappedThere) {
   const Backend* box2d = engine("box2d");
-  if (box2d == nullptr) GTEST_SKIP() << "box2d was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"box2d"}));
   const RunRecord run = run_accuracy(*box2d, spinning_box(1.5 * kRotationCap / kDt), kDt);
   EXPECT_NEAR(run.trajectory.states.back()[0].angular_velocity.z(), kRotationCap / kDt, 1e-4);
   EXPECT_EQ(run.status, RunStatus::Capped) << run.reason;
@@ -104,7 +104,7 @@ TEST(Box2dCaps, ABodySpinningPastAQuarterTurnAStepIsCappedThere) {
 // its cap is not stable, and says which cap; the accuracy run at that step is not ok.
 TEST(Box2dCaps, AStabilityTrialHeldAtTheCapIsNotStable) {
   const Backend* force = engine("box2d/force");
-  if (force == nullptr) GTEST_SKIP() << "box2d/force was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"box2d/force"}));
   const Scene scene = test::scene_from(test::rope_case("[0.25, 0.0166666666666666667]"));
   ASSERT_EQ(scene.stability.dt_max, 0.25);
   const StabilityTrial trial = try_step(*force, scene, 0.25);

@@ -58,7 +58,7 @@ double first_apex(const Backend& backend, const Scene& scene, double dt) {
 
 TEST(Mujoco, TheRestitutionIsTheContactsDampingRatioAndTheBounceFollowsTheReference) {
   const Backend* mujoco = test::engine("mujoco");
-  if (mujoco == nullptr) GTEST_SKIP() << "mujoco was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"mujoco"}));
   const double dt = 1.0 / 240.0;
   for (double e : {0.5, 0.9}) {
     SCOPED_TRACE(e);
@@ -79,7 +79,7 @@ TEST(Mujoco, TheRestitutionIsTheContactsDampingRatioAndTheBounceFollowsTheRefere
 // slide takes stays within 3 % of v0^2 / (2 mu g) (tests/conformance/friction_engines_test).
 TEST(Mujoco, ASlidingCubeHopsAndItsSettingsSayWhy) {
   const Backend* mujoco = test::engine("mujoco");
-  if (mujoco == nullptr) GTEST_SKIP() << "mujoco was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"mujoco"}));
   const Scene scene = test::scene_from(R"(name = "slide"
 dims = 3
 duration = 1.0
@@ -119,7 +119,7 @@ velocity = [5.0, 0.0, 0.0]
 // first order, a third of MuJoCo's Euler there, at four times its cost per step.
 TEST(Mujoco, ItsRk4IsExactOnGravityAndFirstOrderOnTheForcesItIsGiven) {
   const Backend* rk4 = test::engine("mujoco/rk4");
-  if (rk4 == nullptr) GTEST_SKIP() << "mujoco/rk4 was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"mujoco/rk4"}));
   const Scene thrown = test::scene_from(R"(name = "thrown"
 dims = 2
 duration = 2.0
@@ -161,7 +161,7 @@ velocity = [3.0, 12.0, 0.0]
 TEST(Mujoco, ItsSpringsAreTendonsThatItsOwnIntegratorsStep) {
   const Backend* euler = test::engine("mujoco");
   const Backend* rk4 = test::engine("mujoco/rk4");
-  if (euler == nullptr || rk4 == nullptr) GTEST_SKIP() << "mujoco was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"mujoco", "mujoco/rk4"}));
   const Scene scene = load_case(test::source_path("cases/spring_pair.toml"));
   const CourseBackend course(
       {"course/semi-implicit-euler", "semi-implicit-euler", "mirror", "clamp"});
@@ -190,7 +190,7 @@ TEST(Mujoco, ItsSpringsAreTendonsThatItsOwnIntegratorsStep) {
 // where both move together.
 TEST(Mujoco, TwoBallsThatMeetExchangeTheirVelocitiesOverTheSoftContact) {
   const Backend* mujoco = test::engine("mujoco");
-  if (mujoco == nullptr) GTEST_SKIP() << "mujoco was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"mujoco"}));
   const Scene scene = load_case(test::source_path("cases/equal_masses.toml"));
   const RunRecord reference = run_accuracy(test::registry().reference(), scene, scene.sample);
   const RunRecord run = run_accuracy(*mujoco, scene, scene.dt.back());
@@ -213,7 +213,7 @@ TEST(Mujoco, TwoBallsThatMeetExchangeTheirVelocitiesOverTheSoftContact) {
 // the ball.
 TEST(Mujoco, FrictionAtRestitutionOneDoesNotActAndTheRunSaysWhy) {
   const Backend* mujoco = test::engine("mujoco");
-  if (mujoco == nullptr) GTEST_SKIP() << "mujoco was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"mujoco"}));
   const auto bounce = [&](double e) {
     return test::scene_from(R"(name = "grip"
 dims = 2
@@ -264,7 +264,7 @@ std::vector<double> heights(const Backend& backend, const Scene& scene, double d
 // step exactly as the first.
 TEST(Mujoco, ARunAgainInTheSameProcessStepsExactlyAsTheFirst) {
   const Backend* mujoco = test::engine("mujoco");
-  if (mujoco == nullptr) GTEST_SKIP() << "mujoco was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"mujoco"}));
   const double dt = 1.0 / 240.0;
   const Scene scene = drop(0.5), other = drop(0.9);
   const std::vector<double> first = heights(*mujoco, scene, dt, 400);

@@ -27,9 +27,7 @@ constexpr double kPrecision = 1e-12;
 
 class OdeContacts : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (engine("ode") == nullptr) GTEST_SKIP() << "ode was not built";
-  }
+  void SetUp() override { BB_SKIP_IF_MISSING(test::not_built({"ode"})); }
   const Backend& ode() const { return *engine("ode"); }
 };
 

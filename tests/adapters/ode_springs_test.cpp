@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "physics/energy.hpp"
 #include "course/course_backend.hpp"
 #include "observe/observables.hpp"
+#include "physics/energy.hpp"
 #include "reference/closed_form.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
@@ -25,10 +25,7 @@ using test::number_setting;
 
 class OdeSprings : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (engine("ode") == nullptr || engine("ode/force") == nullptr)
-      GTEST_SKIP() << "ode or ode/force was not built";
-  }
+  void SetUp() override { BB_SKIP_IF_MISSING(test::not_built({"ode", "ode/force"})); }
 };
 
 // (a) and (b): both oscillate near the closed form's period; the force added by hand is

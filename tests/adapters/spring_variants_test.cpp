@@ -26,7 +26,7 @@ class SpringVariants : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpringVariants, TheForceVariantTakesPartOnlyOnSpringScenes) {
   const std::string force = std::string(GetParam()) + "/force";
-  if (engine(force) == nullptr) GTEST_SKIP() << force << " was not built";
+  BB_SKIP_IF_MISSING(test::not_built({force}));
   EXPECT_FALSE(takes_part(force, spring_case("drag_fall")));
   EXPECT_TRUE(takes_part(force, spring_case("spring_pair")));
   EXPECT_TRUE(takes_part(GetParam(), spring_case("drag_fall")));
@@ -67,7 +67,7 @@ TEST(SpringBackends, AnchoredClothParticlesDoNotMove) {
     EXPECT_LE(moved, single ? 1e-6 * (1.0 + start.norm()) : 0.0) << name;
     ++ran;
   }
-  if (ran == 0) GTEST_SKIP() << "no engine plugin was built";
+  BB_SKIP_IF_MISSING(ran == 0 ? "no engine plugin was built" : "");
 }
 
 }  // namespace

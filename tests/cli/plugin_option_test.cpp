@@ -73,6 +73,26 @@ TEST(PluginOption, ItsBackendIsListedAndRunsAsARow) {
   }
 }
 
+// A plugin may give several backends (plugin interface 2): each is listed and runs as a row.
+TEST(PluginOption, EachBackendOfAPluginOfSeveralIsARow) {
+  const std::string dir = test::fresh_dir("plugin_pair");
+  const std::string c = test::write_case(dir, "fall.toml", kFallCase);
+  const Outcome list = beachball("list " + c + " --plugin " + plugin("pair"));
+  ASSERT_EQ(list.exit_code, 0) << list.out;
+  const Outcome run = beachball("run " + c + " --plugin " + plugin("pair") +
+                                " --no-cost --cache off --out " + dir + "/out");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  for (const char* backend : {"test/pair-a", "test/pair-b"}) {
+    EXPECT_NE(list.out.find(std::string(backend) + " "), std::string::npos) << list.out;
+    const auto mine = rows(dir + "/out", backend);
+    ASSERT_EQ(mine.size(), 2u) << backend;  // one row per dt
+    for (const auto& r : mine) {
+      EXPECT_EQ(r["status"], "ok") << r.dump();
+      EXPECT_LT(r["errors"]["position_max"].get<double>(), 1e-6) << r.dump();
+    }
+  }
+}
+
 TEST(PluginOption, ACrashAsARunStartsOrAtAStepIsARowCrashed) {
   const std::string dir = test::fresh_dir("plugin_crash");
   const std::string c = test::write_case(dir, "fall.toml", kFallCase);

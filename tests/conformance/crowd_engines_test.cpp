@@ -49,7 +49,7 @@ TEST_P(CrowdEngines, EveryBallStaysInTheBoxAndThePlane) {
   ASSERT_EQ(scene.dims, 2);
   const Found found = find_backend(scene, GetParam());
   const Backend* backend = found.backend;
-  if (backend == nullptr) GTEST_SKIP() << GetParam() << " is not built";
+  BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   for (Feature f : scene.features().missing_from(backend->supports()))
     GTEST_SKIP() << GetParam() << " does not simulate " << feature_name(f)
                  << " (its description says so)";

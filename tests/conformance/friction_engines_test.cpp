@@ -127,7 +127,7 @@ std::vector<int> dims_of(const std::string& name) {
 class FrictionEngines : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
-    if (engine(GetParam()) == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+    BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
     if (!test::described_with(GetParam(), Feature::Friction))
       GTEST_SKIP() << GetParam() << " does not simulate friction (its description says so)";
   }
@@ -257,7 +257,7 @@ INSTANTIATE_TEST_SUITE_P(Engines, FrictionEngines, ::testing::ValuesIn(test::rig
 TEST(BulletFriction, ABoxSlidesOnItsFaceWithoutSinking) {
   for (const char* name : {"bullet", "bullet-float"}) {
     const Backend* bullet = engine(name);
-    if (bullet == nullptr) GTEST_SKIP() << name << " was not built";
+    BB_SKIP_IF_MISSING(test::not_built({name}));
     for (int dims : {2, 3}) {
       const Motion m = run(*bullet, test::scene_from(box_case(dims, 0.0, {kV0, 0, 0}, 2.0)));
       std::printf("%s %dD: lowest centre %.5f m, largest tilt %.3f degrees\n", name, dims, m.lowest,
@@ -273,7 +273,7 @@ TEST(BulletFriction, ABoxSlidesOnItsFaceWithoutSinking) {
 // Spheres get no multipoint iterations: Bullet's own default is recorded.
 TEST(BulletFriction, ASphereKeepsBulletsDefaultContactQuery) {
   const Backend* bullet = engine("bullet");
-  if (bullet == nullptr) GTEST_SKIP() << "bullet was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet"}));
   const Scene scene = test::scene_from(test::dropped_ball(
       "0.1", "0.0166666666666666667", "0.0166666666666666667", "0.0166666666666666667"));
   const Settings s = bullet->start(scene, kDt)->settings();
@@ -286,7 +286,7 @@ TEST(BulletFriction, ASphereKeepsBulletsDefaultContactQuery) {
 // its face would touch, within 1 mm. Placed touching, it is pushed up there.
 TEST(Box2dFriction, ABoxRestsOnThePolygonSkin) {
   const Backend* box2d = engine("box2d");
-  if (box2d == nullptr) GTEST_SKIP() << "box2d was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"box2d"}));
   const Motion m = run(*box2d, test::scene_from(box_case(2, 0.0, Vec3::Zero(), 1.0)));
   const double skin = number_setting(m.settings, "polygon_skin_m");
   const double expected = kHalf + 2.0 * skin - 0.005;

@@ -94,7 +94,7 @@ RunRecord run_case(const Backend& backend, const Scene& scene) {
 class HingeEngines : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
-    if (engine(GetParam()) == nullptr) GTEST_SKIP() << GetParam() << " was not built";
+    BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
     if (!test::described_with(GetParam(), Feature::Hinge))
       GTEST_SKIP() << GetParam() << " does not simulate hinges (its description says so)";
   }
@@ -155,7 +155,7 @@ TEST_P(HingeEngines, StruckPlankTurnsAboutItsAnchor) {
 // form to rounding: the 8.6e-4 above is the CFM's softness.
 TEST(OdeHinge, RigidWithoutCfm) {
   const Backend* ode = engine("ode");
-  if (ode == nullptr) GTEST_SKIP() << "ode was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"ode"}));
   const Scene scene = test::scene_from(struck_plank(1.25, "[engines.ode]\ncfm = 0.0\n"));
   const RunRecord run = run_case(*ode, scene);
   ASSERT_GE(run.trajectory.states.size(), 2u);

@@ -140,9 +140,7 @@ Spin run_spinning_box(const Backend& backend, const std::string& engine_keys = "
 
 class RotationEngines : public ::testing::TestWithParam<std::string> {
  protected:
-  void SetUp() override {
-    if (engine(GetParam()) == nullptr) GTEST_SKIP() << GetParam() << " was not built";
-  }
+  void SetUp() override { BB_SKIP_IF_MISSING(test::not_built({GetParam()})); }
   const Backend& backend() const { return *engine(GetParam()); }
   Spin run(const std::string& engine_keys, Settings* settings = nullptr) const {
     return run_spinning_box(backend(), engine_keys, settings);
@@ -200,7 +198,7 @@ TEST_P(BulletRotation, FlipsAsOftenAsTheReferenceWhileSpinningDown) {
 // middle axis wobbling about perpendicular to L, each wobble a sign change.
 TEST(OdeRotation, StartsToTurnOverThenSpinsAboutTheMajorAxis) {
   const Backend* ode = engine("ode");
-  if (ode == nullptr) GTEST_SKIP() << "ode was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"ode"}));
   const Spin s = run_spinning_box(*ode);
   print_spin("ode", s);
   EXPECT_EQ(s.flips, 0);
@@ -215,7 +213,7 @@ TEST(OdeRotation, StartsToTurnOverThenSpinsAboutTheMajorAxis) {
 // to 4): still 6% of the energy goes and |L| grows 3%, the box off the separatrix.
 TEST(OdeRotation, FlipsAtTheFinestStep) {
   const Backend* ode = engine("ode");
-  if (ode == nullptr) GTEST_SKIP() << "ode was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"ode"}));
   const Scene scene = spinning_box();
   const RunRecord run = run_accuracy(*ode, scene, scene.dt.back());
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;
@@ -244,7 +242,7 @@ TEST(FinalAngleOnEngines, EveryEngineKeepsEveryTurn) {
     ASSERT_TRUE(angle) << name;
     EXPECT_NEAR(*angle, expected, 0.02 * std::abs(expected)) << name;
   }
-  if (engines == 0) GTEST_SKIP() << "no engine was built";
+  BB_SKIP_IF_MISSING(engines == 0 ? "no engine was built" : "");
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, RotationEngines,

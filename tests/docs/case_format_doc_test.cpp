@@ -200,9 +200,9 @@ TEST(CaseFormatDoc, EachEngineTableNamesItsBackendsAndNoSupportedFeatureAsMissin
     SCOPED_TRACE(e.engine);
     const std::string prose = engine_section_prose(doc, e.engine);
     ASSERT_FALSE(prose.empty()) << "no section `[engines." << e.engine << "]`";
-    for (const std::string& backend : e.backends)
-      EXPECT_NE(prose.find("`" + backend + "`"), std::string::npos)
-          << "the section does not name backend `" << backend << "`";
+    for (const EngineVariant& v : e.variants)
+      EXPECT_NE(prose.find("`" + v.name + "`"), std::string::npos)
+          << "the section does not name backend `" << v.name << "`";
     // A paragraph that calls something unsupported may name only features that some backend
     // of the engine lacks ("body-contact" written "body contact").
     std::string words = prose;
@@ -212,8 +212,7 @@ TEST(CaseFormatDoc, EachEngineTableNamesItsBackendsAndNoSupportedFeatureAsMissin
       std::string name = feature_name(f);
       std::replace(name.begin(), name.end(), '-', ' ');
       bool all_support = true;
-      for (const std::string& backend : e.backends)
-        all_support = all_support && e.supports.count(backend) && e.supports.at(backend).has(f);
+      for (const EngineVariant& v : e.variants) all_support = all_support && v.supports.has(f);
       EXPECT_FALSE(all_support && words.find(name) != std::string::npos)
           << "the section calls '" << name << "' unsupported, and every backend of " << e.engine
           << " supports it";

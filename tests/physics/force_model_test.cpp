@@ -228,7 +228,7 @@ stiffness = 10.0
 rest_length = 1.0
 )");
   const Backend* soft = test::engine("bullet-softbody");
-  if (soft == nullptr) GTEST_SKIP() << "bullet-softbody was not built";
+  BB_SKIP_IF_MISSING(test::not_built({"bullet-softbody"}));
   const std::vector<Feature> missing = scene.features().missing_from(soft->supports());
   ASSERT_EQ(missing.size(), 1u);
   EXPECT_EQ(feature_name(missing[0]), "applied-force");

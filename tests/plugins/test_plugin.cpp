@@ -1,8 +1,8 @@
 // Backend plugins the loader's tests build beside the program (tests/CMakeLists.txt), one
 // source compiled several ways: a working one, one that crashes as a run starts or at a
-// step, one built against another interface version, one without the version symbol, and
-// one whose backend takes a built-in backend's name. Its motion is gravity's closed form,
-// so a working one's rows agree with the reference.
+// step, one built against another interface version, one without the version symbol, one
+// whose backend takes a built-in backend's name, and one of two backends (BB_TEST_SECOND). Its
+// motion is gravity's closed form, so a working one's rows agree with the reference.
 #include <csignal>
 
 #include "scene/plugin_api.hpp"
@@ -46,10 +46,17 @@ class Falling : public bb::Simulation {
   long steps_ = 0;
 };
 
-bb::Backend* make_backend() {
+bb::Backend* make_backend(const char* name = BB_TEST_NAME) {
   return bb::DeclaredBackend::of<Falling>(
-      {BB_TEST_NAME, {bb::Feature::ThreeD, bb::Feature::Gravity}, {}, {"test", "0"}});
+      {name, {bb::Feature::ThreeD, bb::Feature::Gravity}, {}, {"test", "0"}});
 }
+
+#ifdef BB_TEST_SECOND
+/// The plugin's backends: the same fall under two names.
+bb::Backend* make_backends(int index) {
+  return index == 0 ? make_backend() : index == 1 ? make_backend(BB_TEST_SECOND) : nullptr;
+}
+#endif
 
 }  // namespace
 
@@ -58,14 +65,16 @@ bb::Backend* make_backend() {
 extern "C" int beachball_plugin_interface_version() {
   return BB_TEST_VERSION;
 }
-extern "C" bb::Backend* beachball_create_backend() {
-  return make_backend();
+extern "C" bb::Backend* beachball_create_backend(int index) {
+  return index == 0 ? make_backend() : nullptr;
 }
 #elif defined(BB_TEST_NO_VERSION)
 // Built before the interface had a version: the entry point alone.
-extern "C" bb::Backend* beachball_create_backend() {
-  return make_backend();
+extern "C" bb::Backend* beachball_create_backend(int index) {
+  return index == 0 ? make_backend() : nullptr;
 }
+#elif defined(BB_TEST_SECOND)
+BEACHBALL_PLUGIN_BACKENDS(make_backends)
 #else
 BEACHBALL_PLUGIN(make_backend())
 #endif

@@ -90,6 +90,17 @@ TEST(BackendStyle, EveryBackendTheCourseAndTheEnginesNameHasANamedColour) {
   }
 }
 
+// An engine's colours are in its description, in one place with the rest of what it says.
+TEST(BackendStyle, AnEngineBackendsColourIsTheOneItsDescriptionGives) {
+  int engines = 0;
+  for (const EngineDescription& e : engine_catalogue())
+    for (const EngineVariant& v : e.variants) {
+      EXPECT_EQ(backend_style(v.name).colour, v.colour) << v.name;
+      ++engines;
+    }
+  EXPECT_GT(engines, 0);
+}
+
 TEST(BackendStyle, EveryTwoBackendsThatCanShareAPlotAreFarApartInColour) {
   int pairs = 0;
   for (const auto& [what, names] : plot_sets()) {

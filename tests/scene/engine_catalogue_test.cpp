@@ -19,8 +19,13 @@ TEST(EngineCatalogue, EveryEngineDescribesItsBackendsAndKeys) {
   std::set<std::string> backends;
   ASSERT_GE(engine_catalogue().size(), 3u);
   for (const EngineDescription& e : engine_catalogue()) {
-    EXPECT_FALSE(e.backends.empty()) << e.engine;
-    for (const std::string& b : e.backends) EXPECT_TRUE(backends.insert(b).second) << b;
+    EXPECT_FALSE(e.variants.empty()) << e.engine;
+    for (const EngineVariant& v : e.variants) {
+      EXPECT_TRUE(backends.insert(v.name).second) << v.name;
+      // Its colour, "#rrggbb": every built-in backend has one of its own.
+      EXPECT_EQ(v.colour.size(), 7u) << v.name;
+      EXPECT_EQ(v.colour.find_first_not_of("#0123456789abcdef"), std::string::npos) << v.name;
+    }
     std::set<std::string> keys;
     for (const EngineKey& k : e.keys) {
       EXPECT_EQ(k.engine, e.engine);

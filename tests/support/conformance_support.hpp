@@ -1,6 +1,7 @@
 // The backends a property of motion is checked on (tests/conformance/): the reference, every
 // course integrator and every engine backend of the catalogue, each run on a scene or
-// skipped with the reason (its description lacks a feature, its plugin was not built).
+// skipped with the reason (its description lacks a feature; its plugin was not built, which
+// fails where BEACHBALL_REQUIRE_ALL is set).
 #pragma once
 
 #include <algorithm>
@@ -44,7 +45,10 @@ inline std::optional<RunRecord> run_backend(const std::string& name, const Scene
   const auto found = std::find_if(set.all.begin(), set.all.end(),
                                   [&](const Backend* b) { return b->name() == name; });
   if (found == set.all.end()) {
-    skipped = name + " was not built on this machine";
+    // Skipped by the caller; where everything is required (CI), a failure first.
+    skipped = not_built({name});
+    if (everything_required())
+      ADD_FAILURE() << skipped << " (BEACHBALL_REQUIRE_ALL is set: nothing may be missing)";
     return std::nullopt;
   }
   return run_accuracy(**found, scene, dt);

@@ -13,6 +13,7 @@
 #include "run/engine_catalogue.hpp"
 #include "run/registry.hpp"
 #include "scene/engine_catalogue.hpp"
+#include "support/missing.hpp"
 
 namespace bb::test {
 
@@ -29,10 +30,27 @@ inline const Backend* engine(const std::string& name) {
   return nullptr;
 }
 
+/// "" when every backend of `names` was built here; else which were not and why, as the
+/// registry says (for BB_SKIP_IF_MISSING).
+inline std::string not_built(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string& name = names[i];
+    const bool named_before =
+        std::find(names.begin(), names.begin() + i, name) != names.begin() + i;
+    if (engine(name) != nullptr || named_before) continue;
+    std::string why = "no plugin in " + plugin_folder();
+    for (const Registry::Missing& missing : registry().missing_engines())
+      if (missing.name == name) why = missing.why;
+    out += (out.empty() ? "" : "; ") + name + " was not built (" + why + ")";
+  }
+  return out;
+}
+
 /// The description of the engine that provides backend `name` (nullptr for none).
 inline const EngineDescription* description_of(const std::string& name) {
   for (const EngineDescription& d : engine_catalogue())
-    if (std::find(d.backends.begin(), d.backends.end(), name) != d.backends.end()) return &d;
+    if (find_variant(d, name) != nullptr) return &d;
   return nullptr;
 }
 
@@ -43,12 +61,9 @@ inline const EngineDescription* description_of(const std::string& name) {
 inline std::vector<std::string> rigid_engines() {
   std::vector<std::string> out;
   for (const EngineDescription& d : engine_catalogue())
-    for (const std::string& b : d.backends) {
-      const auto supports = d.supports.find(b);
-      if (d.has_adapter && !d.needs.count(b) && supports != d.supports.end() &&
-          supports->second.has(Feature::Rotation))
-        out.push_back(b);
-    }
+    for (const EngineVariant& v : d.variants)
+      if (d.has_adapter && v.needs == FeatureSet{} && v.supports.has(Feature::Rotation))
+        out.push_back(v.name);
   return out;
 }
 
@@ -56,22 +71,27 @@ inline std::vector<std::string> rigid_engines() {
 inline std::vector<std::string> rigid_engines_with(Feature feature) {
   std::vector<std::string> out;
   for (const std::string& b : rigid_engines())
-    if (description_of(b)->supports.at(b).has(feature)) out.push_back(b);
+    if (description_supports(*description_of(b), b).has(feature)) out.push_back(b);
   return out;
 }
 
 /// Whether backend `name`'s description says it simulates `feature`.
 inline bool described_with(const std::string& name, Feature feature) {
   const EngineDescription* d = description_of(name);
-  return d != nullptr && d->supports.count(name) && d->supports.at(name).has(feature);
+  return d != nullptr && description_supports(*d, name).has(feature);
+}
+
+/// Whether `name` is an engine backend the catalogue describes whose plugin is not here: a
+/// row of it says "not built" rather than running.
+inline bool described_but_not_built(const std::string& name) {
+  return description_of(name) != nullptr && engine(name) == nullptr;
 }
 
 /// The engines built a second way with their springs added by hand (`<engine>/force`).
 inline std::vector<std::string> engines_with_force_build() {
   std::vector<std::string> out;
   for (const std::string& b : rigid_engines()) {
-    const std::vector<std::string>& all = description_of(b)->backends;
-    if (std::find(all.begin(), all.end(), b + "/force") != all.end()) out.push_back(b);
+    if (find_variant(*description_of(b), b + "/force") != nullptr) out.push_back(b);
   }
   return out;
 }
@@ -79,8 +99,7 @@ inline std::vector<std::string> engines_with_force_build() {
 /// Whether backend `name` computes in single precision, by its description.
 inline bool single_precision(const std::string& name) {
   const EngineDescription* d = description_of(name);
-  return d != nullptr && std::find(d->single_precision.begin(), d->single_precision.end(), name) !=
-                             d->single_precision.end();
+  return d != nullptr && find_variant(*d, name)->single_precision;
 }
 
 /// A backend name as a test name: "bullet-float" as "bullet_float", "box2d/force" as
@@ -95,9 +114,7 @@ inline std::string test_name(std::string name) {
 /// semi-implicit Euler).
 inline std::string staged_step(const std::string& name) {
   const EngineDescription* d = description_of(name);
-  if (d == nullptr) return "";
-  const auto found = d->staged_steps.find(name);
-  return found == d->staged_steps.end() ? "" : found->second;
+  return d == nullptr ? "" : find_variant(*d, name)->staged_step;
 }
 
 /// A parameterised test's name from its backend-name parameter (see test_name).
