@@ -2,10 +2,12 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <numeric>
 #include <stdexcept>
 #include <system_error>
 
@@ -97,6 +99,18 @@ bool measures_the_others(const RunRecord& finest) {
 
 std::string label(const std::string& backend, std::optional<double> dt) {
   return dt ? backend + " at dt " + format_dt(*dt) : backend;
+}
+
+/// The jobs' indices in the order they are handed to the pool: the smallest dt first (the
+/// most steps, the longest runs), in the jobs' order among equals. The last to start are
+/// the shortest, so a case's runs do not end with one core waiting on a long run the other
+/// could have shared. Each run's slot stays its job's: the order changes no result.
+std::vector<std::size_t> longest_first(const std::vector<AccuracyJob>& jobs) {
+  std::vector<std::size_t> order(jobs.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return jobs[a].dt < jobs[b].dt; });
+  return order;
 }
 
 /// What a child does with its run before sending it back (nothing: it comes back whole).
@@ -205,7 +219,7 @@ class AccuracySchedule {
       return;
     }
     // Every child measures its run against the reference it inherits at fork.
-    for (std::size_t i = 0; i < jobs_.size(); ++i)
+    for (std::size_t i : longest_first(jobs_))
       job(
           i, [this](RunRecord& run) { summarise_in_child(scene_, run, out_.reference); }, nullptr,
           key_of(*jobs_[i].backend, jobs_[i].dt, "accuracy"), true);
