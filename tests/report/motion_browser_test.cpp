@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "support/missing.hpp"
 #include "support/picture_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -77,9 +78,9 @@ fixed = true
 
 TEST(MotionBrowser, TheViewMovesInChromiumWhereTheBallIsAndNowhereElse) {
   const std::string browser = chromium();
-  if (browser.empty())
-    GTEST_SKIP() << "Chromium is not installed (scripts/setup --tests installs it)";
-  if (const std::string why = test::why_no_pictures(); !why.empty()) GTEST_SKIP() << why;
+  BB_SKIP_IF_MISSING(
+      browser.empty() ? "Chromium is not installed (scripts/setup --tests installs it)" : "");
+  BB_SKIP_IF_MISSING(test::why_no_pictures());
   const std::string dir = test::fresh_dir("motion_browser");
   const std::string path = test::write_case(dir, "bounce.toml", kBounce);
   const test::Outcome o = test::beachball(
@@ -100,7 +101,7 @@ TEST(MotionBrowser, TheViewMovesInChromiumWhereTheBallIsAndNowhereElse) {
 }
 
 TEST(MotionBrowser, RsvgRendersTheStill) {
-  if (const std::string why = test::why_no_pictures(); !why.empty()) GTEST_SKIP() << why;
+  BB_SKIP_IF_MISSING(test::why_no_pictures());
   const std::string dir = test::fresh_dir("motion_still");
   const std::string path = test::write_case(dir, "bounce.toml", kBounce);
   ASSERT_EQ(test::beachball("run " + path + " --no-cost --backends reference --out " + dir + "/out")

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "support/missing.hpp"
 #include "support/picture_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -34,7 +35,7 @@ std::string text_of(const fs::path& path) {
 }
 
 TEST(PlotEdges, NoPlotDrawsAtTheEdgeOfItsPicture) {
-  if (const std::string why = test::why_no_pictures(); !why.empty()) GTEST_SKIP() << why;
+  BB_SKIP_IF_MISSING(test::why_no_pictures());
   const std::string dir = test::fresh_dir("plot_edges");
   // Long backend names (the friction variants) and two-column plots: the cases whose labels
   // were cut at the picture's edge; the energy plot of a case whose many exploding runs

@@ -12,6 +12,7 @@
 
 #include "files/file_batch.hpp"
 #include "report/gnuplot.hpp"
+#include "support/missing.hpp"
 #include "support/picture_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -295,7 +296,8 @@ TEST(Plots, AnExplodingRunIsCutAtTheTrajectoryAxesAndNamed) {
 // A drawing is kept with the results: the same script and data are not drawn again (gnuplot
 // out of reach, the kept SVG is written all the same), other data or --fresh draws anew.
 TEST(KeptDrawings, TheSameScriptAndDataAreNotDrawnAgain) {
-  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  BB_SKIP_IF_MISSING(
+      gnuplot_available() ? "" : "gnuplot is not installed (scripts/setup installs gnuplot-nox)");
   const std::string dir = test::fresh_dir("kept_drawings");
   const ResultCache cache(dir + "/cache", 1 << 20);
   const std::string script = "plot data using 1:2 with lines\n", data = "0 0\n1 1\n";

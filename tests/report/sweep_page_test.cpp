@@ -10,6 +10,7 @@
 #include <string>
 
 #include "report/gnuplot.hpp"
+#include "support/missing.hpp"
 #include "support/picture_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
@@ -94,7 +95,8 @@ std::vector<double> tics(const std::string& svg, const test::Box& panel, bool bo
 // started at the first), and one backend far off the reference's scale (490 beside values
 // of 1 to 5) is cut at the panel's edge and named, so the others' curves stay readable.
 TEST(SweepPlot, PanelsSpanTheWholeSweepAndAnOutlierIsCutAndNamed) {
-  if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+  BB_SKIP_IF_MISSING(
+      gnuplot_available() ? "" : "gnuplot is not installed (scripts/setup installs gnuplot-nox)");
   static Scene scene;
   scene = test::scene_from(test::minimal_case("swept") + R"(
 [[observe]]

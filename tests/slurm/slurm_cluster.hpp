@@ -26,6 +26,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/missing.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 
@@ -226,8 +227,9 @@ class SlurmCluster : public ::testing::Test {
       programs_[name] = find_program(name);
       if (programs_[name].empty()) missing += std::string(" ") + name;
     }
-    if (!missing.empty())
-      GTEST_SKIP() << "no" << missing << " in PATH or /usr/sbin: install Debian's slurm-wlm";
+    BB_SKIP_IF_MISSING(missing.empty()
+                           ? ""
+                           : "no" + missing + " in PATH or /usr/sbin: install Debian's slurm-wlm");
 
     // A folder of our own: mkdtemp makes it 0700, but munged wants every folder above its
     // socket open to all (execute), and none writable by others.

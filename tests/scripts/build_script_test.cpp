@@ -1,0 +1,67 @@
+// scripts/build configures again whenever what the last configure saw has changed: other
+// options (BEACHBALL_CMAKE_ARGS, another preset), a package installed since (libpng-dev for
+// the tests, after scripts/report configured without it), a folder of another generator.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "support/script_sandbox.hpp"
+
+namespace bb {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(BuildScript, ConfiguresOnceThenAgainWhenTheOptionsChange) {
+  const test::ScriptSandbox box("build_script_options");
+  ASSERT_EQ(box.run("scripts/build", "BEACHBALL_CMAKE_ARGS=-DX=1").exit_code, 0);
+  ASSERT_EQ(box.run("scripts/build", "BEACHBALL_CMAKE_ARGS=-DX=1").exit_code, 0);
+  EXPECT_EQ(box.configures().size(), 1u) << "the same options twice configure once";
+  const test::Outcome changed = box.run("scripts/build", "BEACHBALL_CMAKE_ARGS=-DX=2");
+  ASSERT_EQ(changed.exit_code, 0) << changed.out;
+  ASSERT_EQ(box.configures().size(), 2u) << changed.out;
+  EXPECT_NE(box.configures().back().find("-DX=2"), std::string::npos) << box.configures().back();
+  // Every run builds, with the preset the configure used.
+  int builds = 0;
+  for (const std::string& call : box.calls()) builds += call == "cmake --build --preset default";
+  EXPECT_EQ(builds, 3);
+}
+
+TEST(BuildScript, ConfiguresAgainWhenAPackageWasInstalledSince) {
+  const test::ScriptSandbox box("build_script_packages");
+  const auto now = fs::file_time_type::clock::now();
+  fs::last_write_time(box.root() + "/dpkg-status", now - std::chrono::seconds(120));
+  ASSERT_EQ(box.run("scripts/build").exit_code, 0);
+  ASSERT_EQ(box.run("scripts/build").exit_code, 0);
+  EXPECT_EQ(box.configures().size(), 1u);
+  // The last configure a minute ago; a package installed since.
+  fs::last_write_time(box.root() + "/build/beachball-configure.txt",
+                      now - std::chrono::seconds(60));
+  fs::last_write_time(box.root() + "/dpkg-status", now - std::chrono::seconds(30));
+  const test::Outcome after = box.run("scripts/build");
+  ASSERT_EQ(after.exit_code, 0) << after.out;
+  EXPECT_EQ(box.configures().size(), 2u) << after.out;
+  EXPECT_NE(after.out.find("packages changed"), std::string::npos) << after.out;
+}
+
+TEST(BuildScript, AFolderMadeWithMakefilesIsConfiguredForNinja) {
+  const test::ScriptSandbox box("build_script_generator");
+  ASSERT_EQ(box.run("scripts/build").exit_code, 0);
+  std::ofstream(box.root() + "/build/CMakeCache.txt")
+      << "CMAKE_GENERATOR:INTERNAL=Unix Makefiles\n";
+  fs::create_directories(box.root() + "/build/CMakeFiles");
+  const test::Outcome after = box.run("scripts/build");
+  ASSERT_EQ(after.exit_code, 0) << after.out;
+  EXPECT_EQ(box.configures().size(), 2u) << after.out;
+  EXPECT_FALSE(fs::exists(box.root() + "/build/CMakeFiles"));
+}
+
+TEST(BuildScript, BuildsTheTargetsItIsGiven) {
+  const test::ScriptSandbox box("build_script_targets");
+  ASSERT_EQ(box.run("scripts/build program").exit_code, 0);
+  EXPECT_EQ(box.calls().back(), "cmake --build --preset default --target program");
+}
+
+}  // namespace
+}  // namespace bb
