@@ -124,6 +124,10 @@ class StepObserver {
   /// `closing` (m/s) without stopping: a contact seen only as a push
   /// (BodyEvents::unresolved_contact).
   void note_unresolved(std::size_t k, double t, double closing);
+  /// Pair k hit at time t along `normal` (from b to a): each moving body's contact time, its
+  /// first post-contact normal, and the episode opened (or kept) and written.
+  void record_hit(std::size_t k, double t, const State& s, const Eigen::Vector3d& normal,
+                  bool b_moves);
   /// Gravity's angular impulse (N m s) about the origin on bodies a and b over the step of
   /// dt seconds that ended in `s`, at the mid positions.
   Vec3 gravity_turn(const State& s, int a, int b, double dt) const;

@@ -127,28 +127,33 @@ void StepObserver::observe_contacts(double t, double dt, const State& s) {
         ep.gravity_turn += gravity_turn(s, pair.a, pair.b, dt);
       }
     }
-    if (hit) {
-      for (int body : {pair.a, b_moves ? pair.b : -1}) {
-        if (body < 0) continue;
-        BodyEvents& e = trace_.bodies[body];
-        e.contact_times.push_back(t);
-        // The normal points from the second shape to the first: away from b for a.
-        if (!e.post_velocity) {
-          e.post_normal = body == pair.a ? Vec3(p.normal) : Vec3(-p.normal);
-          post_owner_[body] = static_cast<int>(k);
-        }
-        bounced_[body] = true;
-      }
-      if (b_moves && !trace_.first_collision) ep.balances = balance_open_ = true;
-      if (!ep.open) {
-        ep.open = true;
-        ep.event_time = t;
-      }
-      write_episode(k, t, s);
-    }
+    if (hit) record_hit(k, t, s, p.normal, b_moves);
     closing_[k] = closing;
     normals_[k] = p.normal;
   }
+}
+
+void StepObserver::record_hit(std::size_t k, double t, const State& s,
+                              const Eigen::Vector3d& normal, bool b_moves) {
+  const ContactPair& pair = pairs_[k];
+  Episode& ep = episodes_[k];
+  for (int body : {pair.a, b_moves ? pair.b : -1}) {
+    if (body < 0) continue;
+    BodyEvents& e = trace_.bodies[body];
+    e.contact_times.push_back(t);
+    // The normal points from the second shape to the first: away from b for a.
+    if (!e.post_velocity) {
+      e.post_normal = body == pair.a ? Vec3(normal) : Vec3(-normal);
+      post_owner_[body] = static_cast<int>(k);
+    }
+    bounced_[body] = true;
+  }
+  if (b_moves && !trace_.first_collision) ep.balances = balance_open_ = true;
+  if (!ep.open) {
+    ep.open = true;
+    ep.event_time = t;
+  }
+  write_episode(k, t, s);
 }
 
 void StepObserver::note_unresolved(std::size_t k, double t, double closing) {
