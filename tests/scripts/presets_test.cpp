@@ -21,12 +21,14 @@ json presets() {
 
 /// A configure preset's cache variables and generator, its parents' included.
 json resolved(const json& all, const std::string& name) {
-  for (const json& p : all["configurePresets"]) {
-    if (p["name"] != name) continue;
-    json out = p.contains("inherits") ? resolved(all, p["inherits"]) : json::object();
-    if (p.contains("generator")) out["generator"] = p["generator"];
-    for (const auto& [key, value] : p.value("cacheVariables", json::object()).items())
-      out["cacheVariables"][key] = value;
+  for (const json& p : all.at("configurePresets")) {
+    if (p.at("name").get<std::string>() != name) continue;
+    json out = json::object();
+    if (p.contains("inherits")) out = resolved(all, p.at("inherits").get<std::string>());
+    if (p.contains("generator")) out["generator"] = p.at("generator");
+    if (p.contains("cacheVariables"))
+      for (const auto& [key, value] : p.at("cacheVariables").items())
+        out["cacheVariables"][key] = value;
     return out;
   }
   ADD_FAILURE() << "no configure preset " << name;
@@ -34,9 +36,10 @@ json resolved(const json& all, const std::string& name) {
 }
 
 bool warnings_are_errors(const json& preset) {
-  const json vars = preset.value("cacheVariables", json::object());
-  return vars.value("BEACHBALL_WERROR", "OFF") == "ON" ||
-         vars.value("CMAKE_CXX_FLAGS", "").find("-Werror") != std::string::npos;
+  if (!preset.contains("cacheVariables")) return false;
+  const json& vars = preset.at("cacheVariables");
+  return vars.value("BEACHBALL_WERROR", std::string("OFF")) == "ON" ||
+         vars.value("CMAKE_CXX_FLAGS", std::string()).find("-Werror") != std::string::npos;
 }
 
 TEST(Presets, WarningsAreErrorsInCiAndTheDevPresetNotInTheDefault) {
@@ -53,13 +56,16 @@ TEST(Presets, WarningsAreErrorsInCiAndTheDevPresetNotInTheDefault) {
   EXPECT_NE(cmake.find("$<$<BOOL:${BEACHBALL_WERROR}>:-Werror>"), std::string::npos);
   const std::size_t option = cmake.find("option(BEACHBALL_WERROR");
   ASSERT_NE(option, std::string::npos);
-  EXPECT_EQ(cmake.substr(cmake.find(')', option) - 3, 3), "OFF");
+  const std::size_t end = cmake.find(")\n", option);
+  EXPECT_EQ(cmake.substr(end - 3, 3), "OFF") << cmake.substr(option, end - option);
 }
 
 TEST(Presets, EveryPresetUsesNinja) {
   const json all = presets();
-  for (const json& p : all["configurePresets"])
-    EXPECT_EQ(resolved(all, p["name"]).value("generator", ""), "Ninja") << p["name"];
+  for (const json& p : all.at("configurePresets")) {
+    const std::string name = p.at("name").get<std::string>();
+    EXPECT_EQ(resolved(all, name).value("generator", ""), "Ninja") << name;
+  }
 }
 
 }  // namespace
