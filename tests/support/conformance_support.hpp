@@ -44,6 +44,10 @@ inline std::optional<RunRecord> run_backend(const std::string& name, const Scene
   const BackendSet set = backends_for(scene, registry());
   const auto found = std::find_if(set.all.begin(), set.all.end(),
                                   [&](const Backend* b) { return b->name() == name; });
+  if (found == set.all.end() && !described_but_not_built(name)) {
+    skipped = name + " is not among this scene's backends";
+    return std::nullopt;
+  }
   if (found == set.all.end()) {
     // Skipped by the caller; where everything is required (CI), a failure first.
     skipped = not_built({name});

@@ -37,11 +37,13 @@ class ScriptSandbox {
     std::ofstream(root_ + "/dpkg-status") << "";
   }
 
-  /// Runs `command` (a script, with its arguments) from the sandbox's root, `env` before it.
+  /// Runs `command` (a script, with its arguments) from the sandbox's root, `env` before it;
+  /// the preset and options of the environment the tests run in (CI sets them) are not passed on.
   Outcome run(const std::string& command, const std::string& env = "") const {
-    return shell("cd " + root_ + " && CALLS=" + root_ + "/calls.log PATH=" + root_ +
-                 "/stand-ins:$PATH BEACHBALL_DPKG_STATUS=" + root_ + "/dpkg-status " + env +
-                 " bash " + command);
+    return shell("cd " + root_ +
+                 " && unset BEACHBALL_PRESET BEACHBALL_CMAKE_ARGS && CALLS=" + root_ +
+                 "/calls.log PATH=" + root_ + "/stand-ins:$PATH BEACHBALL_DPKG_STATUS=" + root_ +
+                 "/dpkg-status " + env + " bash " + command);
   }
 
   /// Every call to a stand-in so far, one line each; `clear` forgets them.
