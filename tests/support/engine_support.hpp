@@ -30,7 +30,15 @@ inline const Backend* engine(const std::string& name) {
   return nullptr;
 }
 
-/// "" when every backend of `names` was built here; else which were not and why, as the
+/// The description of the engine that provides backend `name` (nullptr for none).
+inline const EngineDescription* description_of(const std::string& name) {
+  for (const EngineDescription& d : engine_catalogue())
+    if (find_variant(d, name) != nullptr) return &d;
+  return nullptr;
+}
+
+/// "" when every engine backend of `names` was built here (a backend no engine describes,
+/// the reference or a course method, is part of the program); else which were not and why, as the
 /// registry says (for BB_SKIP_IF_MISSING).
 inline std::string not_built(const std::vector<std::string>& names) {
   std::string out;
@@ -38,20 +46,13 @@ inline std::string not_built(const std::vector<std::string>& names) {
     const std::string& name = names[i];
     const bool named_before =
         std::find(names.begin(), names.begin() + i, name) != names.begin() + i;
-    if (engine(name) != nullptr || named_before) continue;
+    if (engine(name) != nullptr || named_before || description_of(name) == nullptr) continue;
     std::string why = "no plugin in " + plugin_folder();
     for (const Registry::Missing& missing : registry().missing_engines())
       if (missing.name == name) why = missing.why;
     out += (out.empty() ? "" : "; ") + name + " was not built (" + why + ")";
   }
   return out;
-}
-
-/// The description of the engine that provides backend `name` (nullptr for none).
-inline const EngineDescription* description_of(const std::string& name) {
-  for (const EngineDescription& d : engine_catalogue())
-    if (find_variant(d, name) != nullptr) return &d;
-  return nullptr;
 }
 
 /// Every rigid-body engine backend the adapters describe, in the catalogue's order: each
