@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -107,10 +108,26 @@ struct ChildPool::Active {
   Clock::time_point deadline;
   std::string payload;
   std::string console;
+  Clock::time_point started;
 };
 
-void ChildPool::submit(std::string label, Work work, double timeout, Done done) {
-  queue_.push_back({std::move(label), std::move(work), timeout, std::move(done)});
+void ChildPool::submit(std::string label, Work work, double timeout, Done done, double priority) {
+  queue_.push_back({std::move(label), std::move(work), timeout, std::move(done), priority});
+}
+
+int ChildPool::free_slots() const {
+  if (!isolated_) return 0;
+  return std::max(0, parallel_ - running_ - static_cast<int>(queue_.size()));
+}
+
+ChildPool::Job ChildPool::take_next() {
+  // The first of the highest priority: max_element keeps the first of equals.
+  const auto best = std::max_element(queue_.begin(), queue_.end(), [](const Job& a, const Job& b) {
+    return a.priority < b.priority;
+  });
+  Job job = std::move(*best);
+  queue_.erase(best);
+  return job;
 }
 
 void ChildPool::run() {
@@ -124,8 +141,7 @@ void ChildPool::run_in_process() {
   while (!queue_.empty()) {
     if (interrupt_signal() != 0)
       throw Interrupted("stopped before " + queue_.front().label + kNothingWritten);
-    Job job = std::move(queue_.front());
-    queue_.pop_front();
+    Job job = take_next();
     ChildOutcome outcome;
     try {
       outcome.payload = job.work();
@@ -162,6 +178,7 @@ ChildPool::Active ChildPool::start_child(Job job) {
                                   std::chrono::duration<double>(job.timeout));
   a.job = std::move(job);
   a.pid = pid;
+  a.started = Clock::now();
   a.result_fd = result[0];
   a.console_fd = console[0];
   return a;
@@ -222,6 +239,7 @@ ChildOutcome ChildPool::finish(Active& a, bool closed) {
     }
   }
   outcome.console = std::move(a.console);
+  outcome.seconds = std::chrono::duration<double>(Clock::now() - a.started).count();
   return outcome;
 }
 
@@ -242,10 +260,9 @@ void ChildPool::run_isolated() {
       queue_.clear();
       throw Interrupted("stopped during " + what + kNothingWritten);
     }
-    while (static_cast<int>(active.size()) < parallel_ && !queue_.empty()) {
-      active.push_back(start_child(std::move(queue_.front())));
-      queue_.pop_front();
-    }
+    while (static_cast<int>(active.size()) < parallel_ && !queue_.empty())
+      active.push_back(start_child(take_next()));
+    running_ = static_cast<int>(active.size());
     read_output(active);
     // Finish every child that closed its output or ran out of time.
     for (std::size_t i = 0; i < active.size();) {
@@ -258,6 +275,7 @@ void ChildPool::run_isolated() {
       const ChildOutcome outcome = finish(a, closed);
       Done done = std::move(a.job.done);
       active.erase(active.begin() + static_cast<long>(i));
+      running_ = static_cast<int>(active.size());
       // A callback that throws (the work cannot go on) stops the other children first.
       try {
         done(outcome);

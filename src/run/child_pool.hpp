@@ -13,9 +13,10 @@ namespace bb {
 struct ChildOutcome {
   enum class Kind { Done, Crashed, Timeout };
   Kind kind = Kind::Done;
-  std::string payload;  ///< what the work returned (Done)
-  std::string reason;   ///< the signal, exit code or limit, and what the child printed
-  std::string console;  ///< everything the child wrote to stdout and stderr
+  std::string payload;   ///< what the work returned (Done)
+  std::string reason;    ///< the signal, exit code or limit, and what the child printed
+  std::string console;   ///< everything the child wrote to stdout and stderr
+  double seconds = 0.0;  ///< wall time from the fork to the child's end (0 in this process)
 };
 
 /// Memory a child may map beyond what it inherits at fork, before allocations fail (not
@@ -29,8 +30,12 @@ class ChildPool {
       : parallel_(parallel < 1 ? 1 : parallel), isolated_(isolated) {}
   using Work = std::function<std::string()>;
   using Done = std::function<void(const ChildOutcome&)>;
-  /// `label` names the piece if it must be stopped; `timeout` is in seconds.
-  void submit(std::string label, Work work, double timeout, Done done);
+  /// `label` names the piece if it must be stopped; `timeout` is in seconds. A free slot
+  /// takes the queued piece of the highest `priority`, the first submitted among equals.
+  void submit(std::string label, Work work, double timeout, Done done, double priority = 0.0);
+  /// Children that could start now with nothing queued for them (0 when not isolated: in
+  /// this process pieces run one after another).
+  int free_slots() const;
   /// Runs until every piece is done; throws Interrupted on a stop signal (interrupt.hpp).
   void run();
 
@@ -40,6 +45,7 @@ class ChildPool {
     Work work;
     double timeout;
     Done done;
+    double priority;
   };
   struct Active;
   void run_in_process();
@@ -50,10 +56,13 @@ class ChildPool {
   static void read_output(std::vector<Active>& active);
   /// The outcome of a child that closed its output (`closed`) or ran out of time.
   static ChildOutcome finish(Active& a, bool closed);
+  /// Takes the queued piece of the highest priority.
+  Job take_next();
 
   int parallel_;
   bool isolated_;
   std::deque<Job> queue_;
+  int running_ = 0;  ///< children started and not yet finished
 };
 
 }  // namespace bb
