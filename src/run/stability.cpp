@@ -9,8 +9,8 @@
 #include "metrics/energy_growth.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
-#include "run/child_pool.hpp"
 #include "run/engine_interventions.hpp"
+#include "run/stability_chains.hpp"
 #include "run/stability_watch.hpp"
 #include "run/wire.hpp"
 #include "scene/backend_names.hpp"
@@ -97,14 +97,6 @@ std::optional<StabilityResult> unsupported(const Backend& backend, const Scene& 
 
 namespace {
 
-/// The theory's limit (s) for a course variant named `backend`, where the scene has one.
-std::optional<double> theory_for(const Scene& scene, const std::string& backend) {
-  for (const CourseVariant& v : course_variants(scene))
-    if (v.name == backend)
-      if (auto limit = theoretical_limit(scene, v.integrator)) return limit->dt;
-  return std::nullopt;
-}
-
 /// The theory, where the scene allows one, beside a course variant's result.
 void add_theory(const Scene& scene, StabilityResult& r) {
   for (const CourseVariant& v : course_variants(scene))
@@ -116,15 +108,6 @@ void add_theory(const Scene& scene, StabilityResult& r) {
       }
 }
 
-/// Seconds a trial of `scene` at `dt` may take in its child: as a run's limit, for every
-/// step it may take (the usual trial and, past the theory's limit, the longer one).
-double trial_time_limit(const Scene& scene, double dt, double timeout, bool longer) {
-  if (timeout > 0.0) return timeout;
-  const double steps = static_cast<double>(StabilityWatch::trial_steps(scene, dt)) *
-                       (longer ? 1.0 + static_cast<double>(kTheoryProbeFactor) : 1.0);
-  return steps_time_limit(scene, steps);
-}
-
 /// The search's smallest step must keep its trials within the cap (the loader sees to it for
 /// every case it loads); a scene built otherwise is refused before any trial.
 void require_search_within_cap(const Scene& scene) {
@@ -134,11 +117,18 @@ void require_search_within_cap(const Scene& scene) {
 
 }  // namespace
 
+std::optional<double> theory_limit(const Scene& scene, const std::string& backend) {
+  for (const CourseVariant& v : course_variants(scene))
+    if (v.name == backend)
+      if (auto limit = theoretical_limit(scene, v.integrator)) return limit->dt;
+  return std::nullopt;
+}
+
 StabilityResult find_stability(const Backend& backend, const Scene& scene) {
   require_search_within_cap(scene);
   if (auto r = unsupported(backend, scene)) return *r;
   StabilitySearch search(scene.stability.dt_min, scene.stability.dt_max);
-  const std::optional<double> theory = theory_for(scene, backend.name());
+  const std::optional<double> theory = theory_limit(scene, backend.name());
   while (auto dt = search.next()) search.record(*dt, judge_step(backend, scene, *dt, theory));
   StabilityResult r;
   r.backend = backend.name();
@@ -166,62 +156,21 @@ std::vector<StabilityResult> find_stability_all(
         std::find(backends.begin(), backends.end(), b->name()) != backends.end())
       chosen.push_back(b);
   std::vector<StabilityResult> out(chosen.size());
-  std::vector<StabilitySearch> searches(
-      chosen.size(), StabilitySearch(scene.stability.dt_min, scene.stability.dt_max));
-  std::vector<std::optional<double>> theories;
-  for (const Backend* b : chosen) theories.push_back(theory_for(scene, b->name()));
-  ChildPool pool(jobs, isolation);
-  // Each finished trial queues the backend's next one until its search is over.
-  std::function<void(std::size_t)> queue_next = [&](std::size_t i) {
-    const Backend& b = *chosen[i];
-    if (const auto dt = searches[i].next()) {
-      const double step = *dt;
-      const std::optional<double> theory = theories[i];
-      // A trial an accuracy run already judged on its own steps is not run again (unless it
-      // is stable past the theory's limit: judge_step() then runs a longer one).
-      if (const auto found = known.find({b.name(), step});
-          found != known.end() && (!found->second.stable || !theory || step <= *theory)) {
-        searches[i].record(step, found->second);
-        queue_next(i);
-        return;
-      }
-      const std::string key = cache ? cache->key(scene, "stability trial", b, step) : "";
-      if (const auto kept = cache ? cache->find(key) : std::nullopt) {
-        searches[i].record(step, wire::decode_trial(*kept));
-        queue_next(i);
-        return;
-      }
-      pool.submit(
-          b.name() + " stability at dt " + std::to_string(step),
-          [&b, &scene, step, theory] { return wire::encode(judge_step(b, scene, step, theory)); },
-          trial_time_limit(scene, step, timeout, theory && step > *theory),
-          [&, i, step, key](const ChildOutcome& o) {
-            const StabilityTrial trial = o.kind == ChildOutcome::Kind::Done
-                                             ? wire::decode_trial(o.payload)
-                                             : StabilityTrial{false, o.reason, "failed"};
-            // A trial that did not finish (a crash, a timeout) is tried again next time.
-            if (!key.empty())
-              cache->keep(key, o.kind == ChildOutcome::Kind::Done ? o.payload : wire::encode(trial),
-                          trial.growth != "failed");
-            out[i].step_seconds += trial.step_seconds;
-            searches[i].record(step, trial);
-            queue_next(i);
-          });
-      return;
-    }
-    out[i].backend = b.name();
-    searches[i].fill(out[i]);
-    if (on_done) on_done(b.name());
-  };
+  // The backends that can be searched are searched together; the others say why not.
+  std::vector<const Backend*> searched;
+  std::vector<std::size_t> at;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     if (auto r = unsupported(*chosen[i], scene)) {
       out[i] = *r;
       if (on_done) on_done(chosen[i]->name());
       continue;
     }
-    queue_next(i);
+    searched.push_back(chosen[i]);
+    at.push_back(i);
   }
-  pool.run();
+  std::vector<StabilityResult> found =
+      StabilityChains(scene, searched, {jobs, isolation, timeout, &known, cache, on_done}).run();
+  for (std::size_t k = 0; k < found.size(); ++k) out[at[k]] = std::move(found[k]);
   for (StabilityResult& r : out) add_theory(scene, r);
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 namespace bb {
 
@@ -66,6 +67,30 @@ void StabilitySearch::record(double dt, const StabilityTrial& trial) {
   std::erase(probes_, dt);
   // Once the first bracket is narrowed, check below it.
   if (!probed_ && !needs_bottom() && !all_unstable() && !narrowing()) queue_probes();
+}
+
+std::vector<double> StabilitySearch::likely_next(int count,
+                                                 const std::function<Known(double)>& known) const {
+  std::vector<double> out;
+  // Breadth first over supposed verdicts: the nearer a step, the likelier it is asked for.
+  std::deque<std::pair<StabilitySearch, int>> open{{*this, 0}};
+  while (!open.empty() && static_cast<int>(out.size()) < count) {
+    const auto [search, depth] = std::move(open.front());
+    open.pop_front();
+    const std::optional<double> dt = search.next();
+    if (!dt) continue;
+    const Known k = known(*dt);
+    if (k == Known::Nothing && std::find(out.begin(), out.end(), *dt) == out.end())
+      out.push_back(*dt);
+    if (depth >= kLookAhead) continue;
+    for (const bool stable : {true, false}) {
+      if ((k == Known::Stable && !stable) || (k == Known::Unstable && stable)) continue;
+      StabilitySearch after = search;
+      after.record(*dt, {stable, "", stable ? "bounded" : "diverged"});
+      open.emplace_back(std::move(after), depth + 1);
+    }
+  }
+  return out;
 }
 
 void StabilitySearch::fill(StabilityResult& r) const {

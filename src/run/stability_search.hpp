@@ -3,6 +3,7 @@
 // narrowed down, so that stability that is not monotone in dt shows as bands.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,15 @@ class StabilitySearch {
   /// bracket is narrowed, the probes below the largest stable step found.
   std::optional<double> next() const;
   void record(double dt, const StabilityTrial& trial);
+  /// What is known of a step's trial, when looking ahead.
+  enum class Known { Nothing, Running, Stable, Unstable };
+  /// Steps next() may ask for after the trials known or running end, up to `count`, none
+  /// of them known or running, nearest first: each running step's verdict is supposed either
+  /// way (a known one is taken as it is), kLookAhead steps deep. Tried on cores that would
+  /// be idle, they shorten a long search without changing which trials it records.
+  std::vector<double> likely_next(int count, const std::function<Known(double)>& known) const;
+  /// How many supposed verdicts deep likely_next() looks.
+  static constexpr int kLookAhead = 3;
   /// Status, steps, bands and reasons from the trials so far.
   void fill(StabilityResult& result) const;
 
