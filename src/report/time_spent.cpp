@@ -24,9 +24,11 @@ std::vector<std::string> row(const std::string& name, const TimeSpent& t) {
 
 namespace {
 
-/// Seconds of step() calls in `run`, from its cost (0 without one).
+/// Seconds of step() calls in `run`: from its cost, or where it has none (the reference, a
+/// run that diverged) its own blocks of steps, timed between samples.
 double step_seconds(const RunRecord& run) {
-  return run.cost ? run.cost->ns_per_step * 1e-9 * static_cast<double>(run.steps) : 0.0;
+  return run.cost ? run.cost->ns_per_step * 1e-9 * static_cast<double>(run.steps)
+                  : run.step_seconds;
 }
 
 /// What the accuracy runs took: `runs` that ran in `seconds` on `jobs`, and `reused` taken
@@ -44,8 +46,10 @@ std::string accuracy_runs_text(long runs, long reused, double seconds, double st
                        jobs == 1 ? "job" : "jobs", kept);
   return fmt::format(
       "The accuracy runs: {} ran (the references and every backend at every dt), {:.1f} s on {} "
-      "{}, so {:.3f} s of a core per run on average.{} Their steps alone, from their costs, take "
-      "{:.1f} s of one core: however little else the harness did, the accuracy runs would take no "
+      "{}, so {:.3f} s of a core per run on average.{} Their steps alone (from their costs; the "
+      "references' solves, the self-check's too, and runs without a cost from their own timed "
+      "steps) take {:.1f} s of one core: however little else the harness did, the accuracy runs "
+      "would take no "
       "less than {:.1f} s with --jobs {}.\n\n",
       runs, seconds, jobs, jobs == 1 ? "job" : "jobs", seconds * jobs / static_cast<double>(runs),
       kept, steps, steps / jobs, jobs);
@@ -98,6 +102,7 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
   };
   for (const CaseResults& r : all) {
     count(r.reference_run);
+    steps += r.time_spent.self_check_steps;
     for (const RunRecord& run : r.runs) count(run);
   }
   std::vector<const CaseResults*> cases;
@@ -127,7 +132,7 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
          "writing the pages is not counted. Measured like cost, so they change from one run "
          "to the next.\n\n" +
          accuracy_runs_text(runs, reused, sum.accuracy, steps, jobs) +
-         floor_text({{"accuracy runs, from their costs", steps},
+         floor_text({{"accuracy runs, from their costs or their timed steps", steps},
                      {"the cost pass's timed steps", cost_steps},
                      {"the stability trials' step loops", stability_steps},
                      {"the sweep runs' steps", sweep_steps}},

@@ -274,6 +274,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   out.reference_run = std::move(accuracy.reference);
   out.runs = std::move(accuracy.runs);
   const RunRecord& tight = accuracy.tight;
+  if (!tight.reused) out.time_spent.self_check_steps = tight.step_seconds;
 
   record_reference(scene, reference, tight, out);
   add_missing_engines(scene, registry, options, dts, out);

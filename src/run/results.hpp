@@ -193,6 +193,9 @@ struct TimeSpent {
   /// Seconds of the cost pass's timed steps, every repeat of every run it timed: its share
   /// of the report's floor (time_spent.hpp).
   double cost_steps = 0.0;
+  /// Seconds of the reference's second solve (its self-check), timed by sample blocks like
+  /// every accuracy run; 0 when it was taken from kept results.
+  double self_check_steps = 0.0;
   double total() const { return accuracy + cost + stability + sweep; }
 };
 

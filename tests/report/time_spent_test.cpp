@@ -44,7 +44,9 @@ TEST(TimeSpent, SumsThePartsAndPutsTheSlowestCaseFirst) {
   EXPECT_LT(page.find("| slow "), page.find("| quick "));
 }
 
-// The floor: the accuracy runs' steps alone, from their costs, on the jobs that ran them.
+// The floor: the accuracy runs' steps alone, on the jobs that ran them: from their costs, or
+// their own timed steps where they have none (a run that diverged, the reference), and the
+// reference's second solve (its self-check) too.
 TEST(TimeSpent, SaysWhatTheStepsAloneTakeAndTheCostOfARun) {
   Scene scene;
   scene.name = "timed";
@@ -56,14 +58,16 @@ TEST(TimeSpent, SaysWhatTheStepsAloneTakeAndTheCostOfARun) {
   all[0].runs.resize(2);
   all[0].runs[0].steps = 2000;
   all[0].runs[0].cost = Cost{1.5e6, 0.0, 3, 1e6, 2e6, ""};  // 3 s
-  all[0].runs[1].steps = 10;                                // no cost: not counted
+  all[0].runs[1].steps = 10;                                // no cost: its own timed steps
+  all[0].runs[1].step_seconds = 0.25;
+  all[0].time_spent.self_check_steps = 0.75;
   const std::string page = time_spent_section(all, 2);
   EXPECT_NE(page.find("The accuracy runs: 3 ran (the references and every backend at every dt), "
                       "6.0 s on 2 jobs, so 4.000 s of a core per run"),
             std::string::npos)
       << page;
-  EXPECT_NE(page.find("take 4.0 s of one core"), std::string::npos) << page;
-  EXPECT_NE(page.find("no less than 2.0 s with --jobs 2"), std::string::npos) << page;
+  EXPECT_NE(page.find("take 5.0 s of one core"), std::string::npos) << page;
+  EXPECT_NE(page.find("no less than 2.5 s with --jobs 2"), std::string::npos) << page;
 }
 
 // A run taken from kept results took no run's time: the per-run figure and the floor count
@@ -123,10 +127,12 @@ TEST(TimeSpent, PrintsTheWholeReportsRatioToItsFloor) {
   r.sweep->points[1].runs[0].step_seconds = 0.5;
   // Steps: 4 + 1 + 1 + 1 = 7 s of a core, 3.5 s on 2 jobs; 10 s of wall: 2.86 times.
   const std::string page = time_spent_section(all, 2);
-  EXPECT_NE(page.find("its steps alone took 7.0 s of one core (accuracy runs, from their costs "
-                      "4.0 s, the cost pass's timed steps 1.0 s, the stability trials' step "
-                      "loops 1.0 s, the sweep runs' steps 1.0 s), so 3.5 s on 2 jobs"),
-            std::string::npos)
+  EXPECT_NE(
+      page.find(
+          "its steps alone took 7.0 s of one core (accuracy runs, from their costs or "
+          "their timed steps 4.0 s, the cost pass's timed steps 1.0 s, the stability trials' step "
+          "loops 1.0 s, the sweep runs' steps 1.0 s), so 3.5 s on 2 jobs"),
+      std::string::npos)
       << page;
   EXPECT_NE(page.find("Its runs took 10.0 s"), std::string::npos) << page;
   EXPECT_NE(page.find(fmt::format("**{:.2f} times its floor**", 10.0 / 3.5)), std::string::npos)
