@@ -111,8 +111,19 @@ struct ChildPool::Active {
   Clock::time_point started;
 };
 
-void ChildPool::submit(std::string label, Work work, double timeout, Done done, double priority) {
-  queue_.push_back({std::move(label), std::move(work), timeout, std::move(done), priority});
+long ChildPool::submit(std::string label, Work work, double timeout, Done done, double priority) {
+  queue_.push_back(
+      {std::move(label), std::move(work), timeout, std::move(done), priority, ++submitted_});
+  return submitted_;
+}
+
+void ChildPool::cancel(long number) {
+  const auto queued =
+      std::find_if(queue_.begin(), queue_.end(), [&](const Job& j) { return j.number == number; });
+  if (queued != queue_.end())
+    queue_.erase(queued);
+  else
+    cancelled_.insert(number);
 }
 
 int ChildPool::free_slots() const {
@@ -260,6 +271,16 @@ void ChildPool::run_isolated() {
       queue_.clear();
       throw Interrupted("stopped during " + what + kNothingWritten);
     }
+    // The children cancelled by the last callbacks stop before others start.
+    std::erase_if(active, [&](Active& a) {
+      if (!cancelled_.erase(a.job.number)) return false;
+      kill(a.pid, SIGKILL);
+      waitpid(a.pid, nullptr, 0);
+      for (int fd : {a.result_fd, a.console_fd})
+        if (fd >= 0) close(fd);
+      return true;
+    });
+    running_ = static_cast<int>(active.size());
     while (static_cast<int>(active.size()) < parallel_ && !queue_.empty())
       active.push_back(start_child(take_next()));
     running_ = static_cast<int>(active.size());
@@ -274,8 +295,10 @@ void ChildPool::run_isolated() {
       }
       const ChildOutcome outcome = finish(a, closed);
       Done done = std::move(a.job.done);
+      const bool cancelled = cancelled_.erase(a.job.number) > 0;
       active.erase(active.begin() + static_cast<long>(i));
       running_ = static_cast<int>(active.size());
+      if (cancelled) continue;
       // A callback that throws (the work cannot go on) stops the other children first.
       try {
         done(outcome);

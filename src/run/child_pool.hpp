@@ -5,6 +5,7 @@
 
 #include <deque>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,11 @@ class ChildPool {
   using Done = std::function<void(const ChildOutcome&)>;
   /// `label` names the piece if it must be stopped; `timeout` is in seconds. A free slot
   /// takes the queued piece of the highest `priority`, the first submitted among equals.
-  void submit(std::string label, Work work, double timeout, Done done, double priority = 0.0);
+  /// Returns the piece's number, for cancel().
+  long submit(std::string label, Work work, double timeout, Done done, double priority = 0.0);
+  /// Drops piece `number` if queued, or stops its child if running (killed before the pool
+  /// starts another); its callback is never called. A piece already done is left as it is.
+  void cancel(long number);
   /// Children that could start now with nothing queued for them (0 when not isolated: in
   /// this process pieces run one after another).
   int free_slots() const;
@@ -46,6 +51,7 @@ class ChildPool {
     double timeout;
     Done done;
     double priority;
+    long number;
   };
   struct Active;
   void run_in_process();
@@ -63,6 +69,8 @@ class ChildPool {
   bool isolated_;
   std::deque<Job> queue_;
   int running_ = 0;  ///< children started and not yet finished
+  long submitted_ = 0;
+  std::set<long> cancelled_;  ///< running pieces to stop
 };
 
 }  // namespace bb

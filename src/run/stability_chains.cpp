@@ -78,6 +78,9 @@ void StabilityChains::advance(std::size_t i) {
     return;
   }
   c.over = true;
+  // Trials run ahead that the search did not ask for are stopped: the cores go to others.
+  for (const auto& [dt, piece] : c.running) pool_.cancel(piece);
+  c.running.clear();
   out_[i].backend = c.backend->name();
   c.search.fill(out_[i]);
   if (options_.on_done) options_.on_done(c.backend->name());
@@ -85,11 +88,10 @@ void StabilityChains::advance(std::size_t i) {
 
 void StabilityChains::submit(std::size_t i, double dt, const std::string& key) {
   Chain& c = chains_[i];
-  c.running.insert(dt);
   const Backend& b = *c.backend;
   const Scene& scene = scene_;
   const std::optional<double> theory = c.theory;
-  pool_.submit(
+  c.running[dt] = pool_.submit(
       b.name() + " stability at dt " + std::to_string(dt),
       [&b, &scene, dt, theory] { return wire::encode(judge_step(b, scene, dt, theory)); },
       trial_time_limit(scene_, dt, options_.timeout, theory && dt > *theory),

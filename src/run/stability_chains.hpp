@@ -8,7 +8,6 @@
 #include <functional>
 #include <map>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -41,8 +40,8 @@ class StabilityChains {
     StabilitySearch search;
     std::map<double, StabilityTrial> finished;  ///< run here, not yet asked for
     std::map<double, StabilityTrial> kept;      ///< peeked at in the cache while looking ahead
-    std::set<double> running;
-    double child_seconds = 0.0;  ///< wall time of its finished children
+    std::map<double, long> running;             ///< steps running, with their pieces in the pool
+    double child_seconds = 0.0;                 ///< wall time of its finished children
     int children = 0;
     bool over = false;
   };

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,43 @@ TEST(ChildPool, AChildsWallTimeIsMeasured) {
       10.0, [&](const ChildOutcome& o) { seconds = o.seconds; });
   pool.run();
   EXPECT_GE(seconds, 0.02);
+}
+
+}  // namespace
+}  // namespace bb
+
+namespace bb {
+namespace {
+
+// A cancelled piece never calls back: queued, it never runs; running, its child is stopped
+// before it ends (it would have left a file behind).
+TEST(ChildPool, ACancelledPieceNeverEndsNorCallsBack) {
+  const std::string mark = ::testing::TempDir() + "/beachball_cancelled_piece";
+  std::remove(mark.c_str());
+  ChildPool pool(2, true);
+  std::vector<std::string> called;
+  const auto record = [&](const ChildOutcome& o) { called.push_back(o.payload); };
+  const long slow = pool.submit(
+      "slow",
+      [mark] {
+        sleep(3);
+        std::FILE* f = std::fopen(mark.c_str(), "w");
+        if (f) std::fclose(f);
+        return std::string("slow");
+      },
+      30.0, record);
+  pool.submit(
+      "quick", [] { return std::string("quick"); }, 30.0,
+      [&](const ChildOutcome& o) {
+        record(o);
+        pool.cancel(slow);
+      });
+  const long queued = pool.submit(
+      "queued", [] { return std::string("queued"); }, 30.0, record);
+  pool.cancel(queued);
+  pool.run();
+  EXPECT_EQ(called, std::vector<std::string>{"quick"});
+  EXPECT_FALSE(std::filesystem::exists(mark)) << "the slow child ran to its end";
 }
 
 }  // namespace
