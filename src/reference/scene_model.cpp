@@ -81,28 +81,7 @@ SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
   if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
       if (!scene.bodies[i].fixed) sources_.push_back({Watch::Apex, i});
-  // Falls are timed exactly, as every backend's are from its steps.
-  for (const Observe& o : settings.observed())
-    if (observable_needs(o.kind, kWatchesFalls) && scene.ground)
-      sources_.push_back({Watch::Fall, o.body});
-  // Swings are timed exactly, as every backend's are from its steps: a hinged body's by its
-  // spin about the axis, any other's by each component of its velocity.
-  for (const Observe& o : settings.observed())
-    if (observable_needs(o.kind, kWatchesSwings)) {
-      if (hinge_[o.body] != nullptr)
-        sources_.push_back({Watch::HingeSwing, o.body});
-      else
-        for (int axis = 0; axis < 3; ++axis)
-          for (const bool down : {false, true})
-            sources_.push_back({Watch::Swing, o.body, {}, axis, down});
-    }
-  // A kind's crossings are located exactly, either way, as every backend's are from its steps.
-  for (const Observe& o : settings.observed())
-    if (const ObservableKind* kind = observable_kind(o.kind); kind && kind->crossing) {
-      trace_.crossings[o.name];
-      for (const bool down : {false, true})
-        sources_.push_back({Watch::Crossing, o.body, {}, -1, down, o, kind->crossing});
-    }
+  watch_observed(settings.observed());
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it
   // down, starts at rest there (a gap of exactly zero is no crossing, so no event would).
   const std::vector<double> y = initial_state();
@@ -122,6 +101,31 @@ SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
   // Resting on a ground with friction: stuck or sliding from the start.
   for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
     if (resting_[i]) settle(i, y.data(), 0.0);
+}
+
+void SceneModel::watch_observed(const std::vector<Observe>& observed) {
+  // Falls are timed exactly, as every backend's are from its steps.
+  for (const Observe& o : observed)
+    if (observable_needs(o.kind, kWatchesFalls) && scene_.ground)
+      sources_.push_back({Watch::Fall, o.body});
+  // Swings are timed exactly, as every backend's are from its steps: a hinged body's by its
+  // spin about the axis, any other's by each component of its velocity.
+  for (const Observe& o : observed)
+    if (observable_needs(o.kind, kWatchesSwings)) {
+      if (hinge_[o.body] != nullptr)
+        sources_.push_back({Watch::HingeSwing, o.body});
+      else
+        for (int axis = 0; axis < 3; ++axis)
+          for (const bool down : {false, true})
+            sources_.push_back({Watch::Swing, o.body, {}, axis, down});
+    }
+  // A kind's crossings are located exactly, either way, as every backend's are from its steps.
+  for (const Observe& o : observed)
+    if (const ObservableKind* kind = observable_kind(o.kind); kind && kind->crossing) {
+      trace_.crossings[o.name];
+      for (const bool down : {false, true})
+        sources_.push_back({Watch::Crossing, o.body, {}, -1, down, o, kind->crossing});
+    }
 }
 
 std::vector<double> SceneModel::initial_state() const {

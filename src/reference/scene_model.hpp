@@ -92,6 +92,8 @@ class SceneModel : public HybridModel {
     CrossingFn crossing = nullptr;  ///< a crossing's value
     bool contact() const { return watch == Watch::Contact; }
   };
+  /// The event functions the observes' kinds ask for: falls, swings and crossings.
+  void watch_observed(const std::vector<Observe>& observed);
   /// The value of event function `s` at `y`: its event is where it falls to zero from above.
   double event_value(const Source& s, const double* y) const;
   /// Whether body i turns on a hinge and may land on the ground (a falling wall).
