@@ -22,6 +22,11 @@ struct ObservableValue {
 using MeasureFn = ObservableValue (*)(const Scene& scene, const Observe& observe,
                                       const Trajectory& trajectory, const EventTrace* reference);
 
+/// The value of the observed body's state whose zero crossings a kind watches as events
+/// (time_above: the centre's height above its level): continuous along a motion, it is read
+/// at every step of a stepped backend and is an event function of the reference's.
+using CrossingFn = double (*)(const World& world, const Observe& observe, const BodyState& body);
+
 /// The value every run's is compared with when a formula gives it from the scene alone
 /// (terminal_velocity's terminal speed); nullopt where the formula does not apply.
 using FormulaFn = std::optional<double> (*)(const Scene& scene, const Observe& observe);

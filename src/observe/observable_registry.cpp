@@ -25,6 +25,9 @@ ObservableValue measure_wobble_amplitude(const Scene&, const Observe&, const Tra
                                          const EventTrace*);
 ObservableValue measure_surface_fold(const Scene&, const Observe&, const Trajectory&,
                                      const EventTrace*);
+ObservableValue measure_time_above(const Scene&, const Observe&, const Trajectory&,
+                                   const EventTrace*);
+double height_above_level(const World&, const Observe&, const BodyState&);
 
 const std::vector<ObservableKind>& observable_kind_table() {
   // name, measure, scene-wide, counted, needs, formula, rest_speed, axis
@@ -65,6 +68,11 @@ const std::vector<ObservableKind>& observable_kind_table() {
       {"wobble_period", measure_wobble_period},
       {"wobble_amplitude", measure_wobble_amplitude},
       {"surface_fold", measure_surface_fold, true},
+      {.name = "time_above",
+       .measure = measure_time_above,
+       .needs = kReadsSteps,
+       .crossing = height_above_level,
+       .level = true},
   };
   return kinds;
 }
@@ -89,7 +97,8 @@ bool observable_needs(const std::string& kind, unsigned need) {
 CaseVocabulary case_vocabulary() {
   CaseVocabulary vocabulary;
   for (const ObservableKind& k : observable_kind_table())
-    vocabulary.observables.push_back({k.name, k.scene_wide, k.counted, k.rest_speed, k.axis});
+    vocabulary.observables.push_back(
+        {k.name, k.scene_wide, k.counted, k.rest_speed, k.axis, k.level});
   return vocabulary;
 }
 

@@ -1,7 +1,8 @@
 // The registry of observables: one row per kind of the case format, saying what the kind is
 // (whether it describes the whole scene, whether it counts events), what it needs watched as
 // a run goes, and how it is measured. A new observable is one file in observe/ (its
-// MeasureFn) plus one row in observable_registry.cpp; the loader, the per-step observer, the
+// MeasureFn, and for a kind that watches a level its CrossingFn) plus one row in
+// observable_registry.cpp; the loader, the per-step observer, the
 // reference and the report all read this table, and nothing matches kinds by name elsewhere.
 #pragma once
 
@@ -39,6 +40,10 @@ struct ObservableKind {
   FormulaFn formula = nullptr;  ///< null: compared with the reference's own measurement
   bool rest_speed = false;      ///< takes a `rest_speed`: below it the body is at rest
   bool axis = false;            ///< signed about an `axis` (z in 2D)
+  /// The value whose zero crossings it watches as events (located by the reference, found
+  /// at every step by the per-step observer into EventTrace::crossings), or null.
+  CrossingFn crossing = nullptr;
+  bool level = false;  ///< takes a `level` (m): the height its crossings are of
 };
 
 /// Every observable kind, in the order of docs/observables.md.

@@ -48,6 +48,11 @@ StepObserver::StepObserver(const Scene& scene)
         std::find(stopping_.begin(), stopping_.end(), o.body) == stopping_.end())
       stopping_.push_back(o.body);
   }
+  for (const Observe& o : scene.observes)
+    if (const ObservableKind* kind = observable_kind(o.kind); kind && kind->crossing) {
+      crossing_watches_.push_back({&o, kind->crossing});
+      trace_.crossings[o.name];
+    }
   fastest_.assign(stopping_.size(), 0.0);
   for (int body : stopping_) rest_speeds_.push_back(stated_rest_speed(scene, body));
   watches_.assign(stopping_.size(), StopWatch{});
@@ -192,6 +197,19 @@ void StepObserver::observe_falls(double t, const State& s) {
   }
 }
 
+void StepObserver::observe_crossings(double t, const State& s) {
+  for (CrossingWatch& w : crossing_watches_) {
+    const double now = w.value(scene_, *w.observe, s[w.observe->body]), before = w.last;
+    w.last = now;
+    if (first_) continue;
+    // Up when it leaves below zero, down when it leaves above: as the reference's events.
+    const bool rising = before < 0.0 && now >= 0.0, falling = before > 0.0 && now <= 0.0;
+    if (rising || falling)
+      trace_.crossings[w.observe->name].push_back(
+          {previous_t_ + (t - previous_t_) * before / (before - now), rising});
+  }
+}
+
 void StepObserver::observe_stretch(double h, const State& s) {
   double& largest = *trace_.max_stretch;
   for (std::size_t k = 0; k < stretched_.size(); ++k) {
@@ -260,6 +278,7 @@ void StepObserver::observe(double t, const State& s) {
   if (!first_ && !falling_.empty()) observe_falls(t, s);
   if (!first_ && !swinging_.empty()) observe_swings(t, s);
   if (!stopping_.empty()) observe_stops(t, s);
+  if (!crossing_watches_.empty()) observe_crossings(t, s);
   if (watch_stretch_) observe_stretch(dt, s);
   if (!pairs_.empty()) observe_contacts(t, dt, s);
   if (scene_.ground) observe_apexes(dt, s);

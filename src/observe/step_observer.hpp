@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
+#include "observe/observable_measure.hpp"
 #include "scene/event_trace.hpp"
 #include "scene/peaks.hpp"
 #include "scene/scene.hpp"
@@ -49,7 +50,7 @@ class StepObserver {
   /// nothing then.
   bool active() const {
     return !pairs_.empty() || !swinging_.empty() || !stopping_.empty() || !falling_.empty() ||
-           watch_stretch_ || watch_turns_;
+           !crossing_watches_.empty() || watch_stretch_ || watch_turns_;
   }
   /// Writes each body's turn about z (BodyState::turn) into `state`, the state observed
   /// last: unwrapped at every step for a body that can turn, its angle for one that cannot
@@ -91,7 +92,17 @@ class StepObserver {
   /// The first time each body whose fall is observed has its centre below fallen_height()
   /// above the ground, placed by linear interpolation between the two steps.
   void observe_falls(double t, const State& s);
-  std::vector<int> falling_;    ///< bodies with fall_time
+  std::vector<int> falling_;  ///< bodies with fall_time
+  /// Each observe whose kind watches a crossing (a CrossingFn) and its value at the last
+  /// step: a step where the value changes sign is a crossing, placed by linear
+  /// interpolation between the two steps.
+  struct CrossingWatch {
+    const Observe* observe = nullptr;
+    CrossingFn value = nullptr;
+    double last = 0.0;
+  };
+  void observe_crossings(double t, const State& s);
+  std::vector<CrossingWatch> crossing_watches_;
   bool watch_stretch_ = false;  ///< a max_stretch observable is asked for
   /// Contacts between each pair that can touch (a step where they are close and stop
   /// approaching), their penetration, and the first collision's balance of momentum and

@@ -68,33 +68,20 @@ SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
   for (std::size_t i = 0; i < scene.bodies.size(); ++i)
     trace_.bodies[i].motion_start = scene.bodies[i].position;
   for (const Hinge& h : scene.hinges) hinge_[h.body] = &h;
-  for (const ContactPair& pair : contact_pairs(scene)) sources_.push_back({false, -1, -1, pair});
+  for (const ContactPair& pair : contact_pairs(scene))
+    sources_.push_back({Watch::Contact, -1, pair});
   // A body that may slide on a ground with friction: its coefficients and its stops.
   if (ground_rubs(scene))
     for (const ContactPair& pair : contact_pairs(scene))
       if (pair.ground()) {
         mu_static_[pair.a] = pair.friction_static, mu_kinetic_[pair.a] = pair.friction_kinetic;
-        sources_.push_back({false, -1, pair.a, {}, true});
+        sources_.push_back({Watch::Stop, pair.a});
       }
   // Apexes are heights above the ground, watched while gravity pulls towards it.
   if (scene.ground && -scene.gravity.dot(scene.ground->normal) > 0.0)
     for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i)
-      if (!scene.bodies[i].fixed) sources_.push_back({true, -1, i, {}});
-  // Falls are timed exactly, as every backend's are from its steps.
-  for (const Observe& o : settings.observed())
-    if (observable_needs(o.kind, kWatchesFalls) && scene.ground)
-      sources_.push_back({false, -1, o.body, {}, false, true});
-  // Swings are timed exactly, as every backend's are from its steps: a hinged body's by its
-  // spin about the axis, any other's by each component of its velocity.
-  for (const Observe& o : settings.observed())
-    if (observable_needs(o.kind, kWatchesSwings)) {
-      if (hinge_[o.body] != nullptr)
-        sources_.push_back({false, kHingeSwing, o.body, {}});
-      else
-        for (int axis = 0; axis < 3; ++axis)
-          for (const bool down : {false, true})
-            sources_.push_back({false, axis, o.body, {}, false, false, down});
-    }
+      if (!scene.bodies[i].fixed) sources_.push_back({Watch::Apex, i});
+  watch_observed(settings.observed());
   // A body that starts touching the ground, not moving along its normal, with gravity pressing it
   // down, starts at rest there (a gap of exactly zero is no crossing, so no event would).
   const std::vector<double> y = initial_state();
@@ -116,6 +103,31 @@ SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
     if (resting_[i]) settle(i, y.data(), 0.0);
 }
 
+void SceneModel::watch_observed(const std::vector<Observe>& observed) {
+  // Falls are timed exactly, as every backend's are from its steps.
+  for (const Observe& o : observed)
+    if (observable_needs(o.kind, kWatchesFalls) && scene_.ground)
+      sources_.push_back({Watch::Fall, o.body});
+  // Swings are timed exactly, as every backend's are from its steps: a hinged body's by its
+  // spin about the axis, any other's by each component of its velocity.
+  for (const Observe& o : observed)
+    if (observable_needs(o.kind, kWatchesSwings)) {
+      if (hinge_[o.body] != nullptr)
+        sources_.push_back({Watch::HingeSwing, o.body});
+      else
+        for (int axis = 0; axis < 3; ++axis)
+          for (const bool down : {false, true})
+            sources_.push_back({Watch::Swing, o.body, {}, axis, down});
+    }
+  // A kind's crossings are located exactly, either way, as every backend's are from its steps.
+  for (const Observe& o : observed)
+    if (const ObservableKind* kind = observable_kind(o.kind); kind && kind->crossing) {
+      trace_.crossings[o.name];
+      for (const bool down : {false, true})
+        sources_.push_back({Watch::Crossing, o.body, {}, -1, down, o, kind->crossing});
+    }
+}
+
 std::vector<double> SceneModel::initial_state() const {
   std::vector<double> y(dimension());
   const State start = ::bb::initial_state(scene_);
@@ -132,11 +144,7 @@ std::vector<double> SceneModel::initial_state() const {
 }
 
 void SceneModel::read(const double* y, State& out) const {
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const int b = static_cast<int>(i);
-    const Quaterniond q = orientation(y, b).normalized();
-    out[i] = {position(y, b), velocity(y, b), q, spin(y, b)};
-  }
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = body_state(y, static_cast<int>(i));
 }
 
 void SceneModel::linear_accelerations(const double* y) {

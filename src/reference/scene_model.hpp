@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
+#include "observe/observable_measure.hpp"
 #include "physics/force_model.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/sliding_modes.hpp"
@@ -70,22 +71,31 @@ class SceneModel : public HybridModel {
   static std::string beyond_exact_answer(const World& scene);
 
  private:
-  /// What one event function watches: a contact pair's gap, a body's apex, a zero crossing
-  /// of one velocity component of a body whose period is observed (upwards, or downwards
-  /// with swing_down) or of a hinged one's spin about its axis (upwards), or a sliding
-  /// body's speed along its direction of sliding reaching zero (a stop).
-  /// Source::swing_axis of a hinged body's swing: its spin about the hinge's axis.
-  static constexpr int kHingeSwing = 3;
-  struct Source {
-    bool apex = false;
-    int swing_axis = -1;  ///< 0, 1, 2 for a swing along x, y, z; kHingeSwing about a hinge
-    int body = -1;        ///< the apex's, swing's, stop's or fall's body
-    ContactPair pair;     ///< a contact's pair
-    bool stop = false;
-    bool fall = false;        ///< the centre reaching fallen_height() above the ground
-    bool swing_down = false;  ///< a swing's velocity falling through zero (a maximum)
-    bool contact() const { return !apex && swing_axis < 0 && !stop && !fall; }
+  /// What one event function watches, each kind of event resolved in one switch of
+  /// events() and one of apply().
+  enum class Watch {
+    Contact,     ///< a contact pair's gap (a hinged box's corners for a landing)
+    Apex,        ///< a body's velocity along the ground's normal after a bounce
+    Swing,       ///< a zero crossing of one velocity component of a body whose period is observed
+    HingeSwing,  ///< a hinged body's spin about its axis through zero upwards
+    Stop,        ///< a sliding body's speed along its direction of sliding reaching zero
+    Fall,        ///< the centre reaching fallen_height() above the ground
+    Crossing,    ///< an observe's CrossingFn through zero (observable_registry.hpp)
   };
+  struct Source {
+    Watch watch = Watch::Contact;
+    int body = -1;       ///< the apex's, swing's, stop's, fall's or crossing's body
+    ContactPair pair{};  ///< a contact's pair
+    int axis = -1;       ///< a swing's: 0, 1, 2 for x, y, z
+    bool down = false;   ///< a swing's or crossing's value falling through zero, else rising
+    Observe observe{};   ///< a crossing's observe
+    CrossingFn crossing = nullptr;  ///< a crossing's value
+    bool contact() const { return watch == Watch::Contact; }
+  };
+  /// The event functions the observes' kinds ask for: falls, swings and crossings.
+  void watch_observed(const std::vector<Observe>& observed);
+  /// The value of event function `s` at `y`: its event is where it falls to zero from above.
+  double event_value(const Source& s, const double* y) const;
   /// Whether body i turns on a hinge and may land on the ground (a falling wall).
   bool lands(int i) const;
   /// The angular acceleration (rad/s^2) about its axis of hinged body i at `y`.

@@ -28,43 +28,55 @@ contact::Proximity SceneModel::proximity(const ContactPair& pair, const double* 
 }
 
 void SceneModel::events(double, const double* y, double* g) {
-  for (std::size_t k = 0; k < sources_.size(); ++k) {
-    const Source& s = sources_[k];
-    if (s.swing_axis == kHingeSwing) {
+  for (std::size_t k = 0; k < sources_.size(); ++k) g[k] = event_value(sources_[k], y);
+}
+
+double SceneModel::event_value(const Source& s, const double* y) const {
+  switch (s.watch) {
+    case Watch::HingeSwing:
       // Falls through zero when the spin about the hinge's axis rises through zero.
-      g[k] = -spin(y, s.body).dot(hinge_[s.body]->axis);
-    } else if (s.swing_axis >= 0) {
+      return -spin(y, s.body).dot(hinge_[s.body]->axis);
+    case Watch::Swing: {
       // Falls through zero when the velocity component rises through zero (or, watching it
       // go down, falls through zero).
-      const double v = velocity(y, s.body)[s.swing_axis];
-      g[k] = s.swing_down ? v : -v;
-    } else if (s.stop) {
+      const double v = velocity(y, s.body)[s.axis];
+      return s.down ? v : -v;
+    }
+    case Watch::Stop: {
       // The speed along the direction of sliding falls through zero at the stop.
       const SlideDecision& slide = slides_[s.body];
       const bool sliding = resting_[s.body] && slide.mode == SlideMode::Sliding;
-      g[k] = sliding ? velocity(y, s.body).dot(slide.direction) : 1.0;
-    } else if (s.apex) {
+      return sliding ? velocity(y, s.body).dot(slide.direction) : 1.0;
+    }
+    case Watch::Apex: {
       // The normal velocity falling through zero after a bounce is the apex.
       const bool watching = after_bounce_[s.body] && !resting_[s.body];
-      g[k] = watching ? velocity(y, s.body).dot(scene_.ground->normal) : 1.0;
-    } else if (s.fall) {
+      return watching ? velocity(y, s.body).dot(scene_.ground->normal) : 1.0;
+    }
+    case Watch::Fall: {
       // The centre's height falls through the height of lying flat.
       const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
-      g[k] = above.dot(scene_.ground->normal) - fallen_height(scene_.bodies[s.body].half_extents);
-    } else if (s.pair.ground() && resting_[s.pair.a]) {
-      g[k] = 1.0;
-    } else if (s.pair.ground() && lands(s.pair.a)) {
-      // A hinged box's corners off its axis reaching the ground; held, it watches nothing.
-      const int i = s.pair.a;
-      const Hinge& h = *hinge_[i];
-      g[k] = hinge_held_[i] ? 1.0
-                            : contact::clear_height(position(y, i), orientation(y, i),
-                                                    scene_.bodies[i].half_extents, h.anchor, h.axis,
-                                                    scene_.ground->point, scene_.ground->normal);
-    } else {
-      g[k] = proximity(s.pair, y).gap;
+      return above.dot(scene_.ground->normal) - fallen_height(scene_.bodies[s.body].half_extents);
     }
+    case Watch::Crossing: {
+      // The kind's value falls through zero (or, watching it rise, rises through zero).
+      const double v = s.crossing(scene_, s.observe, body_state(y, s.body));
+      return s.down ? v : -v;
+    }
+    case Watch::Contact:
+      break;
   }
+  if (s.pair.ground() && resting_[s.pair.a]) return 1.0;
+  if (s.pair.ground() && lands(s.pair.a)) {
+    // A hinged box's corners off its axis reaching the ground; held, it watches nothing.
+    const int i = s.pair.a;
+    const Hinge& h = *hinge_[i];
+    return hinge_held_[i] ? 1.0
+                          : contact::clear_height(position(y, i), orientation(y, i),
+                                                  scene_.bodies[i].half_extents, h.anchor, h.axis,
+                                                  scene_.ground->point, scene_.ground->normal);
+  }
+  return proximity(s.pair, y).gap;
 }
 
 double SceneModel::max_step(double, const double* y) {
@@ -329,29 +341,44 @@ void SceneModel::apply(std::size_t k, double t, double* y) {
   const Source& s = sources_[k];
   // A crossing applied with another event at the same instant may show up again just after
   // it, when its velocity was still a hair below zero: it is one crossing.
-  if (s.swing_axis == kHingeSwing) {
-    std::vector<double>& crossings = trace_.bodies[s.body].hinge_crossings;
-    if (crossings.empty() || t - crossings.back() > 1e-9) crossings.push_back(t);
-    return;
+  switch (s.watch) {
+    case Watch::HingeSwing: {
+      std::vector<double>& crossings = trace_.bodies[s.body].hinge_crossings;
+      if (crossings.empty() || t - crossings.back() > 1e-9) crossings.push_back(t);
+      return;
+    }
+    case Watch::Swing: {
+      std::vector<Turn>& turns = trace_.bodies[s.body].turns[s.axis];
+      const bool lowest = !s.down;
+      if (turns.empty() || turns.back().lowest != lowest || t - turns.back().time > 1e-9)
+        turns.push_back({t, position(y, s.body)[s.axis], lowest});
+      return;
+    }
+    case Watch::Stop:
+      return stop(s.body, y, t);
+    case Watch::Fall: {
+      std::optional<double>& fell = trace_.bodies[s.body].fall_time;
+      if (!fell) fell = t;
+      return;
+    }
+    case Watch::Crossing: {
+      std::vector<Crossing>& crossings = trace_.crossings[s.observe.name];
+      const bool rising = !s.down;
+      if (crossings.empty() || crossings.back().rising != rising ||
+          t - crossings.back().time > 1e-9)
+        crossings.push_back({t, rising});
+      return;
+    }
+    case Watch::Apex: {
+      const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
+      trace_.bodies[s.body].apex_heights.push_back(above.dot(scene_.ground->normal));
+      after_bounce_[s.body] = false;
+      return;
+    }
+    case Watch::Contact:
+      if (s.pair.ground() && lands(s.pair.a)) return land(s.pair, y, t);
+      return resolve(s.pair, y, t);
   }
-  if (s.swing_axis >= 0) {
-    std::vector<Turn>& turns = trace_.bodies[s.body].turns[s.swing_axis];
-    const bool lowest = !s.swing_down;
-    if (turns.empty() || turns.back().lowest != lowest || t - turns.back().time > 1e-9)
-      turns.push_back({t, position(y, s.body)[s.swing_axis], lowest});
-    return;
-  }
-  if (s.stop) return stop(s.body, y, t);
-  if (s.fall) {
-    std::optional<double>& fell = trace_.bodies[s.body].fall_time;
-    if (!fell) fell = t;
-    return;
-  }
-  if (s.contact() && s.pair.ground() && lands(s.pair.a)) return land(s.pair, y, t);
-  if (!s.apex) return resolve(s.pair, y, t);
-  const Vector3d above = Vector3d(position(y, s.body)) - scene_.ground->point;
-  trace_.bodies[s.body].apex_heights.push_back(above.dot(scene_.ground->normal));
-  after_bounce_[s.body] = false;
 }
 
 }  // namespace bb

@@ -41,6 +41,16 @@ inline void set_spin(double* y, int i, const Vector3d& world) {
   Eigen::Map<Vector3d>(y + at(i) + 10) = orientation(y, i).normalized().conjugate() * world;
 }
 
+/// Body i's state as the runner reads it: orientation normalised, spin in the world frame.
+inline BodyState body_state(const double* y, int i) {
+  BodyState s;
+  s.position = position(y, i);
+  s.velocity = velocity(y, i);
+  s.orientation = orientation(y, i).normalized();
+  s.angular_velocity = spin(y, i);
+  return s;
+}
+
 /// Contact distance below which a second contact counts as simultaneous, metres.
 inline constexpr double kSimultaneousGap = 1e-9;
 

@@ -105,6 +105,12 @@ void put(Writer& w, const EventTrace& events) {
   }
   w.raw<char>(events.max_stretch.has_value());
   if (events.max_stretch) w.raw(*events.max_stretch);
+  w.raw<std::uint64_t>(events.crossings.size());
+  for (const auto& [name, crossings] : events.crossings) {
+    w.text(name);
+    w.raw<std::uint64_t>(crossings.size());
+    for (const Crossing& c : crossings) w.raw(c.time), w.raw(c.rising);
+  }
 }
 EventTrace get_events(Reader& r) {
   EventTrace events;
@@ -139,6 +145,11 @@ EventTrace get_events(Reader& r) {
     events.first_collision = c;
   }
   if (r.raw<char>()) events.max_stretch = r.raw<double>();
+  for (auto n = r.raw<std::uint64_t>(); n > 0; --n) {
+    std::vector<Crossing>& crossings = events.crossings[r.text()];
+    crossings.resize(r.raw<std::uint64_t>());
+    for (Crossing& c : crossings) c.time = r.raw<double>(), c.rising = r.raw<bool>();
+  }
   return events;
 }
 

@@ -19,6 +19,7 @@ struct ObservableWord {
   bool counted = false;     ///< counts events: takes an `n` (the n-th bounce)
   bool rest_speed = false;  ///< takes a `rest_speed`: below it the body is at rest
   bool axis = false;        ///< signed about an `axis`: required in 3D, +z by default in 2D
+  bool level = false;       ///< takes a `level` (m), required: the height it watches
 };
 
 struct CaseVocabulary {

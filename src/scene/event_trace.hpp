@@ -5,7 +5,9 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "scene/vec3.hpp"
@@ -93,8 +95,17 @@ struct CollisionBalance {
   double kinetic_energy_after = 0.0;
 };
 
+/// Where a watched value of one body's state crossed zero (an observable kind's CrossingFn,
+/// observe/observable_measure.hpp): a level passed going up or going down.
+struct Crossing {
+  double time = 0.0;    ///< s
+  bool rising = false;  ///< from below zero to above it
+};
+
 struct EventTrace {
   std::vector<BodyEvents> bodies;  ///< one per body, in scene order
+  /// Per observe (by its name) of a kind that watches a crossing: every crossing, in time order.
+  std::map<std::string, std::vector<Crossing>> crossings;
   std::optional<CollisionBalance> first_collision;
   /// The largest relative extension (l - L) / L of any spring seen, when observed.
   std::optional<double> max_stretch;

@@ -93,9 +93,9 @@ std::string known_kinds(const CaseVocabulary& vocabulary) {
   return joined(names);
 }
 
-/// An [[observe]]'s `rest_speed` and `axis`, for the kinds that take them: a body has one rest
-/// speed, so two of its [[observe]] may not give two; a spin is signed about z in 2D and
-/// about a given axis in 3D.
+/// An [[observe]]'s `rest_speed`, `level` and `axis`, for the kinds that take them: a body has
+/// one rest speed, so two of its [[observe]] may not give two; a level is required where
+/// taken; a spin is signed about z in 2D and about a given axis in 3D.
 void read_observe_thresholds(TomlReader& r, const Scene& scene, const ObservableWord& word,
                              Observe& o) {
   if (r.has("rest_speed") && !word.rest_speed)
@@ -109,6 +109,17 @@ void read_observe_thresholds(TomlReader& r, const Scene& scene, const Observable
                                             " differs from the " + show(*other.rest_speed) +
                                             " line " + std::to_string(other.line) +
                                             " gives the same body: a body has one rest speed");
+  }
+  // A level: a height along -gravity, within the positions a case may give.
+  if (r.has("level") && !word.level)
+    r.fail(r.line_of("level"), "kind '" + o.kind + "' does not take 'level'");
+  if (word.level) {
+    const double most = vector_limit(VectorKind::Position).most;
+    if (!r.has("level"))
+      r.fail(o.line,
+             "kind '" + o.kind + "' needs 'level': the height (m) whose crossings it watches");
+    o.level = r.number("level");
+    require_range(r, "level", *o.level, -most, most);
   }
   if (r.has("axis") && !word.axis)
     r.fail(r.line_of("axis"), "kind '" + o.kind + "' does not take 'axis'");

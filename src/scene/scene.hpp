@@ -220,6 +220,9 @@ struct Observe {
   /// The unit axis a signed spin is read about (post_angular_velocity): +z unless given in
   /// 2D, given in 3D.
   Vec3 axis{0.0, 0.0, 1.0};
+  /// m: the height along -gravity whose crossings the kind watches (time_above), for the
+  /// kinds that take it.
+  std::optional<double> level = std::nullopt;
 };
 
 /// A CI accuracy gate, checked at report_dt.

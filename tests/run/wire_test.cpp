@@ -38,6 +38,7 @@ RunRecord a_record_of_every_field() {
   run.trajectory.events.bodies[0].turns[1] = {{0.5, -1.0, true}, {0.75, 1.0, false}};
   run.trajectory.events.bodies[0].hinge_crossings = {0.25, 1.5};
   run.trajectory.events.bodies[1].unresolved_contact = UnresolvedContact{0, 0.5, 2.0, 0.03};
+  run.trajectory.events.crossings["time_above/ball"] = {{0.1, true}, {1.9, false}};
   run.trajectory_problem = "No space left on device";
   run.step_seconds = 0.125;
   return run;
@@ -87,6 +88,12 @@ TEST(Wire, ARunRecordComesBackWhole) {
   EXPECT_EQ(back.trajectory.events.bodies.at(1).stop_position, Vec3(2.5, 0.5, -1.0));
   EXPECT_EQ(back.trajectory.events.bodies.at(1).motion_start, Vec3(1.0, 0.5, -1.0));
   EXPECT_EQ(back.trajectory.events.max_stretch, 0.1);
+  const std::vector<Crossing>& crossings = back.trajectory.events.crossings.at("time_above/ball");
+  ASSERT_EQ(crossings.size(), 2u);
+  EXPECT_EQ(crossings[0].time, 0.1);
+  EXPECT_TRUE(crossings[0].rising);
+  EXPECT_EQ(crossings[1].time, 1.9);
+  EXPECT_FALSE(crossings[1].rising);
   const std::vector<Turn>& turns = back.trajectory.events.bodies.at(0).turns[1];
   ASSERT_EQ(turns.size(), 2u);
   EXPECT_EQ(turns[1].time, 0.75);

@@ -50,11 +50,13 @@ TEST(LoadCase, EveryKeyOfTheFormatLoads) {
   EXPECT_EQ(engine_setting(s.engines, *test::description_of("ode"), "quick_step"), 1.0);
   EXPECT_EQ(engine_setting(s.engines, *test::description_of("ode"), "quick_step_iterations"),
             20.0);  // default
-  ASSERT_EQ(s.observes.size(), 4u);
+  ASSERT_EQ(s.observes.size(), 5u);
   EXPECT_EQ(s.observes[0].name, "bounce_apex/a/2");
   EXPECT_FALSE(s.observes[1].rest_speed);
   EXPECT_EQ(s.observes[2].rest_speed, 0.001);
   EXPECT_EQ(s.observes[3].axis, Vec3(0.0, 0.0, -1.0));
+  EXPECT_EQ(s.observes[4].level, 0.5);
+  EXPECT_FALSE(s.observes[3].level);
   ASSERT_EQ(s.gates.size(), 1u);
   EXPECT_EQ(s.gates[0].backend, "course/rk4+mirror");
   // Claims: the text's words and how each side is read; the case's own, and what a
