@@ -95,15 +95,14 @@ std::optional<StabilityResult> unsupported(const Backend& backend, const Scene& 
 
 }  // namespace
 
-namespace {
-
-/// The theory's limit (s) for a course variant named `backend`, where the scene has one.
 std::optional<double> theory_for(const Scene& scene, const std::string& backend) {
   for (const CourseVariant& v : course_variants(scene))
     if (v.name == backend)
       if (auto limit = theoretical_limit(scene, v.integrator)) return limit->dt;
   return std::nullopt;
 }
+
+namespace {
 
 /// The theory, where the scene allows one, beside a course variant's result.
 void add_theory(const Scene& scene, StabilityResult& r) {
