@@ -44,14 +44,14 @@ parameter = "spring.1.stiffness"
 values = [10.0, 100.0, 1000.0]
 [[sweep]]
 parameter = "dt"
-range = [0.01, 0.05, 5]
+range = [0.01, 0.02, 2]
 )"));
   ASSERT_TRUE(scene.sweep);
   ASSERT_TRUE(scene.second_sweep);
   EXPECT_EQ(scene.sweep->parameter, "spring.1.stiffness");
   EXPECT_EQ(scene.sweep->values.size(), 3u);
   EXPECT_EQ(scene.second_sweep->parameter, "dt");
-  EXPECT_EQ(scene.second_sweep->values, sweep_range(0.01, 0.05, 5));
+  EXPECT_EQ(scene.second_sweep->values, sweep_range(0.01, 0.02, 2));
   EXPECT_EQ(scene.second_sweep->line, 25);
 }
 
