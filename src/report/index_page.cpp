@@ -135,14 +135,18 @@ std::string index_page(const std::vector<CaseResults>& all,
   // The cases with a [[sweep]]: the published benchmarks rerun, predictability.
   std::string sweeps;
   for (const CaseResults& r : all)
-    if (r.sweep)
+    if (r.sweep && r.sweep->second_parameter.empty())
       sweeps +=
           fmt::format("- [{0}]({0}.md): `{1}` over {2} values; {3}\n", r.scene->name,
                       r.sweep->parameter, r.sweep->points.size(), markdown_text(r.scene->title));
+    else if (r.sweep)
+      sweeps += fmt::format("- [{0}]({0}.md): a map of `{1}` by `{2}`, {3} points; {4}\n",
+                            r.scene->name, r.sweep->parameter, r.sweep->second_parameter,
+                            r.sweep->points.size(), markdown_text(r.scene->title));
   if (!sweeps.empty())
     sweeps =
-        "**Sweeps** (one parameter varied, every backend at each value; the published "
-        "benchmarks rerun):\n\n" +
+        "**Sweeps** (one parameter varied, or two as a map, every backend at each value; the "
+        "published benchmarks rerun):\n\n" +
         sweeps + "\n";
   // The cases whose costs were timed on a busy machine.
   std::string busy;

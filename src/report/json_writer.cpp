@@ -167,15 +167,26 @@ Json stability_json(const CaseResults& results) {
 }
 
 /// The case at each value of its [[sweep]], every backend at report_dt; null without one.
+/// A map's gives both parameters, each one's values once, and each point's two values.
 Json sweep_json(const CaseResults& results) {
   if (!results.sweep) return nullptr;
-  Json sweep = {{"parameter", results.sweep->parameter}, {"values", Json::array()}};
+  const SweepResults& swept = *results.sweep;
+  const bool map = !swept.second_parameter.empty();
+  Json sweep = {{"parameter", swept.parameter}, {"values", Json::array()}};
+  if (map) {
+    sweep["values"] = results.scene->sweep->values;
+    sweep["second_parameter"] = swept.second_parameter;
+    sweep["second_values"] = results.scene->second_sweep->values;
+  }
   sweep["points"] = Json::array();
-  for (const SweepPoint& p : results.sweep->points) {
-    sweep["values"].push_back(p.value);
+  for (const SweepPoint& p : swept.points) {
+    if (!map) sweep["values"].push_back(p.value);
     Json rows = Json::array();
     for (const RunRecord& run : p.runs) rows.push_back(run_json(run, *results.scene));
-    sweep["points"].push_back({{"value", p.value}, {"runs", rows}});
+    Json point = {{"value", p.value}};
+    if (map) point["second_value"] = p.second_value;
+    point["runs"] = rows;
+    sweep["points"].push_back(point);
   }
   return sweep;
 }

@@ -8,6 +8,7 @@
 #include "report/claims_page.hpp"
 #include "report/cost_noise.hpp"
 #include "report/format.hpp"
+#include "report/map_page.hpp"
 #include "report/markdown_text.hpp"
 #include "report/order_table.hpp"
 #include "report/scene_description.hpp"
@@ -191,6 +192,7 @@ std::string claims_section(const CaseResults& results, const PlotFiles& plots) {
         render_markdown(claims);
 
   out += sweep_markdown(results, plots.sweep);
+  out += map_markdown(results, plots.map);
   return out;
 }
 

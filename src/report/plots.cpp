@@ -14,6 +14,7 @@
 #include "report/body_panels.hpp"
 #include "report/energy_plot.hpp"
 #include "report/gnuplot.hpp"
+#include "report/map_picture.hpp"
 #include "report/motion_view.hpp"
 #include "report/plot_layout.hpp"
 #include "report/rotation_plot.hpp"
@@ -21,7 +22,9 @@
 #include "report/sweep_page.hpp"
 #include "report/work_precision.hpp"
 #include "run/drawn_bodies.hpp"
+#include "run/engine_catalogue.hpp"
 #include "run/run_summary.hpp"
+#include "scene/backend_names.hpp"
 
 namespace bb {
 
@@ -128,7 +131,13 @@ std::vector<std::string> plot_file_names(const Scene& scene) {
   if (draws_speed(scene)) names.push_back(scene.name + "-speed.svg");
   if (!stopping_bodies(scene).empty()) names.push_back(scene.name + "-stop.svg");
   if (!turning_bodies(scene).empty()) names.push_back(scene.name + "-rotation.svg");
-  if (scene.sweep) names.push_back(scene.name + "-sweep.svg");
+  if (scene.sweep && !scene.second_sweep) names.push_back(scene.name + "-sweep.svg");
+  // A map's pictures: the small multiples and one per backend that can run the case.
+  if (scene.second_sweep) {
+    names.push_back(map_multiples_file(scene));
+    for (const std::string& backend : runnable_backend_names(scene, engine_catalogue()))
+      names.push_back(map_file(scene, backend));
+  }
   for (const char* kind : {"-motion.svg", "-motion-still.svg"}) names.push_back(scene.name + kind);
   return names;
 }
@@ -148,9 +157,22 @@ void write_motion(const CaseResults& results, FileBatch& batch, PlotFiles& files
   batch.write(files.still, motion_still_svg(results, drawn, still_instants(scene)));
 }
 
+/// A map's pictures, which need no gnuplot: written by the program itself.
+void write_map(const CaseResults& results, FileBatch& batch, PlotFiles& files) {
+  if (!results.sweep || results.sweep->second_parameter.empty()) return;
+  const Scene& scene = *results.scene;
+  files.map.multiples = map_multiples_file(scene);
+  batch.write(files.map.multiples, map_multiples_svg(results));
+  for (const std::string& backend : map_backends(results)) {
+    files.map.backends.push_back({backend, map_file(scene, backend)});
+    batch.write(files.map.backends.back().second, map_svg(results, backend));
+  }
+}
+
 PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
   PlotFiles files;
   write_motion(results, batch, files);
+  write_map(results, batch, files);
   if (!gnuplot_available()) {
     files.note +=
         std::string(files.note.empty() ? "" : "; ") + "plots skipped: " + gnuplot_problem();
@@ -184,7 +206,8 @@ PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {
       !turning_bodies(scene).empty() && attempt(file, rotation_plot(results, batch, file)))
     files.rotation = file;
   if (const std::string file = scene.name + "-sweep.svg";
-      results.sweep && attempt(file, sweep_plot(results, batch, file)))
+      results.sweep && results.sweep->second_parameter.empty() &&
+      attempt(file, sweep_plot(results, batch, file)))
     files.sweep = file;
   return files;
 }

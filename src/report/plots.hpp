@@ -11,6 +11,7 @@
 
 #include "files/file_batch.hpp"
 #include "report/gnuplot.hpp"
+#include "report/map_page.hpp"
 #include "run/results.hpp"
 
 namespace bb {
@@ -25,6 +26,7 @@ struct PlotFiles {
   std::string stop;      ///< sliding bodies around their stop; empty when none is observed
   std::string rotation;  ///< turning bodies' angle and spin; empty when none turns
   std::string sweep;     ///< the quantities against the swept parameter; empty without one
+  MapFiles map;          ///< a map's pictures (two [[sweep]]s); empty without one
   std::string motion;    ///< the animated view of the scene (motion_view.hpp); empty when none
   std::string still;     ///< the scene at a few instants, for print
   std::string note;      ///< why plots are missing, when they are

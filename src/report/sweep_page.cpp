@@ -200,6 +200,7 @@ void add_row(TwoColumnPlot& plot, const SweepResults& sweep,
 
 std::string sweep_plot(const CaseResults& results, FileBatch& batch, const std::string& name) {
   if (!results.sweep) return "the case has no sweep";
+  if (!results.sweep->second_parameter.empty()) return "a map is drawn by map_picture.hpp";
   const SweepResults& sweep = *results.sweep;
   const Scene& scene = *results.scene;
   const std::vector<std::string> backends = sweep_backends(sweep);
@@ -288,7 +289,8 @@ std::string every_value_section(const SweepResults& sweep, const std::vector<std
 }  // namespace
 
 std::string sweep_markdown(const CaseResults& results, const std::string& plot) {
-  if (!results.sweep || !results.scene->sweep) return "";
+  // A map's section is map_page.hpp's.
+  if (!results.sweep || !results.scene->sweep || results.scene->second_sweep) return "";
   const SweepResults& sweep = *results.sweep;
   const Scene& scene = *results.scene;
   const Sweep& spec = *scene.sweep;
@@ -303,9 +305,10 @@ std::string sweep_markdown(const CaseResults& results, const std::string& plot) 
       });
   out += fmt::format(
       "The whole case run again at each of {} values of `{}` (from {} to {}), every backend at "
-      "report_dt = {} s. Each value's errors are against the reference at that value{}.{}\n\n",
+      "{}. Each value's errors are against the reference at that value{}.{}\n\n",
       sweep.points.size(), markdown_text(sweep.parameter), short_number(spec.values.front()),
-      short_number(spec.values.back()), format_dt(scene.report_dt),
+      short_number(spec.values.back()),
+      sweep.parameter == "dt" ? "that step" : "report_dt = " + format_dt(scene.report_dt) + " s",
       no_reference > 0 ? fmt::format(" (the reference has no answer at {} of them: there a "
                                      "backend has no errors, only its observables)",
                                      no_reference)

@@ -110,6 +110,7 @@ double steps_time_limit(const Scene& scene, double steps) {
 void check_run_options(const Scene& scene, const RunOptions& options) {
   check_backend_names(scene, options);
   selected_dts(scene, options);
+  if (options.sweep) check_map_size(scene, options);
 }
 
 int progress_units(const Scene& scene, const Registry& registry, const RunOptions& options) {
@@ -119,9 +120,9 @@ int progress_units(const Scene& scene, const Registry& registry, const RunOption
   const int dts = options.dts.empty() ? static_cast<int>(scene.dt.size())
                                       : static_cast<int>(options.dts.size());
   int sweep = 0;
-  if (scene.sweep && options.sweep)
-    for (double value : scene.sweep->values)
-      sweep += in_shard(options.shard, scene, sweep_point_unit(value));
+  if (options.sweep)
+    for (const SweepPoint& point : sweep_points(scene))
+      sweep += in_shard(options.shard, scene, point_unit(scene, point));
   int imported = 0;
   for (const auto& imported_backend : options.imports)
     imported += static_cast<int>(imported_backend->dts().size());

@@ -175,12 +175,17 @@ std::optional<double> run_quantity(const RunRecord& run, const std::string& metr
 /// at report_dt (rows as in CaseResults::runs, without what the page plots over time).
 struct SweepPoint {
   double value = 0.0;
+  double second_value = 0.0;  ///< a map's point: the second [[sweep]]'s value there
   std::vector<RunRecord> runs;
 };
 
+/// A [[sweep]]'s points, or a map's (two [[sweep]]s): then every value of the first with
+/// every value of the second, row by row (point i * Q + j is the first's value i and the
+/// second's value j).
 struct SweepResults {
   std::string parameter;
   std::vector<SweepPoint> points;  ///< in the order of the case's values
+  std::string second_parameter;    ///< a map's second [[sweep]]; "" for one [[sweep]]
 };
 
 /// Wall-clock seconds one case took, by the part of the work: like cost, measured, never

@@ -117,7 +117,7 @@ void require_search_within_cap(const Scene& scene) {
 
 }  // namespace
 
-std::optional<double> theory_limit(const Scene& scene, const std::string& backend) {
+std::optional<double> theory_for(const Scene& scene, const std::string& backend) {
   for (const CourseVariant& v : course_variants(scene))
     if (v.name == backend)
       if (auto limit = theoretical_limit(scene, v.integrator)) return limit->dt;
@@ -128,7 +128,7 @@ StabilityResult find_stability(const Backend& backend, const Scene& scene) {
   require_search_within_cap(scene);
   if (auto r = unsupported(backend, scene)) return *r;
   StabilitySearch search(scene.stability.dt_min, scene.stability.dt_max);
-  const std::optional<double> theory = theory_limit(scene, backend.name());
+  const std::optional<double> theory = theory_for(scene, backend.name());
   while (auto dt = search.next()) search.record(*dt, judge_step(backend, scene, *dt, theory));
   StabilityResult r;
   r.backend = backend.name();

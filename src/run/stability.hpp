@@ -32,8 +32,9 @@ inline constexpr long kTheoryProbeFactor = 10;
 StabilityTrial judge_step(const Backend& backend, const Scene& scene, double dt,
                           std::optional<double> theory);
 
-/// The theory's limit (s) for the course variant named `backend`, where the scene has one.
-std::optional<double> theory_limit(const Scene& scene, const std::string& backend);
+/// The theory's largest stable step (s) for the course variant named `backend` on `scene`
+/// (course/stability_theory.hpp), where theory covers the scene; nullopt otherwise.
+std::optional<double> theory_for(const Scene& scene, const std::string& backend);
 
 /// The whole search for one backend, in this process.
 StabilityResult find_stability(const Backend& backend, const Scene& scene);

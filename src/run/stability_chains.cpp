@@ -28,7 +28,7 @@ StabilityChains::StabilityChains(const Scene& scene, std::vector<const Backend*>
       out_(backends.size()),
       pool_(options_.jobs, options_.isolation) {
   for (const Backend* b : backends)
-    chains_.emplace_back(b, theory_limit(scene, b->name()),
+    chains_.emplace_back(b, theory_for(scene, b->name()),
                          StabilitySearch(scene.stability.dt_min, scene.stability.dt_max));
 }
 

@@ -1,9 +1,14 @@
 #include "run/sweep_runner.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "run/child_pool.hpp"
+#include "run/engine_catalogue.hpp"
 #include "run/wire.hpp"
+#include "scene/backend_names.hpp"
+#include "scene/case_error.hpp"
+#include "scene/case_limits.hpp"
 #include "scene/sweep_parameter.hpp"
 #include "scene/text.hpp"
 
@@ -36,22 +41,98 @@ std::string sweep_point_unit(double value) {
   return "sweep point " + exact_number(value);
 }
 
-Scene sweep_point_scene(const Scene& scene, double value) {
+std::string point_unit(const Scene& scene, const SweepPoint& point) {
+  if (!scene.second_sweep) return sweep_point_unit(point.value);
+  return "map point " + exact_number(point.value) + " " + exact_number(point.second_value);
+}
+
+namespace {
+
+/// The case with its sweep's parameters set at `point`, run at report_dt (a swept step
+/// being that), with no sweep, gates or claims of its own.
+Scene point_scene(const Scene& scene, const SweepPoint& at) {
   Scene point = scene;
-  set_sweep_parameter(point, scene.sweep->parameter, value);
-  point.dt = {scene.report_dt};
+  set_sweep_parameter(point, scene.sweep->parameter, at.value);
+  point.variant = "sweep " + scene.sweep->parameter + " = " + exact_number(at.value);
+  if (scene.second_sweep) {
+    set_sweep_parameter(point, scene.second_sweep->parameter, at.second_value);
+    point.variant += ", " + scene.second_sweep->parameter + " = " + exact_number(at.second_value);
+  }
+  point.dt = {point.report_dt};
   point.sweep.reset();
+  point.second_sweep.reset();
   point.gates.clear();
   point.claims.clear();
-  point.variant = "sweep " + scene.sweep->parameter + " = " + exact_number(value);
   return point;
+}
+
+/// What a point is called in progress lines: "k = 100, dt = 0.01".
+std::string point_label(const Scene& scene, const SweepPoint& at) {
+  std::string label = scene.sweep->parameter + " = " + short_number(at.value);
+  if (scene.second_sweep)
+    label += ", " + scene.second_sweep->parameter + " = " + short_number(at.second_value);
+  return label;
+}
+
+/// The point's values exactly, for its kept result's key.
+std::string point_values(const Scene& scene, const SweepPoint& at) {
+  std::string what = scene.sweep->parameter + " = " + exact_number(at.value);
+  if (scene.second_sweep)
+    what += "; " + scene.second_sweep->parameter + " = " + exact_number(at.second_value);
+  return what;
+}
+
+}  // namespace
+
+Scene sweep_point_scene(const Scene& scene, double value) {
+  return point_scene(scene, SweepPoint{value, 0.0, {}});
+}
+
+Scene map_point_scene(const Scene& scene, double value, double second) {
+  return point_scene(scene, SweepPoint{value, second, {}});
+}
+
+std::vector<SweepPoint> sweep_points(const Scene& scene) {
+  std::vector<SweepPoint> points;
+  if (!scene.sweep) return points;
+  for (double value : scene.sweep->values) {
+    if (!scene.second_sweep) points.push_back({value, 0.0, {}});
+    if (scene.second_sweep)
+      for (double second : scene.second_sweep->values) points.push_back({value, second, {}});
+  }
+  return points;
+}
+
+void check_map_size(const Scene& scene, const RunOptions& options) {
+  if (!scene.second_sweep) return;
+  // The reference and its self-check, then each backend asked for that can run the case.
+  double per_point = 2.0;
+  for (const std::string& name : runnable_backend_names(scene, engine_catalogue()))
+    if (name != kReferenceName && backend_wanted(options, name)) per_point += 1.0;
+  const double points =
+      static_cast<double>(scene.sweep->values.size() * scene.second_sweep->values.size());
+  const double runs = points * per_point;
+  const int shards = options.shard ? options.shard->count : 1;
+  if (runs / shards <= kMaxMapRunsPerMachine) return;
+  const int needed = static_cast<int>(std::ceil(runs / kMaxMapRunsPerMachine));
+  throw CaseError(
+      scene.file, scene.second_sweep->line,
+      "the map is " + std::to_string(scene.sweep->values.size()) + " x " +
+          std::to_string(scene.second_sweep->values.size()) + " points of " +
+          short_number(per_point) +
+          " runs each (the reference, its self-check and every backend): " + short_number(runs) +
+          " runs, more than the " + short_number(kMaxMapRunsPerMachine) + " one machine takes" +
+          (shards > 1 ? " in each of " + std::to_string(shards) + " shards" : "") +
+          "; shard it over " + std::to_string(needed) +
+          " machines or more: `beachball report --shard I/" + std::to_string(needed) +
+          "` on each then `beachball merge`, or `scripts/slurm/submit -n " +
+          std::to_string(needed) + "`, or take fewer points or backends");
 }
 
 SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOptions& options,
                        const std::function<void(const std::string&)>& progress) {
-  const Sweep& sweep = *scene.sweep;
-  SweepResults out{sweep.parameter, {}};
-  out.points.resize(sweep.values.size());
+  SweepResults out{scene.sweep->parameter, sweep_points(scene),
+                   scene.second_sweep ? scene.second_sweep->parameter : ""};
   RunOptions each = options;
   each.dts.clear();
   each.jobs = 1;
@@ -64,20 +145,16 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
   each.cache = nullptr;
   // A point runs the reference, its self-check and every backend, each with its own limit.
   const std::size_t runs = backends_for(scene, registry).all.size() + 2;
-  const double limit =
-      static_cast<double>(runs) * time_limit(scene, scene.report_dt, options.timeout);
   ChildPool pool(options.jobs, options.isolation);
-  for (std::size_t i = 0; i < sweep.values.size(); ++i) {
-    const double value = sweep.values[i];
-    out.points[i].value = value;
-    if (!in_shard(options.shard, scene, sweep_point_unit(value))) continue;
-    const std::string label = sweep.parameter + " = " + short_number(value);
+  for (std::size_t i = 0; i < out.points.size(); ++i) {
+    const SweepPoint at = out.points[i];
+    if (!in_shard(options.shard, scene, point_unit(scene, at))) continue;
+    const std::string label = point_label(scene, at);
     // The point's rows depend on the backends asked for, too.
-    std::string what = sweep.parameter + " = " + exact_number(value) + "; backends:";
+    std::string what = point_values(scene, at) + "; backends:";
     for (const std::string& b : options.backends) what += " " + b;
     const std::string key =
-        options.cache ? options.cache->key(scene, "sweep point", what, sweep_point_unit(value))
-                      : "";
+        options.cache ? options.cache->key(scene, "sweep point", what, point_unit(scene, at)) : "";
     if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
       out.points[i].runs = wire::decode_runs(*kept);
       // Kept, not run: its steps took none of this report's time.
@@ -85,10 +162,13 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
       progress("sweep " + label);
       continue;
     }
+    // A swept step sets the point's own limit.
+    const Scene point = point_scene(scene, at);
+    const double limit =
+        static_cast<double>(runs) * time_limit(point, point.report_dt, options.timeout);
     pool.submit(
         label,
-        [&scene, &registry, &each, value] {
-          const Scene point = sweep_point_scene(scene, value);
+        [&registry, &each, point] {
           CaseResults r = run_case(point, registry, each);
           std::vector<RunRecord> rows{std::move(r.reference_run)};
           for (RunRecord& run : r.runs) rows.push_back(std::move(run));
@@ -101,11 +181,10 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
           return wire::encode(rows);
         },
         limit,
-        [&, i, value, label, key](const ChildOutcome& outcome) {
-          out.points[i].runs =
-              outcome.kind == ChildOutcome::Kind::Done
-                  ? wire::decode_runs(outcome.payload)
-                  : lost_point(sweep_point_scene(scene, value), registry, options, outcome);
+        [&, i, point, label, key](const ChildOutcome& outcome) {
+          out.points[i].runs = outcome.kind == ChildOutcome::Kind::Done
+                                   ? wire::decode_runs(outcome.payload)
+                                   : lost_point(point, registry, options, outcome);
           const std::vector<RunRecord>& rows = out.points[i].runs;
           if (!key.empty())
             options.cache->keep(

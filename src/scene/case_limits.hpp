@@ -4,6 +4,7 @@
 // refused in microseconds, whatever it asks for.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,17 @@ inline constexpr double kMaxSweepWork = 1e9;
 inline constexpr double kMaxContactPairs = 1e6;
 /// Most values one [[sweep]] may take: each is a run of the whole case per backend.
 inline constexpr int kMaxSweepValues = 1000;
+/// Most runs a map (two [[sweep]]s: points x the runs of each point) takes on one machine,
+/// in one report or in one shard of it: a larger map is refused with its run count and told
+/// how many shards it needs (`report --shard I/N`, scripts/slurm/submit).
+inline constexpr double kMaxMapRunsPerMachine = 20000;
+
+/// True when `ratio` is within rounding of a whole number >= 1 (a step that divides a
+/// sample, a sample that divides the duration).
+inline bool is_whole_multiple(double ratio) {
+  const double r = std::round(ratio);
+  return r >= 1.0 && std::abs(ratio - r) <= 1e-9 * r;
+}
 
 /// What a case asks for, as numbers, with the lines to name when a limit is passed.
 struct CaseSize {
@@ -35,12 +47,13 @@ struct CaseSize {
   double sample = 0.0;
   std::vector<double> dt;
   double report_dt = 0.0;
-  double bodies = 0.0;        ///< [[body]] tables plus the [grid]'s particles
-  double fixed_bodies = 0.0;  ///< of those, the fixed ones (two fixed bodies never touch)
-  double springs = 0.0;       ///< [[spring]] tables plus the [grid]'s springs
-  bool all_pairs = false;     ///< some [[contact]] says ["*"]
-  double named_pairs = 0.0;   ///< [[contact]] entries that name one pair
-  double sweep_points = 0.0;  ///< values of the [[sweep]]; 0 without one
+  double bodies = 0.0;          ///< [[body]] tables plus the [grid]'s particles
+  double fixed_bodies = 0.0;    ///< of those, the fixed ones (two fixed bodies never touch)
+  double springs = 0.0;         ///< [[spring]] tables plus the [grid]'s springs
+  bool all_pairs = false;       ///< some [[contact]] says ["*"]
+  double named_pairs = 0.0;     ///< [[contact]] entries that name one pair
+  double sweep_points = 0.0;    ///< values of the [[sweep]] (of a map: their product); 0: none
+  double sweep_least_dt = 0.0;  ///< the smallest value of a [[sweep]] of "dt"; 0: none
   int case_line = 1;
   int sample_line = 0;
   int dt_line = 0;

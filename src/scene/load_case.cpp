@@ -20,18 +20,12 @@ namespace {
 
 using load::show;
 
-/// True when `ratio` is within rounding of a whole number >= 1.
-bool is_whole(double ratio) {
-  const double r = std::round(ratio);
-  return r >= 1.0 && std::abs(ratio - r) <= 1e-9 * r;
-}
-
 void read_timing(TomlReader& root, Scene& scene) {
   scene.duration = root.number("duration");
   load::require_range(root, "duration", scene.duration, 0.0, 0.0, false);
   scene.sample = root.number("sample");
   load::require_range(root, "sample", scene.sample, 0.0, 0.0, false);
-  if (!is_whole(scene.duration / scene.sample))
+  if (!is_whole_multiple(scene.duration / scene.sample))
     root.fail(root.line_of("duration"), "'duration' (" + show(scene.duration) +
                                             " s) must be a whole number of samples of " +
                                             show(scene.sample) + " s");
@@ -40,7 +34,7 @@ void read_timing(TomlReader& root, Scene& scene) {
     if (step <= 0.0) root.fail(root.line_of("dt"), "every 'dt' must be greater than 0");
     if (step > scene.duration)
       root.fail(root.line_of("dt"), "'dt' " + show(step) + " s is longer than the duration");
-    if (!is_whole(scene.sample / step))
+    if (!is_whole_multiple(scene.sample / step))
       root.fail(root.line_of("dt"), "'dt' " + show(step) + " s does not divide 'sample' (" +
                                         show(scene.sample) + " s) into whole steps");
   }
@@ -88,22 +82,45 @@ void read_header(TomlReader& root, Scene& scene) {
   load::require_vector_range(root, "gravity", scene.gravity, VectorKind::Gravity);
 }
 
-/// The number of points a [[sweep]] asks for, read ahead of the sweep itself: 0 without one
-/// or when its values are malformed (read_sweep names the problem).
-std::pair<double, int> sweep_points(TomlReader& root) {
-  const std::vector<const toml::table*> sweeps = root.tables("sweep");
-  if (sweeps.empty()) return {0.0, 0};
-  const toml::table& t = *sweeps.front();
+/// The number of values one [[sweep]] table asks for and the line of its values, read ahead
+/// of the sweep itself: 0 when they are malformed (read_sweep names the problem).
+std::pair<double, int> sweep_count(const toml::table& t, int fallback_line) {
   if (const toml::array* values = t.get_as<toml::array>("values"))
     return {values->size() <= kMaxSweepValues ? static_cast<double>(values->size()) : 0.0,
-            node_line(*values, root.line())};
+            node_line(*values, fallback_line)};
   if (const toml::array* range = t.get_as<toml::array>("range"); range && range->size() == 3) {
     const std::optional<double> count = (*range)[2].value<double>();
     const bool valid =
         count && *count == std::floor(*count) && *count >= 2 && *count <= kMaxSweepValues;
-    return {valid ? *count : 0.0, node_line(*range, root.line())};
+    return {valid ? *count : 0.0, node_line(*range, fallback_line)};
   }
   return {0.0, 0};
+}
+
+/// The smallest value a [[sweep]] of "dt" asks for (a range's first), read ahead; 0 for
+/// another parameter or none it can read (read_sweep names the problem).
+double least_swept_step(const toml::table& t) {
+  if (t["parameter"].value<std::string>() != "dt") return 0.0;
+  const toml::array* list = t.get_as<toml::array>("values");
+  if (!list) list = t.get_as<toml::array>("range");
+  double least = 0.0;
+  if (list)
+    for (std::size_t i = 0; i < list->size() && (t.contains("values") || i == 0); ++i)
+      if (const std::optional<double> v = (*list)[i].value<double>(); v && *v > 0.0)
+        least = least > 0.0 ? std::min(least, *v) : *v;
+  return least;
+}
+
+/// The points the [[sweep]]s ask for (a map's: both counts multiplied), the line of the
+/// last one's values and the smallest swept step, read ahead: 0 points without one.
+void read_sweep_size(TomlReader& root, CaseSize& size) {
+  const std::vector<const toml::table*> sweeps = root.tables("sweep");
+  for (std::size_t i = 0; i < sweeps.size() && i < 2; ++i) {
+    const auto [count, line] = sweep_count(*sweeps[i], root.line());
+    size.sweep_points = i == 0 ? count : size.sweep_points * count;
+    size.sweep_line = line;
+    if (const double step = least_swept_step(*sweeps[i]); step > 0.0) size.sweep_least_dt = step;
+  }
 }
 
 /// What the case asks for, from the bodies read so far, the [grid]'s numbers and a look
@@ -133,7 +150,7 @@ CaseSize case_size(TomlReader& root, const Scene& scene,
     size.all_pairs = size.all_pairs || every;
     size.named_pairs += every ? 0.0 : 1.0;
   }
-  std::tie(size.sweep_points, size.sweep_line) = sweep_points(root);
+  read_sweep_size(root, size);
   return size;
 }
 

@@ -1,5 +1,5 @@
 // [[sweep]] of a case file: one parameter, its values (a list or a range), and what the
-// page says beside it.
+// page says beside it; a second [[sweep]] makes the pair a map.
 #include <algorithm>
 #include <cmath>
 
@@ -69,18 +69,15 @@ void refuse_swept_overlaps(const TomlReader& r, const Scene& scene, const Sweep&
   }
 }
 
-}  // namespace
+/// Two parameters of one part of the case (the ground's two frictions, the bodies' positions
+/// and sizes, the waves) bound each other, so a map checks them together at every point;
+/// any other pair is checked one value at a time.
+bool bound_together(const std::string& a, const std::string& b) {
+  return sweep_path_parts(a)[0] == sweep_path_parts(b)[0] && a != "dt";
+}
 
-void read_sweep(TomlReader& root, Scene& scene) {
-  const std::vector<const toml::table*> sweeps = root.tables("sweep");
-  if (sweeps.empty()) return;
-  TomlReader r = sub_reader(root, *sweeps.front(), "[[sweep]]");
-  if (sweeps.size() > 1) {
-    const TomlReader second = sub_reader(root, *sweeps[1], "[[sweep]]");
-    second.fail(second.line(),
-                "a case varies one parameter; this is its second [[sweep]] (the first is on line " +
-                    std::to_string(r.line()) + ")");
-  }
+/// One [[sweep]] table: its parameter and values, each value checked alone.
+Sweep read_one_sweep(TomlReader& r, const Scene& scene) {
   Sweep s;
   s.line = r.line();
   s.parameter = r.string("parameter");
@@ -99,6 +96,50 @@ void read_sweep(TomlReader& root, Scene& scene) {
     if (const std::string problem = sweep_value_problem(scene, s.parameter, v); !problem.empty())
       r.fail(r.line_of(key), "[[sweep]] " + problem);
   refuse_swept_overlaps(r, scene, s, key);
+  return s;
+}
+
+/// The second [[sweep]] of a map, checked at every value of the first where the two bound
+/// each other; it takes no page keys of its own (the map's page is the first's).
+Sweep read_second_sweep(TomlReader& r, const Scene& scene, const Sweep& first) {
+  Sweep s = read_one_sweep(r, scene);
+  if (s.parameter == first.parameter)
+    r.fail(r.line_of("parameter"),
+           "[[sweep]] 'parameter' '" + s.parameter + "' is the first [[sweep]]'s too (line " +
+               std::to_string(first.line) + "); a map varies two parameters");
+  for (const char* key : {"published", "onset", "onset_above"})
+    if (r.has(key))
+      r.fail(r.line_of(key), std::string("[[sweep]] '") + key +
+                                 "' belongs in the first [[sweep]] of a map (line " +
+                                 std::to_string(first.line) + "), whose page the map is");
+  if (!bound_together(first.parameter, s.parameter)) return s;
+  const std::string key = r.has("values") ? "values" : "range";
+  for (double a : first.values) {
+    Scene at = scene;
+    set_sweep_parameter(at, first.parameter, a);
+    for (double b : s.values)
+      if (const std::string problem = sweep_value_problem(at, s.parameter, b); !problem.empty())
+        r.fail(r.line_of(key), "[[sweep]] at " + first.parameter + " = " + short_number(a) +
+                                   " (the first [[sweep]]), " + problem);
+    refuse_swept_overlaps(r, at, s, key);
+  }
+  return s;
+}
+
+}  // namespace
+
+void read_sweep(TomlReader& root, Scene& scene) {
+  const std::vector<const toml::table*> sweeps = root.tables("sweep");
+  if (sweeps.empty()) return;
+  TomlReader r = sub_reader(root, *sweeps.front(), "[[sweep]]");
+  if (sweeps.size() > 2) {
+    const TomlReader third = sub_reader(root, *sweeps[2], "[[sweep]]");
+    third.fail(third.line(),
+               "a case varies one parameter, or two as a map; this is its third [[sweep]] (the "
+               "first is on line " +
+                   std::to_string(r.line()) + ")");
+  }
+  Sweep s = read_one_sweep(r, scene);
   s.published = r.string_or("published", "");
   s.onset = r.string_or("onset", "");
   if (!s.onset.empty() && !MetricNames(scene).contains(s.onset))
@@ -109,6 +150,10 @@ void read_sweep(TomlReader& root, Scene& scene) {
   s.onset_above = r.number_or("onset_above", 0.0);
   r.finish();
   scene.sweep = s;
+  if (sweeps.size() < 2) return;
+  TomlReader second = sub_reader(root, *sweeps[1], "[[sweep]]");
+  scene.second_sweep = read_second_sweep(second, scene, s);
+  second.finish();
 }
 
 }  // namespace bb::load

@@ -354,6 +354,9 @@ struct Study {
   std::vector<Gate> gates;
   std::vector<Claim> claims;
   std::optional<Sweep> sweep;
+  /// A second [[sweep]]: with it the two make a map, the case run at every value of `sweep`
+  /// with every value of this one (sweep_runner.hpp); it may be the step, "dt".
+  std::optional<Sweep> second_sweep;
   ReportOptions report;
   StabilityOptions stability;
   BaselineOptions baseline;

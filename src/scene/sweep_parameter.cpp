@@ -5,6 +5,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "scene/case_limits.hpp"
 #include "scene/text.hpp"
 #include "scene/vector_limits.hpp"
 #include "scene/wave_limits.hpp"
@@ -178,11 +179,30 @@ const char* kKnownPaths =
     "body.<name>.plate.k|coefficient|area (k with the course law, coefficient the quadratic), "
     "ground.restitution|friction_static|friction_kinetic|normal (an angle in degrees), "
     "air.density, air.wind.x|y|z, gravity.x|y|z, waves.amplitude|wavenumber|speed, "
-    "spring.<n>.stiffness|damping (the n-th [[spring]], from 1), grid.stiffness|damping";
+    "spring.<n>.stiffness|damping (the n-th [[spring]], from 1), grid.stiffness|damping, "
+    "dt (the step, report_dt)";
+
+/// The step as a parameter: each point runs every backend at that step alone.
+constexpr const char* kStep = "dt";
+
+/// Why `value` cannot be the step, as the loader checks each of 'dt' ("" when it can);
+/// `at` names the value.
+std::string step_value_problem(const Scene& scene, const std::string& at, double value) {
+  if (!(value > 0.0 && value <= scene.duration))
+    return at + " must be greater than 0 and at most the duration, " +
+           short_number(scene.duration) + " s";
+  if (!is_whole_multiple(scene.sample / value))
+    return at + " does not divide 'sample' (" + short_number(scene.sample) + " s) into whole steps";
+  if (scene.duration / value > kMaxStepsPerRun)
+    return at + " is " + short_number(scene.duration / value) +
+           " steps over the duration; a run may take at most " + short_number(kMaxStepsPerRun);
+  return "";
+}
 
 }  // namespace
 
 std::string sweep_path_problem(const Scene& scene, const std::string& path) {
+  if (path == kStep) return "";
   const std::vector<std::string> p = sweep_path_parts(path);
   const bool found = (p.size() == 2 && p[0] == "ground" && p[1] == "normal" && scene.ground) ||
                      target(scene, p) != nullptr;
@@ -223,6 +243,7 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
   const std::string& field = p[0] == "body" && p[2] != "sail" && p[2] != "plate" ? p[2] : p.back();
   const std::string at = "the value " + shortest_number(value) + " for '" + path + "'";
   if (!std::isfinite(value)) return at + " is not a finite number";
+  if (path == kStep) return step_value_problem(scene, at, value);
   if (field == "mass" && !(value >= kLeastMass && value <= kMostMass))
     return at + " must be between " + short_number(kLeastMass) + " and " + short_number(kMostMass) +
            " kg";
@@ -283,6 +304,7 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
 }
 
 double sweep_parameter_value(const Scene& scene, const std::string& path) {
+  if (path == kStep) return scene.report_dt;
   const std::vector<std::string> p = sweep_path_parts(path);
   if (p[0] == "ground" && p.size() == 2 && p[1] == "normal") {
     const auto [up, across] = tilt_frame(*scene.ground);
@@ -292,6 +314,11 @@ double sweep_parameter_value(const Scene& scene, const std::string& path) {
 }
 
 void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
+  if (path == kStep) {
+    scene.report_dt = value;
+    scene.dt = {value};
+    return;
+  }
   const std::vector<std::string> p = sweep_path_parts(path);
   if (!(p[0] == "ground" && p.size() == 2 && p[1] == "normal")) {
     *target(scene, p) = value;

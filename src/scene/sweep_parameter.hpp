@@ -1,5 +1,6 @@
 // The parameter a [[sweep]] varies: a path into the case ("body.ball.position.y",
-// "ground.restitution", "ground.normal" as an angle, "spring.1.stiffness", "grid.damping", ...)
+// "ground.restitution", "ground.normal" as an angle, "spring.1.stiffness", "grid.damping", the
+// step "dt", ...)
 // read from and written into a loaded Scene, so every point of a sweep is the same case with one
 // number changed.
 #pragma once
@@ -27,12 +28,13 @@ std::string sweep_value_problem(const Scene& scene, const std::string& path, dou
 /// The case's own value at `path`: for "ground.normal" its tilt from level in degrees.
 double sweep_parameter_value(const Scene& scene, const std::string& path);
 
-/// `scene` with `value` at `path`. "ground.normal" tilts the ground by `value` degrees from
-/// level, in the direction the case tilts it (towards +x when the case's ground is level),
-/// about the ground's point, and turns the bodies and hinges with it, as a table tilted
-/// with what stands on it; gravity, the air and the wind stay. From a level case the scene
-/// is, to the bit, the case written by hand at that tilt (normal [sin, cos], positions and
-/// velocities turned by cos and sin of degrees pi / 180, each 2D `angle` less the tilt).
+/// `scene` with `value` at `path`; "dt" makes `value` the case's only step and report_dt.
+/// "ground.normal" tilts the ground by `value` degrees from level, in the direction the case tilts
+/// it (towards +x when the case's ground is level), about the ground's point, and turns the bodies
+/// and hinges with it, as a table tilted with what stands on it; gravity, the air and the wind
+/// stay. From a level case the scene is, to the bit, the case written by hand at that tilt (normal
+/// [sin, cos], positions and velocities turned by cos and sin of degrees pi / 180, each 2D `angle`
+/// less the tilt).
 void set_sweep_parameter(Scene& scene, const std::string& path, double value);
 
 /// The values `[from, to, count]` of a range: count points, evenly spaced, both ends in.

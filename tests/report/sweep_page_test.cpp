@@ -42,11 +42,12 @@ onset_above = 2.5
 )");
   CaseResults results;
   results.scene = &scene;
-  SweepResults sweep{"air.density", {}};
+  SweepResults sweep{"air.density", {}, ""};
   const double smooth[] = {1.0, 2.0, 3.0};
   const double bumpy[] = {1.0, 4.0, 2.0};
   for (int k = 0; k < 3; ++k)
     sweep.points.push_back({1.0 + k,
+                            0.0,
                             {row("reference", smooth[k], ""), row("bumpy", bumpy[k], ""),
                              row("silent", std::nullopt, "it never got going")}});
   results.sweep = sweep;
@@ -108,12 +109,13 @@ values = [1.0, 2.0, 3.0, 4.0, 5.0]
 )");
   CaseResults results;
   results.scene = &scene;
-  SweepResults sweep{"air.density", {}};
+  SweepResults sweep{"air.density", {}, ""};
   for (int k = 0; k < 5; ++k) {
     const double v = 1.0 + k;
     // The reference has no answer at the first two values.
     const std::optional<double> reference = k < 2 ? std::nullopt : std::optional(v);
     sweep.points.push_back({v,
+                            0.0,
                             {row("reference", reference, ""), row("course/rk4", v + 0.1, ""),
                              row("bullet", k == 3 ? 490.0 : v - 0.1, "")}});
   }

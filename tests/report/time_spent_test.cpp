@@ -119,7 +119,7 @@ TEST(TimeSpent, PrintsTheWholeReportsRatioToItsFloor) {
   r.stability.resize(2);
   r.stability[0].step_seconds = 0.75;
   r.stability[1].step_seconds = 0.25;
-  r.sweep = SweepResults{"drop height", {}};
+  r.sweep = SweepResults{"drop height", {}, ""};
   r.sweep->points.resize(2);
   r.sweep->points[0].runs.resize(1);
   r.sweep->points[0].runs[0].step_seconds = 0.5;
