@@ -25,6 +25,13 @@ std::pair<bool, bool> worse_and_better(const std::vector<CaseResults>& all) {
   return {worse, better};
 }
 
+/// Each case's options as a check runs them: with no sweep or map, so that their size is no
+/// reason to refuse it.
+void check_options_of_a_check(const std::vector<Scene>& scenes, RunOptions options) {
+  options.sweep = false;
+  for (const Scene& scene : scenes) check_run_options(scene, options);
+}
+
 }  // namespace
 
 int check_command(const std::vector<std::string>& paths, const std::string& junit,
@@ -32,10 +39,7 @@ int check_command(const std::vector<std::string>& paths, const std::string& juni
   const std::vector<Scene> scenes = load_cases(paths);
   const RunOptions options = with_imports(scenes, given);
   const Registry registry = Registry::load();
-  // A check runs no sweep or map: their size is no reason to refuse it.
-  RunOptions without_sweeps = options;
-  without_sweeps.sweep = false;
-  for (const Scene& scene : scenes) check_run_options(scene, without_sweeps);
+  check_options_of_a_check(scenes, options);
   // The JUnit file and the baseline are checked before the runs, not found bad after them.
   if (!junit.empty()) check_output_file(junit);
   const std::map<std::string, KeptResults> kept =
