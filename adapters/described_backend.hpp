@@ -1,4 +1,4 @@
-// A built-in engine's backends as the SDK's DeclaredBackend (scene/declared_backend.hpp), the
+// A built-in engine's backends as the SDK's DeclaredBackend (seam/declared_backend.hpp), the
 // way a plugin built outside the tree makes its own: what each declares is read from the
 // engine's description (adapters/<engine>/<engine>_engine.hpp), so the two cannot disagree.
 // One plugin gives all of an engine's variants, each chosen at run time by how it starts.
@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "scene/declared_backend.hpp"
-#include "scene/engine_catalogue.hpp"
+#include "seam/declared_backend.hpp"
+#include "seam/engine_catalogue.hpp"
 
 namespace bb {
 

@@ -5,16 +5,16 @@
 // rounding of the engine's arithmetic (a free body slower than that by more than the rounding
 // is not held); Bullet keeps the spin and turns the orientation by less, so its body leaves
 // the step faster than the cap. The first body seen at or past a cap is reported as a Cap
-// (scene/backend.hpp).
+// (seam/backend.hpp).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "scene/backend.hpp"
-#include "scene/scene.hpp"
-#include "scene/text.hpp"
+#include "model/text.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/backend.hpp"
-#include "scene/contact_pairs.hpp"
-#include "scene/scene.hpp"
+#include "model/contact_pairs.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <string>
 
-#include "scene/backend.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

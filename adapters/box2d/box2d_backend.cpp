@@ -16,9 +16,9 @@
 #include "box2d_hinges.hpp"
 #include "box2d_vectors.hpp"
 #include "physics/step_start.hpp"
-#include "scene/engine_catalogue.hpp"
-#include "scene/engine_keys.hpp"
-#include "scene/plugin_api.hpp"
+#include "seam/engine_catalogue.hpp"
+#include "seam/engine_keys.hpp"
+#include "seam/plugin_api.hpp"
 
 namespace bb {
 

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "scene/backend.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

@@ -3,7 +3,7 @@
 
 #include <box2d/b2_math.h>
 
-#include "scene/vec3.hpp"
+#include "model/vec3.hpp"
 
 namespace bb {
 

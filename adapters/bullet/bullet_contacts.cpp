@@ -4,7 +4,7 @@
 
 #include "../engine_friction.hpp"
 #include "bullet_vectors.hpp"
-#include "scene/contact_pairs.hpp"
+#include "model/contact_pairs.hpp"
 
 namespace bb {
 

@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb {
 

@@ -4,7 +4,7 @@
 // with their defaults.
 #pragma once
 
-#include "scene/engine_catalogue.hpp"
+#include "seam/engine_catalogue.hpp"
 
 namespace bb {
 

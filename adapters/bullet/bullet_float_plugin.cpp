@@ -6,7 +6,7 @@
 #include "bullet_engine.hpp"
 #include "bullet_starts.hpp"
 #include "bullet_vectors.hpp"
-#include "scene/plugin_api.hpp"
+#include "seam/plugin_api.hpp"
 
 namespace {
 

@@ -9,9 +9,10 @@
 #include <string>
 
 #include "bullet_engine.hpp"
-#include "scene/backend.hpp"
-#include "scene/engine_keys.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
+#include "seam/engine_keys.hpp"
+#include "seam/engine_tables.hpp"
 
 namespace bb {
 

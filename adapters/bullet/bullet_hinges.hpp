@@ -7,8 +7,8 @@
 #include <memory>
 #include <vector>
 
-#include "scene/backend.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

@@ -5,7 +5,7 @@
 
 #include "../engine_friction.hpp"
 #include "bullet_engine.hpp"
-#include "scene/engine_keys.hpp"
+#include "seam/engine_keys.hpp"
 
 namespace bb {
 

@@ -7,8 +7,9 @@
 #include <vector>
 
 #include "bullet_contacts.hpp"
-#include "scene/backend.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
+#include "seam/engine_tables.hpp"
 
 namespace bb {
 

@@ -19,9 +19,9 @@
 #include "bullet_engine.hpp"
 #include "bullet_vectors.hpp"
 #include "physics/step_start.hpp"
-#include "scene/engine_catalogue.hpp"
-#include "scene/engine_keys.hpp"
-#include "scene/plugin_api.hpp"
+#include "seam/engine_catalogue.hpp"
+#include "seam/engine_keys.hpp"
+#include "seam/plugin_api.hpp"
 
 namespace bb {
 

@@ -6,7 +6,7 @@
 
 #include "bullet_engine.hpp"
 #include "bullet_vectors.hpp"
-#include "scene/engine_keys.hpp"
+#include "seam/engine_keys.hpp"
 
 namespace bb {
 

@@ -15,8 +15,9 @@
 #include <memory>
 #include <vector>
 
-#include "scene/backend.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
+#include "seam/engine_tables.hpp"
 
 namespace bb {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "scene/vec3.hpp"
+#include "model/vec3.hpp"
 
 namespace bb {
 

@@ -20,15 +20,15 @@
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
 #include "kept_model.hpp"
+#include "model/contact_pairs.hpp"
 #include "mujoco_engine.hpp"
 #include "mujoco_model.hpp"
 #include "mujoco_warnings.hpp"
 #include "physics/hinge_motion.hpp"
 #include "physics/step_start.hpp"
-#include "scene/contact_pairs.hpp"
-#include "scene/engine_catalogue.hpp"
-#include "scene/engine_keys.hpp"
-#include "scene/plugin_api.hpp"
+#include "seam/engine_catalogue.hpp"
+#include "seam/engine_keys.hpp"
+#include "seam/plugin_api.hpp"
 
 namespace bb {
 

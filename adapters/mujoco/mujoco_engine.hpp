@@ -6,7 +6,7 @@
 // (`mujoco/implicit`).
 #pragma once
 
-#include "scene/engine_catalogue.hpp"
+#include "seam/engine_catalogue.hpp"
 
 namespace bb {
 

@@ -9,7 +9,7 @@
 
 #include "../engine_friction.hpp"
 #include "../point_body.hpp"
-#include "scene/contact_pairs.hpp"
+#include "model/contact_pairs.hpp"
 
 namespace bb {
 

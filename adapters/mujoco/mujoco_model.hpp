@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb {
 

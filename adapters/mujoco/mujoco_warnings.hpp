@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/backend.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

@@ -17,9 +17,9 @@
 #include "ode_engine.hpp"
 #include "ode_hinges.hpp"
 #include "physics/step_start.hpp"
-#include "scene/engine_catalogue.hpp"
-#include "scene/engine_keys.hpp"
-#include "scene/plugin_api.hpp"
+#include "seam/engine_catalogue.hpp"
+#include "seam/engine_keys.hpp"
+#include "seam/plugin_api.hpp"
 
 namespace bb {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "../engine_friction.hpp"
-#include "scene/contact_pairs.hpp"
+#include "model/contact_pairs.hpp"
 
 namespace bb {
 

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb {
 

@@ -2,7 +2,7 @@
 // added by hand, on spring scenes only), its settings keys and their defaults.
 #pragma once
 
-#include "scene/engine_catalogue.hpp"
+#include "seam/engine_catalogue.hpp"
 
 namespace bb {
 

@@ -6,8 +6,8 @@
 
 #include "run/baseline.hpp"
 #include "run/engine_catalogue.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/case_error.hpp"
+#include "study/backend_names.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

@@ -5,7 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
 #include "report/format.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

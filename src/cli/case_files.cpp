@@ -3,7 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "run/case_loading.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

@@ -3,7 +3,7 @@
 #include "cli/commands.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/outside_plugins.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb::cli {
 

@@ -16,10 +16,10 @@
 #include "cli/progress.hpp"
 #include "files/atomic_file.hpp"
 #include "files/result_cache.hpp"
+#include "model/text.hpp"
 #include "run/build_identity.hpp"
 #include "run/stability.hpp"
-#include "scene/case_error.hpp"
-#include "scene/text.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

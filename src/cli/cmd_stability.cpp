@@ -3,6 +3,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
 #include "cli/progress.hpp"
+#include "model/text.hpp"
 #include "report/json_writer.hpp"
 #include "report/markdown_text.hpp"
 #include "report/summary_tables.hpp"
@@ -10,9 +11,8 @@
 #include "run/engine_catalogue.hpp"
 #include "run/interrupt.hpp"
 #include "run/stability.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/case_error.hpp"
-#include "scene/text.hpp"
+#include "study/backend_names.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

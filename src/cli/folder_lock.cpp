@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

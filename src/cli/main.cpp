@@ -14,7 +14,7 @@
 #include "run/interrupt.hpp"
 #include "run/outside_plugins.hpp"
 #include "run/run_cache.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

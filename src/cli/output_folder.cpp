@@ -18,7 +18,7 @@
 #include "files/atomic_file.hpp"
 #include "files/folder_manifest.hpp"
 #include "run/trajectory_names.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb::cli {
 

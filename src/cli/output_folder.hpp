@@ -11,7 +11,7 @@
 #include "cli/folder_lock.hpp"
 #include "files/file_batch.hpp"
 #include "files/owned_temporary.hpp"
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb::cli {
 

@@ -1,9 +1,9 @@
-// How far apart a contact pair of the scene (scene/contact_pairs.hpp) stands, from the
+// How far apart a contact pair of the scene (model/contact_pairs.hpp) stands, from the
 // bodies' positions: the geometry the course methods and the reference share.
 #pragma once
 
 #include "contact/contact_geometry.hpp"
-#include "scene/contact_pairs.hpp"
+#include "model/contact_pairs.hpp"
 
 namespace bb::contact {
 

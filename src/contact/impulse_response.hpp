@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb::contact {
 

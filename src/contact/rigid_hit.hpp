@@ -9,7 +9,7 @@
 
 #include <Eigen/Geometry>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb::contact {
 

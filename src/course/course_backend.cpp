@@ -8,10 +8,10 @@
 #include "course/hinge_turning.hpp"
 #include "course/integrators.hpp"
 #include "course/rigid_rotation.hpp"
+#include "model/contact_pairs.hpp"
+#include "model/motion.hpp"
 #include "physics/equations_of_motion.hpp"
 #include "physics/step_start.hpp"
-#include "scene/contact_pairs.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 

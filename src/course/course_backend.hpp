@@ -2,8 +2,8 @@
 // and one friction rule per variant.
 #pragma once
 
-#include "scene/backend.hpp"
-#include "scene/backend_names.hpp"
+#include "seam/backend.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

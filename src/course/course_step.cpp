@@ -1,7 +1,7 @@
 #include "course/course_step.hpp"
 
 #include "course/plank_hit.hpp"
-#include "scene/backend.hpp"
+#include "seam/backend.hpp"
 
 namespace bb::course {
 

@@ -13,7 +13,7 @@
 #include "course/friction_rules.hpp"
 #include "course/integrators.hpp"
 #include "course/kinematic_spin.hpp"
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb::course {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "contact/contact_pairs.hpp"
-#include "scene/backend.hpp"
+#include "seam/backend.hpp"
 
 namespace bb::course {
 

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "course/friction_rules.hpp"
-#include "scene/contact_pairs.hpp"
-#include "scene/scene.hpp"
+#include "model/contact_pairs.hpp"
+#include "model/world.hpp"
 
 namespace bb::course {
 

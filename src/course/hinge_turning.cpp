@@ -2,8 +2,8 @@
 
 #include "contact/contact_geometry.hpp"
 #include "course/plank_inertia.hpp"
-#include "scene/contact_pairs.hpp"
-#include "scene/vec3.hpp"
+#include "model/contact_pairs.hpp"
+#include "model/vec3.hpp"
 
 namespace bb::course {
 

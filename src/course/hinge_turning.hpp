@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb::course {
 

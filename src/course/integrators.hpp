@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/vec3.hpp"
+#include "model/vec3.hpp"
 
 namespace bb::course {
 

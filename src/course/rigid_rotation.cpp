@@ -1,6 +1,6 @@
 #include "course/rigid_rotation.hpp"
 
-#include "scene/vec3.hpp"
+#include "model/vec3.hpp"
 
 namespace bb::course {
 

@@ -5,8 +5,8 @@
 #include <complex>
 
 #include "course/integrators.hpp"
+#include "model/motion.hpp"
 #include "physics/state_forces.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 

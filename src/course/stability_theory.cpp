@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "course/spring_modes.hpp"
+#include "model/text.hpp"
 #include "physics/terminal_fall.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

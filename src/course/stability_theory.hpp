@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb {
 

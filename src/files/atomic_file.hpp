@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "scene/text.hpp"
+#include "model/text.hpp"
 
 namespace bb {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "scene/text.hpp"
+#include "model/text.hpp"
 
 namespace bb {
 

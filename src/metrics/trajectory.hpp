@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "scene/event_trace.hpp"
-#include "scene/state.hpp"
+#include "model/state.hpp"
+#include "seam/event_trace.hpp"
 
 namespace bb {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/text.hpp"
 #include "observe/hinge_observables.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

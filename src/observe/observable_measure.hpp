@@ -7,7 +7,7 @@
 #include <string>
 
 #include "metrics/trajectory.hpp"
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

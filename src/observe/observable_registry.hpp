@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "observe/observable_measure.hpp"
-#include "scene/case_vocabulary.hpp"
+#include "study/case_vocabulary.hpp"
 
 namespace bb {
 

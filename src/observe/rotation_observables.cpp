@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "model/text.hpp"
 #include "observe/event_observables.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

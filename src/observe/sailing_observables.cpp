@@ -7,10 +7,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/text.hpp"
 #include "observe/observable_measure.hpp"
 #include "observe/stop_observables.hpp"
 #include "physics/boat_frame.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/motion.hpp"
 #include "observe/hinge_observables.hpp"
 #include "observe/observable_registry.hpp"
 #include "observe/stop_observables.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 

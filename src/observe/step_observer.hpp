@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
+#include "model/peaks.hpp"
+#include "model/state.hpp"
 #include "observe/observable_measure.hpp"
-#include "scene/event_trace.hpp"
-#include "scene/peaks.hpp"
-#include "scene/scene.hpp"
-#include "scene/state.hpp"
+#include "seam/event_trace.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/motion.hpp"
 #include "observe/step_observer.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 

@@ -1,7 +1,7 @@
 #include "observe/stop_observables.hpp"
 
+#include "model/text.hpp"
 #include "observe/step_observer.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

@@ -2,7 +2,7 @@
 // the direction across it to port (the body's y axis), from its orientation.
 #pragma once
 
-#include "scene/vec3.hpp"
+#include "model/vec3.hpp"
 
 namespace bb {
 

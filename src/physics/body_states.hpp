@@ -4,7 +4,7 @@
 // they hand the force model, so that a force is written once for all of them.
 #pragma once
 
-#include "scene/vec3.hpp"
+#include "model/vec3.hpp"
 
 namespace bb {
 

@@ -1,6 +1,6 @@
 #include "physics/energy.hpp"
 
-#include "scene/motion.hpp"
+#include "model/motion.hpp"
 
 namespace bb {
 

@@ -6,9 +6,9 @@
 #include <limits>
 #include <queue>
 
+#include "model/motion.hpp"
+#include "model/text.hpp"
 #include "physics/state_forces.hpp"
-#include "scene/motion.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

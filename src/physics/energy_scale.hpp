@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb {
 

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb {
 

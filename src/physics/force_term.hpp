@@ -7,8 +7,8 @@
 #include <memory>
 #include <vector>
 
+#include "model/world.hpp"
 #include "physics/body_states.hpp"
-#include "scene/scene.hpp"
 
 namespace bb {
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Geometry>
 
-#include "scene/scene.hpp"
+#include "model/world.hpp"
 
 namespace bb {
 

@@ -1,8 +1,8 @@
 // Springs of seed section 7 as a force term: Hooke's law with a damper along each spring
-// (scene/spring_forces.hpp holds the loop, inlined here).
+// (model/spring_forces.hpp holds the loop, inlined here).
+#include "model/spring_forces.hpp"
 #include "physics/cross_matrix.hpp"
 #include "physics/force_term.hpp"
-#include "scene/spring_forces.hpp"
 
 namespace bb {
 

@@ -4,8 +4,8 @@
 
 #include <vector>
 
+#include "model/state.hpp"
 #include "physics/force_model.hpp"
-#include "scene/state.hpp"
 
 namespace bb {
 

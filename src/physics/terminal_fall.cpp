@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "model/motion.hpp"
 #include "physics/state_forces.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 

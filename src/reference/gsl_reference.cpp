@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <memory>
 
+#include "model/text.hpp"
 #include "physics/force_model.hpp"
 #include "physics/state_forces.hpp"
 #include "reference/hybrid_integrator.hpp"
@@ -12,7 +13,6 @@
 #include "reference/scene_model.hpp"
 #include "reference/sliding_modes.hpp"
 #include "reference/wave_surface.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

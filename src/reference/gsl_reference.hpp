@@ -5,8 +5,8 @@
 // Its self-check solves again with other methods (rkck, bsimp) and other step control.
 #pragma once
 
-#include "scene/backend.hpp"
-#include "scene/backend_names.hpp"
+#include "seam/backend.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

@@ -7,11 +7,12 @@
 #include <optional>
 #include <vector>
 
+#include "model/contact_pairs.hpp"
+#include "model/peaks.hpp"
+#include "model/world.hpp"
 #include "reference/hybrid_integrator.hpp"
-#include "scene/contact_pairs.hpp"
-#include "scene/event_trace.hpp"
-#include "scene/peaks.hpp"
-#include "scene/scene.hpp"
+#include "seam/event_trace.hpp"
+#include "seam/observes.hpp"
 
 namespace bb {
 

@@ -6,13 +6,13 @@
 
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
+#include "model/motion.hpp"
 #include "observe/observable_registry.hpp"
 #include "physics/cross_matrix.hpp"
 #include "physics/hinge_motion.hpp"
 #include "reference/gsl_reference.hpp"
 #include "reference/scene_model_state.hpp"
 #include "reference/sliding_modes.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 

@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "contact/contact_pairs.hpp"
+#include "model/state.hpp"
 #include "observe/observable_measure.hpp"
 #include "physics/force_model.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "reference/sliding_modes.hpp"
-#include "scene/backend.hpp"
-#include "scene/event_trace.hpp"
-#include "scene/scene.hpp"
-#include "scene/state.hpp"
+#include "seam/backend.hpp"
+#include "seam/event_trace.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

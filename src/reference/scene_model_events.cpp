@@ -7,12 +7,12 @@
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
 #include "contact/rigid_hit.hpp"
+#include "model/motion.hpp"
 #include "physics/hinge_motion.hpp"
 #include "reference/gsl_reference.hpp"
 #include "reference/scene_model.hpp"
 #include "reference/scene_model_state.hpp"
 #include "reference/sliding_modes.hpp"
-#include "scene/motion.hpp"
 
 namespace bb {
 

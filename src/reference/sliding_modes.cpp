@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "contact/contact_geometry.hpp"
+#include "model/contact_pairs.hpp"
+#include "model/text.hpp"
 #include "reference/scene_model.hpp"
-#include "scene/contact_pairs.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "scene/backend.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

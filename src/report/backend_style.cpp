@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "run/engine_catalogue.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

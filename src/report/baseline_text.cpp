@@ -5,8 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include "model/text.hpp"
 #include "run/baseline.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

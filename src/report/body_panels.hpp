@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

@@ -4,8 +4,8 @@
 #include <optional>
 #include <string>
 
-#include "scene/text.hpp"
-#include "scene/vec3.hpp"
+#include "model/text.hpp"
+#include "model/vec3.hpp"
 
 namespace bb {
 

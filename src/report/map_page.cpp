@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <map>
 
+#include "model/text.hpp"
 #include "report/map_cells.hpp"
 #include "report/map_picture.hpp"
 #include "report/markdown_text.hpp"
 #include "report/table.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

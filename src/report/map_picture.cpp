@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/text.hpp"
 #include "report/map_cells.hpp"
 #include "report/xml_text.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb::motion {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "metrics/trajectory.hpp"
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb::motion {
 

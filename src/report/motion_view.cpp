@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/text.hpp"
 #include "report/backend_style.hpp"
 #include "report/gnuplot.hpp"
 #include "report/motion_exits.hpp"
@@ -13,8 +14,7 @@
 #include "report/motion_paint.hpp"
 #include "report/motion_panels.hpp"
 #include "report/plot_layout.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/text.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

@@ -24,7 +24,7 @@
 #include "run/drawn_bodies.hpp"
 #include "run/engine_catalogue.hpp"
 #include "run/run_summary.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

@@ -10,7 +10,7 @@
 #include "report/markdown_text.hpp"
 #include "report/off_scale.hpp"
 #include "report/table.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

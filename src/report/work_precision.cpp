@@ -1,7 +1,7 @@
 #include "report/work_precision.hpp"
 
 #include "report/format.hpp"
-#include "scene/metric_names.hpp"
+#include "study/metric_names.hpp"
 
 namespace bb {
 

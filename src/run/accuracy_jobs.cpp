@@ -13,13 +13,13 @@
 
 #include "files/atomic_file.hpp"
 #include "files/owned_temporary.hpp"
+#include "model/text.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
 #include "run/run_summary.hpp"
 #include "run/trajectory_names.hpp"
 #include "run/trajectory_writer.hpp"
 #include "run/wire.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

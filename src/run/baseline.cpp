@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "scene/metric_names.hpp"
+#include "study/metric_names.hpp"
 
 namespace bb {
 

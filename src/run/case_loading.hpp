@@ -1,12 +1,12 @@
 // Loading a case with every word this build knows: the loader of the model
-// (scene/load_case.hpp) is handed the observable kinds of the registry and the engines of
+// (study/load_case.hpp) is handed the observable kinds of the registry and the engines of
 // the catalogue.
 #pragma once
 
 #include <string>
 #include <string_view>
 
-#include "scene/load_case.hpp"
+#include "study/load_case.hpp"
 
 namespace bb {
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "metrics/order.hpp"
+#include "model/text.hpp"
 #include "run/accuracy_jobs.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
@@ -17,9 +18,8 @@
 #include "run/run_summary.hpp"
 #include "run/stopwatch.hpp"
 #include "run/sweep_runner.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/case_error.hpp"
-#include "scene/text.hpp"
+#include "study/backend_names.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

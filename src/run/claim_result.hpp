@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

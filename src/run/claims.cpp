@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/text.hpp"
 #include "run/claim_causes.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/metric_names.hpp"
-#include "scene/text.hpp"
+#include "study/backend_names.hpp"
+#include "study/metric_names.hpp"
 
 namespace bb {
 

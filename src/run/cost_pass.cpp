@@ -2,10 +2,10 @@
 
 #include <ctime>
 
+#include "model/text.hpp"
 #include "run/child_pool.hpp"
 #include "run/cost.hpp"
 #include "run/wire.hpp"
-#include "scene/text.hpp"
 
 namespace bb {
 

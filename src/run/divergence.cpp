@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/text.hpp"
+#include "model/text.hpp"
 
 namespace bb {
 

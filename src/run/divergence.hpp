@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "metrics/trajectory.hpp"
+#include "model/state.hpp"
 #include "physics/energy_scale.hpp"
-#include "scene/scene.hpp"
-#include "scene/state.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

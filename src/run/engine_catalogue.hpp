@@ -4,7 +4,7 @@
 // adapter's code.
 #pragma once
 
-#include "scene/engine_catalogue.hpp"
+#include "seam/engine_catalogue.hpp"
 
 namespace bb {
 

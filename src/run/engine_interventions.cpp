@@ -1,6 +1,6 @@
 #include "run/engine_interventions.hpp"
 
-#include "scene/text.hpp"
+#include "model/text.hpp"
 
 namespace bb {
 

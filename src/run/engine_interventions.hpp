@@ -1,4 +1,4 @@
-// What the runner makes of an engine's interventions (scene/backend.hpp): a reset ends a run
+// What the runner makes of an engine's interventions (seam/backend.hpp): a reset ends a run
 // as diverged at the reset's time, a cap makes it capped; a stability trial of either is not
 // stable. The accuracy run and the stability search's own trials read them alike.
 #pragma once
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "run/results.hpp"
-#include "scene/backend.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

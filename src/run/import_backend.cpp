@@ -7,9 +7,9 @@
 #include <stdexcept>
 
 #include "files/result_cache.hpp"
+#include "model/text.hpp"
 #include "observe/observable_registry.hpp"
-#include "scene/case_error.hpp"
-#include "scene/text.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

@@ -10,8 +10,8 @@
 
 #include "run/results.hpp"
 #include "run/trajectory_reader.hpp"
-#include "scene/backend.hpp"
-#include "scene/backend_names.hpp"
+#include "seam/backend.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

@@ -7,9 +7,9 @@
 
 #include "run/engine_catalogue.hpp"
 #include "run/plugin_file.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/case_error.hpp"
-#include "scene/plugin_api.hpp"
+#include "seam/plugin_api.hpp"
+#include "study/backend_names.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

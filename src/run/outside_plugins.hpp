@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/backend.hpp"
-#include "scene/engine_catalogue.hpp"
+#include "seam/backend.hpp"
+#include "seam/engine_catalogue.hpp"
 
 namespace bb {
 

@@ -2,7 +2,7 @@
 
 #include <dlfcn.h>
 
-#include "scene/plugin_api.hpp"
+#include "seam/plugin_api.hpp"
 
 namespace bb {
 

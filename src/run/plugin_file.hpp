@@ -1,5 +1,5 @@
 // Opening one plugin file and checking it is a backend plugin of this beachball: a shared
-// object, built against this plugin interface (scene/plugin_api.hpp), with its entry point.
+// object, built against this plugin interface (seam/plugin_api.hpp), with its entry point.
 // Nothing of the plugin is created before the version is checked.
 #pragma once
 
@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-#include "scene/backend.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

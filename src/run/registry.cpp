@@ -9,8 +9,8 @@
 #include "run/engine_catalogue.hpp"
 #include "run/outside_plugins.hpp"
 #include "run/plugin_file.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/engine_catalogue.hpp"
+#include "seam/engine_catalogue.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "reference/gsl_reference.hpp"
-#include "scene/backend.hpp"
-#include "scene/engine_catalogue.hpp"
+#include "seam/backend.hpp"
+#include "seam/engine_catalogue.hpp"
 
 namespace bb {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/metric_names.hpp"
+#include "study/metric_names.hpp"
 
 namespace bb {
 

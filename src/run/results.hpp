@@ -11,7 +11,7 @@
 #include "metrics/trajectory.hpp"
 #include "observe/observables.hpp"
 #include "run/claim_result.hpp"
-#include "scene/backend.hpp"
+#include "seam/backend.hpp"
 
 namespace bb {
 

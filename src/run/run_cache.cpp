@@ -2,9 +2,9 @@
 
 #include <bit>
 
+#include "model/text.hpp"
 #include "run/build_identity.hpp"
-#include "scene/case_error.hpp"
-#include "scene/text.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

@@ -6,7 +6,7 @@
 #include "physics/energy.hpp"
 #include "run/divergence.hpp"
 #include "run/drawn_bodies.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 

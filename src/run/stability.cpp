@@ -7,16 +7,16 @@
 #include "course/course_backend.hpp"
 #include "course/stability_theory.hpp"
 #include "metrics/energy_growth.hpp"
+#include "model/text.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
 #include "run/engine_interventions.hpp"
 #include "run/stability_chains.hpp"
 #include "run/stability_watch.hpp"
 #include "run/wire.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/case_error.hpp"
-#include "scene/case_limits.hpp"
-#include "scene/text.hpp"
+#include "study/backend_names.hpp"
+#include "study/case_error.hpp"
+#include "study/case_limits.hpp"
 
 namespace bb {
 

@@ -12,7 +12,7 @@
 #include "run/results.hpp"
 #include "run/run_cache.hpp"
 #include "run/stability_search.hpp"
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/case_limits.hpp"
+#include "study/case_limits.hpp"
 
 namespace bb {
 

@@ -8,11 +8,11 @@
 #include <string>
 
 #include "metrics/energy_growth.hpp"
+#include "model/state.hpp"
 #include "physics/energy.hpp"
 #include "run/divergence.hpp"
 #include "run/results.hpp"
-#include "scene/scene.hpp"
-#include "scene/state.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

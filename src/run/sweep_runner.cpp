@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/text.hpp"
 #include "run/child_pool.hpp"
 #include "run/engine_catalogue.hpp"
 #include "run/wire.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/case_error.hpp"
-#include "scene/case_limits.hpp"
-#include "scene/sweep_parameter.hpp"
-#include "scene/text.hpp"
+#include "study/backend_names.hpp"
+#include "study/case_error.hpp"
+#include "study/case_limits.hpp"
+#include "study/sweep_parameter.hpp"
 
 namespace bb {
 

@@ -4,8 +4,8 @@
 #include <map>
 #include <sstream>
 
-#include "scene/case_error.hpp"
-#include "scene/text.hpp"
+#include "model/text.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

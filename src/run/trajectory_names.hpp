@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/scene.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

@@ -6,9 +6,9 @@
 #include <iterator>
 #include <map>
 
+#include "model/text.hpp"
 #include "run/trajectory_writer.hpp"
-#include "scene/case_error.hpp"
-#include "scene/text.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 

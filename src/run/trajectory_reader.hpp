@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
-#include "scene/state.hpp"
+#include "model/state.hpp"
+#include "study/scene.hpp"
 
 namespace bb {
 

@@ -9,12 +9,12 @@
 #include <cstdio>
 
 #include "course/course_backend.hpp"
+#include "model/motion.hpp"
 #include "observe/observables.hpp"
 #include "physics/energy.hpp"
 #include "reference/closed_form.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
-#include "scene/motion.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 

@@ -12,7 +12,7 @@
 #include "observe/observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
-#include "scene/engine_catalogue.hpp"
+#include "seam/engine_catalogue.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 

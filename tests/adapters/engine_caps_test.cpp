@@ -12,9 +12,9 @@
 #include <numbers>
 #include <string>
 
+#include "model/text.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/stability.hpp"
-#include "scene/text.hpp"
 #include "support/engine_support.hpp"
 #include "support/rope_case.hpp"
 #include "support/test_support.hpp"

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "scene/text.hpp"
+#include "model/text.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/motion.hpp"
 #include "observe/observables.hpp"
-#include "scene/motion.hpp"
 #include "support/conformance_support.hpp"
 #include "support/test_support.hpp"
 

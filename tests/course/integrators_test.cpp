@@ -2,13 +2,13 @@
 // and the energy drift each shows in free fall (seed section 1, "Three beachballs 1").
 #include <gtest/gtest.h>
 
-#include "physics/energy.hpp"
 #include "course/course_backend.hpp"
 #include "metrics/errors.hpp"
 #include "metrics/order.hpp"
+#include "model/motion.hpp"
+#include "physics/energy.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/motion.hpp"
 #include "support/course_support.hpp"
 #include "support/test_support.hpp"
 

@@ -2,7 +2,6 @@
 // frame, the orientation turned by omega dt. Checked as properties: the 2D sequence's
 // closed sum, a free body's angular momentum kept exactly, and the flip's energy error
 // shrinking as dt halves.
-#include "physics/energy.hpp"
 #include "course/rigid_rotation.hpp"
 
 #include <gtest/gtest.h>
@@ -11,10 +10,11 @@
 #include <numbers>
 
 #include "course/course_backend.hpp"
+#include "model/motion.hpp"
 #include "observe/observables.hpp"
+#include "physics/energy.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
-#include "scene/motion.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

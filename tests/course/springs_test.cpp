@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/energy.hpp"
 #include "course/course_backend.hpp"
+#include "model/motion.hpp"
 #include "observe/observables.hpp"
+#include "physics/energy.hpp"
 #include "reference/closed_form.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/motion.hpp"
 #include "support/course_support.hpp"
 #include "support/test_support.hpp"
 

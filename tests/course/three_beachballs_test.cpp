@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "course/course_backend.hpp"
-#include "scene/motion.hpp"
+#include "model/motion.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

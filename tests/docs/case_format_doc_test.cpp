@@ -13,11 +13,11 @@
 #include <set>
 
 #include "docs/doc_tables.hpp"
+#include "model/features.hpp"
 #include "run/engine_catalogue.hpp"
-#include "scene/case_error.hpp"
-#include "scene/engine_keys.hpp"
-#include "scene/features.hpp"
-#include "scene/toml_reader.hpp"
+#include "seam/engine_keys.hpp"
+#include "study/case_error.hpp"
+#include "study/toml_reader.hpp"
 
 namespace bb {
 namespace {

@@ -2,7 +2,7 @@
 // message or a page refers to is docs/design.md, not a DESIGN.md readers cannot find.
 #include <gtest/gtest.h>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 

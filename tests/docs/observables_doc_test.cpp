@@ -8,7 +8,7 @@
 
 #include "docs/doc_tables.hpp"
 #include "observe/observable_registry.hpp"
-#include "scene/metric_names.hpp"
+#include "study/metric_names.hpp"
 
 namespace bb {
 namespace {

@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "run/case_loading.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

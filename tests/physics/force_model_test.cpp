@@ -11,9 +11,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/motion.hpp"
 #include "physics/force_terms.hpp"
 #include "physics/state_forces.hpp"
-#include "scene/motion.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 

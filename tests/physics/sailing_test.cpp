@@ -9,10 +9,10 @@
 #include <numbers>
 
 #include "course/course_backend.hpp"
+#include "model/motion.hpp"
 #include "physics/force_model.hpp"
 #include "physics/state_forces.hpp"
 #include "run/case_runner.hpp"
-#include "scene/motion.hpp"
 #include "support/engine_support.hpp"
 #include "support/jacobian_support.hpp"
 #include "support/test_support.hpp"

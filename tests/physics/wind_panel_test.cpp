@@ -9,12 +9,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "physics/energy.hpp"
+#include "model/motion.hpp"
 #include "observe/observable_registry.hpp"
+#include "physics/energy.hpp"
 #include "physics/force_model.hpp"
 #include "physics/state_forces.hpp"
 #include "run/accuracy_run.hpp"
-#include "scene/motion.hpp"
 #include "support/engine_support.hpp"
 #include "support/jacobian_support.hpp"
 #include "support/test_support.hpp"

@@ -5,7 +5,7 @@
 // motion is gravity's closed form, so a working one's rows agree with the reference.
 #include <csignal>
 
-#include "scene/plugin_api.hpp"
+#include "seam/plugin_api.hpp"
 
 namespace {
 

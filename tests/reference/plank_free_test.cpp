@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "course/course_backend.hpp"
+#include "model/motion.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
-#include "scene/motion.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

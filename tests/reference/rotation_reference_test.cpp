@@ -2,13 +2,13 @@
 // and angular momentum to 1e-9 over the whole run, through the flips.
 #include <gtest/gtest.h>
 
-#include "physics/energy.hpp"
+#include "model/motion.hpp"
 #include "observe/observables.hpp"
+#include "physics/energy.hpp"
 #include "reference/closed_form.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
-#include "scene/motion.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

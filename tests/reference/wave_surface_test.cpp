@@ -10,7 +10,7 @@
 #include "run/accuracy_run.hpp"
 #include "run/case_runner.hpp"
 #include "run/registry.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "run/engine_catalogue.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

@@ -13,7 +13,7 @@
 #include "report/backend_style.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/engine_catalogue.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 #include "support/motion_runs.hpp"
 #include "support/test_support.hpp"
 

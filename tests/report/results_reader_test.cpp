@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "report/json_writer.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 
 namespace bb {
 namespace {

@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "report/format.hpp"
-#include "scene/load_case.hpp"
+#include "study/load_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "model/text.hpp"
 #include "run/case_runner.hpp"
-#include "scene/text.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

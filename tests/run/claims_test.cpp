@@ -10,7 +10,7 @@
 #include "report/claims_page.hpp"
 #include "report/json_writer.hpp"
 #include "report/table.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/claims_support.hpp"
 
 namespace bb {

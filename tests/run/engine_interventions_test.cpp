@@ -1,4 +1,4 @@
-// What the runner makes of an engine's interventions (scene/backend.hpp): a reset ends the run
+// What the runner makes of an engine's interventions (seam/backend.hpp): a reset ends the run
 // as diverged at the reset's time with the engine's words, a cap lets it run to the end as
 // `capped`; neither is a stable trial, a capped row passes no gate and a claim does not judge
 // it, and the page shows the status with the reason under the table.

@@ -7,12 +7,12 @@
 
 #include <cmath>
 
+#include "model/text.hpp"
 #include "report/json_writer.hpp"
 #include "run/sweep_runner.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/case_error.hpp"
-#include "scene/case_limits.hpp"
-#include "scene/text.hpp"
+#include "study/backend_names.hpp"
+#include "study/case_error.hpp"
+#include "study/case_limits.hpp"
 #include "support/results_rows.hpp"
 #include "support/test_support.hpp"
 

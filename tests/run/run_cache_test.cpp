@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/course_support.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"

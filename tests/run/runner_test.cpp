@@ -13,7 +13,7 @@
 #include "run/case_runner.hpp"
 #include "run/drawn_bodies.hpp"
 #include "run/run_summary.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/slow_backend.hpp"
 #include "support/test_support.hpp"
 

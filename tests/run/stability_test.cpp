@@ -11,7 +11,7 @@
 #include "run/case_loading.hpp"
 #include "run/registry.hpp"
 #include "run/stability_watch.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/course_support.hpp"
 #include "support/slow_backend.hpp"
 #include "support/test_support.hpp"

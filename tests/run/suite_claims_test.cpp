@@ -10,8 +10,8 @@
 
 #include "run/claims.hpp"
 #include "run/engine_catalogue.hpp"
-#include "scene/backend_names.hpp"
-#include "scene/metric_names.hpp"
+#include "study/backend_names.hpp"
+#include "study/metric_names.hpp"
 #include "support/test_support.hpp"
 
 #ifndef BEACHBALL_COURSE_TEXT

@@ -11,8 +11,8 @@
 #include "run/case_runner.hpp"
 #include "run/import_backend.hpp"
 #include "run/trajectory_names.hpp"
-#include "scene/load_case.hpp"
-#include "scene/metric_names.hpp"
+#include "study/load_case.hpp"
+#include "study/metric_names.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 

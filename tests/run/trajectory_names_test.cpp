@@ -9,7 +9,7 @@
 #include <set>
 
 #include "run/registry.hpp"
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {

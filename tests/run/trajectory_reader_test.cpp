@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "scene/case_error.hpp"
+#include "study/case_error.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "run/accuracy_run.hpp"
 #include "run/engine_catalogue.hpp"
-#include "scene/backend_names.hpp"
+#include "study/backend_names.hpp"
 #include "support/engine_support.hpp"
 
 namespace bb::test {

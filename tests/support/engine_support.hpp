@@ -12,7 +12,7 @@
 
 #include "run/engine_catalogue.hpp"
 #include "run/registry.hpp"
-#include "scene/engine_catalogue.hpp"
+#include "seam/engine_catalogue.hpp"
 #include "support/missing.hpp"
 
 namespace bb::test {

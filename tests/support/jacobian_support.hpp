@@ -8,8 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include "model/motion.hpp"
 #include "physics/force_model.hpp"
-#include "scene/motion.hpp"
 
 namespace bb::test {
 

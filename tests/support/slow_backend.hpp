@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "scene/backend.hpp"
-#include "scene/motion.hpp"
+#include "model/motion.hpp"
+#include "seam/backend.hpp"
 
 namespace bb::test {
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "scene/backend.hpp"
-#include "scene/motion.hpp"
+#include "model/motion.hpp"
+#include "seam/backend.hpp"
 
 namespace bb::test {
 

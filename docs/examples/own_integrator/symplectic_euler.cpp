@@ -6,7 +6,7 @@
 // Built with -DWORSE it keeps the old velocity for the position (explicit Euler): the same
 // order, a larger error, the regression `beachball check --baseline` is there to catch.
 #include <physics/step_start.hpp>
-#include <scene/plugin_api.hpp>
+#include <seam/plugin_api.hpp>
 
 namespace {
 
