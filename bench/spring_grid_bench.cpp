@@ -11,6 +11,7 @@
 
 #include "run/case_loading.hpp"
 #include "run/registry.hpp"
+#include "study/start_case.hpp"
 
 namespace {
 
@@ -35,13 +36,13 @@ std::string grid_case(int dims, int n) {
 
 void step_cost(benchmark::State& state, const bb::Backend* backend, const bb::Scene* scene) {
   const double dt = scene->report_dt;
-  auto sim = backend->start(*scene, dt);
+  auto sim = start_case(*backend, *scene, dt);
   long steps = 0;
   for (auto _ : state) {
     // A whole second of the case, then a fresh start outside the timer.
     if (steps == 60) {
       state.PauseTiming();
-      sim = backend->start(*scene, dt);
+      sim = start_case(*backend, *scene, dt);
       steps = 0;
       state.ResumeTiming();
     }

@@ -10,18 +10,19 @@
 
 #include "run/case_loading.hpp"
 #include "run/registry.hpp"
+#include "study/start_case.hpp"
 
 namespace {
 
 void step_cost(benchmark::State& state, const bb::Backend* backend, const bb::Scene* scene) {
   const double dt = scene->report_dt;
   const long steps_per_run = std::lround(scene->duration / dt);
-  auto sim = backend->start(*scene, dt);
+  auto sim = start_case(*backend, *scene, dt);
   long steps = 0;
   for (auto _ : state) {
     if (steps == steps_per_run) {
       state.PauseTiming();
-      sim = backend->start(*scene, dt);
+      sim = start_case(*backend, *scene, dt);
       steps = 0;
       state.ResumeTiming();
     }

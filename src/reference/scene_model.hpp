@@ -17,7 +17,7 @@
 #include "reference/sliding_modes.hpp"
 #include "seam/backend.hpp"
 #include "seam/event_trace.hpp"
-#include "study/scene.hpp"
+#include "study/start_case.hpp"
 
 namespace bb {
 
@@ -37,7 +37,7 @@ class SceneModel : public HybridModel {
   /// interval (none and 0 when not given: no observed events, no rest below a bounce).
   explicit SceneModel(const World& world, const BackendSettings& settings = {});
   /// The model of a case's world, told its study's settings.
-  explicit SceneModel(const Scene& scene) : SceneModel(scene, BackendSettings::of(scene)) {}
+  explicit SceneModel(const Scene& scene) : SceneModel(scene, backend_settings(scene)) {}
   /// The integrated state at t = 0.
   std::vector<double> initial_state() const;
   /// `y` as the runner's per-body state.

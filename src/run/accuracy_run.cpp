@@ -9,6 +9,7 @@
 #include "run/engine_interventions.hpp"
 #include "run/stability_watch.hpp"
 #include "run/trajectory_writer.hpp"
+#include "study/start_case.hpp"
 
 namespace bb {
 
@@ -115,7 +116,7 @@ void finish_run(const Simulation& sim, double dt, const StepWatchers& watchers, 
 /// The run itself, from its start to its end or divergence, sampled into the record.
 void run_steps(const Backend& backend, const Scene& scene, double dt, bool judge_stability,
                TrajectoryWriter* steps, RunRecord& record) {
-  const auto sim = backend.start(scene, dt);
+  const auto sim = start_case(backend, scene, dt);
   record.engine_settings = sim->settings();
   const int per_sample = scene.steps_per_sample(dt);
   const int samples = scene.sample_count();

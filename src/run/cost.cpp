@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "study/start_case.hpp"
+
 namespace bb {
 
 namespace {
@@ -50,7 +52,7 @@ Timing time_steps(const Backend& backend, const Scene& scene, double dt, long st
   };
   while (more()) {
     // Building the scene is outside the timer; only the step loop is inside.
-    const auto sim = backend.start(scene, dt);
+    const auto sim = start_case(backend, scene, dt);
     ++builds;
     const auto begin = Clock::now();
     long calls = 0;

@@ -17,6 +17,7 @@
 #include "study/backend_names.hpp"
 #include "study/case_error.hpp"
 #include "study/case_limits.hpp"
+#include "study/start_case.hpp"
 
 namespace bb {
 
@@ -38,7 +39,7 @@ StabilityTrial try_step(const Backend& backend, const Scene& scene, double dt, l
   if (std::string why = beyond_step_cap(scene, dt); !why.empty()) return {false, why, "not run"};
   if (steps == 0) steps = StabilityWatch::trial_steps(scene, dt);
   try {
-    const auto sim = backend.start(scene, dt);
+    const auto sim = start_case(backend, scene, dt);
     State state(scene.bodies.size());
     sim->read(state);
     StabilityWatch watch(scene, dt, state, steps);

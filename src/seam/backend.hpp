@@ -12,8 +12,10 @@
 
 #include "model/features.hpp"
 #include "model/state.hpp"
+#include "model/world.hpp"
+#include "seam/engine_tables.hpp"
 #include "seam/event_trace.hpp"
-#include "study/scene.hpp"
+#include "seam/observes.hpp"
 
 namespace bb {
 
@@ -74,10 +76,11 @@ class Simulation {
   virtual std::vector<EngineIntervention> interventions() const { return {}; }
 };
 
-/// What a backend is told besides the world, all from the case's study: the engines'
-/// settings tables (each engine reads its own [engines.<engine>]) and, for the reference,
-/// the sample interval (its stiffness bound) and the observes whose events it locates
-/// exactly. The pointers point into the case, which outlives every run.
+/// What a backend is told besides the world, all from the case's study, which fills it
+/// (study/start_case.hpp: the seam never sees the study): the engines' settings tables (each
+/// engine reads its own [engines.<engine>]) and, for the reference, the sample interval (its
+/// stiffness bound) and the observes whose events it locates exactly. The pointers point
+/// into the case, which outlives every run.
 struct BackendSettings {
   const EngineTables* engines = nullptr;
   double sample = 0.0;
@@ -87,10 +90,6 @@ struct BackendSettings {
   const std::vector<Observe>& observed() const {
     static const std::vector<Observe> none;
     return observes ? *observes : none;
-  }
-  /// The settings a case gives its backends.
-  static BackendSettings of(const Study& study) {
-    return {&study.engines, study.sample, &study.observes};
   }
 };
 
@@ -110,10 +109,6 @@ class Backend {
   /// what the settings point to outlive the simulation.
   virtual std::unique_ptr<Simulation> start_run(const World& world, const BackendSettings& settings,
                                                 double dt) const = 0;
-  /// Start a run of a case: its world, and of its study the settings above only.
-  std::unique_ptr<Simulation> start(const Scene& scene, double dt) const {
-    return start_run(scene, BackendSettings::of(scene), dt);
-  }
 };
 
 }  // namespace bb

@@ -11,6 +11,7 @@
 #include "observe/observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -61,7 +62,7 @@ TEST_P(BulletContacts, PushChangesEachVelocityByImpulseOverMass) {
   BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene scene = load_case(test::source_path("cases/push.toml"));
   const double dt = scene.report_dt;
-  auto sim = backend()->start(scene, dt);
+  auto sim = start_case(*backend(), scene, dt);
   State state(scene.bodies.size());
   const long impulse_step = std::lround(scene.impulses.front().time / dt);
   for (long k = 0; k < impulse_step; ++k) sim->step();
@@ -90,7 +91,7 @@ TEST_P(BulletContacts, ADroppedBallBouncesWithTheCasesRestitution) {
   BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
   const Scene scene = test::scene_from(kDrop);
   const double dt = scene.report_dt, g = 9.81, r = 0.5, h = 10.0, e = 0.8;
-  auto sim = backend()->start(scene, dt);
+  auto sim = start_case(*backend(), scene, dt);
   State state(1);
   double contact_time = -1.0;
   double previous_vy = 0.0;

@@ -13,6 +13,7 @@
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
 #include "seam/engine_catalogue.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -179,7 +180,7 @@ TEST(BulletSprings, TheFirstStepShowsTheStiffnessTheSettingsName) {
   BB_SKIP_IF_MISSING(test::not_built({"bullet"}));
   const Scene scene = spring_case("spring_pair_stiff");
   const double dt = scene.report_dt;
-  auto sim = b->start(scene, dt);
+  auto sim = start_case(*b, scene, dt);
   sim->step();
   State state(2);
   sim->read(state);
@@ -359,7 +360,7 @@ TEST(BulletSprings, TheSoftBodyLinkIsBackwardEulerOfTheCasesSpring) {
   // After 1 s (60 steps) the amplitude is down to (1 + (w dt)^2)^-30 = 0.2 of 0.1 m; the
   // first swing of the second second peaks within half a period (13.6 steps) of that.
   State end(2);
-  auto sim = b->start(scene, dt);
+  auto sim = start_case(*b, scene, dt);
   for (int k = 0; k < 60; ++k) sim->step();
   double largest = 0.0;
   for (int k = 0; k < 60; ++k) {

@@ -8,6 +8,7 @@
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -163,14 +164,14 @@ TEST(Engines, EveryEngineRunsAPointBodyLikeSemiImplicitEuler) {
 TEST(Engines, APointBodyStandInIsNamedOnlyWhereThereIsOne) {
   const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
   for (const Backend* b : registry().engines())
-    EXPECT_EQ(text_setting(b->start(scene, scene.report_dt)->settings(), "point_body"), "")
+    EXPECT_EQ(text_setting(start_case(*b, scene, scene.report_dt)->settings(), "point_body"), "")
         << b->name();
 }
 
 TEST(Engines, SettingsThatChangeResultsAreReported) {
   const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
   for (const Backend* b : registry().engines()) {
-    const Settings s = b->start(scene, scene.report_dt)->settings();
+    const Settings s = start_case(*b, scene, scene.report_dt)->settings();
     std::vector<std::string> keys;
     for (const auto& [k, v] : s) keys.push_back(k);
     for (const char* k : {"linear_damping", "angular_damping", "precision"})

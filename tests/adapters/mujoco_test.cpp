@@ -16,6 +16,7 @@
 #include "metrics/errors.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -43,7 +44,7 @@ position = [0.0, 1.5, 0.0]
 
 /// The centre's highest point after its first contact, stepping `backend` at `dt` for 1.5 s.
 double first_apex(const Backend& backend, const Scene& scene, double dt) {
-  std::unique_ptr<Simulation> sim = backend.start(scene, dt);
+  std::unique_ptr<Simulation> sim = start_case(backend, scene, dt);
   State s(1);
   bool bounced = false;
   double apex = 0.0;
@@ -63,8 +64,8 @@ TEST(Mujoco, TheRestitutionIsTheContactsDampingRatioAndTheBounceFollowsTheRefere
   for (double e : {0.5, 0.9}) {
     SCOPED_TRACE(e);
     const Scene scene = drop(e);
-    const double zeta =
-        test::number_setting(mujoco->start(scene, dt)->settings(), "contact_damping_ratio_first");
+    const double zeta = test::number_setting(start_case(*mujoco, scene, dt)->settings(),
+                                             "contact_damping_ratio_first");
     EXPECT_NEAR(std::exp(-zeta * std::numbers::pi / std::sqrt(1.0 - zeta * zeta)), e, 1e-12);
     const double reference = first_apex(test::registry().reference(), scene, dt);
     // r + e^2 h, seen at the steps (the apex falls between two: g dt^2 / 8 at most).
@@ -96,7 +97,7 @@ mass = 1.0
 position = [0.0, 0.5, 0.0]
 velocity = [5.0, 0.0, 0.0]
 )");
-  std::unique_ptr<Simulation> sim = mujoco->start(scene, scene.dt.front());
+  std::unique_ptr<Simulation> sim = start_case(*mujoco, scene, scene.dt.front());
   State s(1);
   double highest = 0.0, sideways = 0.0;
   for (int n = 0; n < 60; ++n) {
@@ -248,7 +249,7 @@ velocity = [4.0, 0.0, 0.0]
 
 /// The centre's height at every step of `backend` on `scene` at `dt`, for `steps` steps.
 std::vector<double> heights(const Backend& backend, const Scene& scene, double dt, int steps) {
-  std::unique_ptr<Simulation> sim = backend.start(scene, dt);
+  std::unique_ptr<Simulation> sim = start_case(backend, scene, dt);
   State s(1);
   std::vector<double> out;
   for (int n = 0; n < steps; ++n) {
@@ -272,7 +273,8 @@ TEST(Mujoco, ARunAgainInTheSameProcessStepsExactlyAsTheFirst) {
   EXPECT_NE(heights(*mujoco, other, dt, 400), first);
   EXPECT_EQ(heights(*mujoco, scene, dt, 400), first);
   // Two at once: the second makes its own data.
-  std::unique_ptr<Simulation> a = mujoco->start(scene, dt), b = mujoco->start(scene, dt);
+  std::unique_ptr<Simulation> a = start_case(*mujoco, scene, dt),
+                              b = start_case(*mujoco, scene, dt);
   State sa(1), sb(1);
   for (int n = 0; n < 400; ++n) {
     a->step(), b->step();

@@ -16,6 +16,7 @@
 #include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
 #include "run/stability.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -28,7 +29,7 @@ const char* const kMujocos[] = {"mujoco", "mujoco/rk4", "mujoco/implicit"};
 /// one step of gravity gives, is back at rest but for that one step: where MuJoCo's reset
 /// put it (0 when it never was).
 long first_return(const Backend& backend, const Scene& scene, double dt) {
-  const auto sim = backend.start(scene, dt);
+  const auto sim = start_case(backend, scene, dt);
   State s(scene.bodies.size());
   const double one_step = scene.gravity.norm() * dt;
   bool flown = false;

@@ -11,6 +11,7 @@
 #include "observe/observables.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -51,7 +52,7 @@ TEST_F(OdeContacts, DoubleBounceKeepsMomentumAcrossTheBallsCollision) {
 TEST_F(OdeContacts, PushChangesEachVelocityByImpulseOverMass) {
   const Scene scene = load_case(test::source_path("cases/push.toml"));
   const double dt = scene.report_dt;
-  auto sim = ode().start(scene, dt);
+  auto sim = start_case(ode(), scene, dt);
   State state(scene.bodies.size());
   const long impulse_step = std::lround(scene.impulses.front().time / dt);
   for (long k = 0; k < impulse_step; ++k) sim->step();
@@ -81,7 +82,7 @@ TEST_F(OdeContacts, ADroppedBallBouncesWithTheCasesRestitution) {
   for (const char* step : {"0.0166666666666666667", "0.00416666666666666667"}) {
     const Scene scene = test::scene_from(drop(step));
     const double dt = scene.report_dt, g = 9.81, r = 0.5, h = 10.0, e = 0.8;
-    auto sim = ode().start(scene, dt);
+    auto sim = start_case(ode(), scene, dt);
     State state(1);
     double contact_time = -1.0, previous_vy = 0.0, deepest = 0.0;
     std::vector<double> apexes;  // of the ball's bottom, metres

@@ -17,6 +17,7 @@
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/case_loading.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -85,7 +86,7 @@ struct Motion {
 /// Steps the engine through the case. The slide stops at the first step whose velocity
 /// along the initial one is below kStopped (or reversed).
 Motion run(const Backend& backend, const Scene& scene) {
-  auto sim = backend.start(scene, kDt);
+  auto sim = start_case(backend, scene, kDt);
   State state(1);
   const Vec3 n = scene.ground->normal.normalized();
   const Vec3 p0 = scene.bodies[0].position;
@@ -276,7 +277,7 @@ TEST(BulletFriction, ASphereKeepsBulletsDefaultContactQuery) {
   BB_SKIP_IF_MISSING(test::not_built({"bullet"}));
   const Scene scene = test::scene_from(test::dropped_ball(
       "0.1", "0.0166666666666666667", "0.0166666666666666667", "0.0166666666666666667"));
-  const Settings s = bullet->start(scene, kDt)->settings();
+  const Settings s = start_case(*bullet, scene, kDt)->settings();
   EXPECT_EQ(number_setting(s, "plane_convex_multipoint_iterations"), 1.0);
   EXPECT_EQ(number_setting(s, "plane_convex_multipoint_threshold"), 0.0);
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "course/course_backend.hpp"
+#include "study/start_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -41,7 +42,7 @@ impulse = [2.0, 0.0, 0.0]
 )");
   for (const std::string& integrator : known_integrators()) {
     const CourseBackend backend({"course", integrator, "mirror", "clamp"});
-    auto sim = backend.start(scene, 0.05);
+    auto sim = start_case(backend, scene, 0.05);
     State s(2);
     // Four steps bring the run to t = 0.2 s: nothing has happened yet.
     for (int i = 0; i < 4; ++i) sim->step();

@@ -6,6 +6,7 @@
 
 #include "course/course_backend.hpp"
 #include "model/motion.hpp"
+#include "study/start_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -39,7 +40,7 @@ struct Bounces {
 Bounces bounce(const Scene& scene, const std::string& integrator, const std::string& rule) {
   const CourseBackend backend({"course", integrator, rule, "clamp"});
   const double dt = scene.report_dt;
-  auto sim = backend.start(scene, dt);
+  auto sim = start_case(backend, scene, dt);
   State s(1);
   Bounces out;
   double previous_vy = 0.0;

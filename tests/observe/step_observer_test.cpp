@@ -11,6 +11,7 @@
 #include "course/course_backend.hpp"
 #include "observe/observables.hpp"
 #include "reference/scene_model.hpp"
+#include "study/start_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -35,7 +36,7 @@ position = [0.0, 10.0, 0.0]
 
 EventTrace observed(const Scene& scene, double dt) {
   const CourseBackend backend({"course", "semi-implicit-euler", "mirror", "clamp"});
-  auto sim = backend.start(scene, dt);
+  auto sim = start_case(backend, scene, dt);
   StepObserver observer(scene);
   State s(scene.bodies.size());
   sim->read(s);

@@ -14,6 +14,7 @@
 #include "model/motion.hpp"
 #include "physics/force_terms.hpp"
 #include "physics/state_forces.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -166,7 +167,7 @@ rest_length = 2.0
 
 /// The box's state after `steps` steps of `dt` on `backend`.
 BodyState pushed_box_after(const Backend& backend, const Scene& scene, double dt, int steps) {
-  std::unique_ptr<Simulation> sim = backend.start(scene, dt);
+  std::unique_ptr<Simulation> sim = start_case(backend, scene, dt);
   for (int n = 0; n < steps; ++n) sim->step();
   State out(scene.bodies.size());
   sim->read(out);

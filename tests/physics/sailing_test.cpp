@@ -13,6 +13,7 @@
 #include "physics/force_model.hpp"
 #include "physics/state_forces.hpp"
 #include "run/case_runner.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/jacobian_support.hpp"
 #include "support/test_support.hpp"
@@ -113,7 +114,7 @@ TEST(Sailing, DownwindTheReferenceFollowsTheClosedFormAndEulerConvergesAtOrderOn
                 "forward = 0.05\nbackward = 0.2\nno_drift = true"));
   const double a = 0.5 * 1.2 * 1.2 * 10.0, b = 0.5 * 1025.0 * 0.05;
   const auto speed_after = [&](const Backend& backend, double dt, int steps) {
-    std::unique_ptr<Simulation> sim = backend.start(scene, dt);
+    std::unique_ptr<Simulation> sim = start_case(backend, scene, dt);
     for (int n = 0; n < steps; ++n) sim->step();
     State out(1);
     sim->read(out);
@@ -145,7 +146,7 @@ TEST(Sailing, WithNoDriftEveryBackendGoesWhereItHeadsInASideWind) {
   ASSERT_GE(backends.size(), 5u);
   for (const Backend* backend : backends) {
     SCOPED_TRACE(backend->name());
-    std::unique_ptr<Simulation> sim = backend->start(scene, 0.05);
+    std::unique_ptr<Simulation> sim = start_case(*backend, scene, 0.05);
     State out(1);
     for (int n = 0; n < 240; ++n) sim->step();
     sim->read(out);

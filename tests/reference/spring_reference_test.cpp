@@ -9,6 +9,7 @@
 #include "reference/closed_form.hpp"
 #include "reference/gsl_reference.hpp"
 #include "run/accuracy_run.hpp"
+#include "study/start_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -45,7 +46,7 @@ damping = )" +
 double largest_extension_error(double damping, double stiffness = 80.0,
                                std::string* method = nullptr) {
   const Scene scene = test::scene_from(pair_case(damping, stiffness));
-  const auto sim = ReferenceBackend().start(scene, scene.sample);
+  const auto sim = start_case(ReferenceBackend(), scene, scene.sample);
   State s(2);
   double worst = 0.0;
   for (int n = 1; n <= scene.sample_count(); ++n) {

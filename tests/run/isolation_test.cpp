@@ -11,6 +11,7 @@
 
 #include "run/case_runner.hpp"
 #include "run/child_pool.hpp"
+#include "study/start_case.hpp"
 #include "support/engine_support.hpp"
 #include "support/test_support.hpp"
 
@@ -149,7 +150,7 @@ TEST(Isolation, OdesOwnErrorHandlerEndsInTheReason) {
   pool.submit(
       "ode with a negative step",
       [&] {
-        ode->start(scene, -0.01)->step();
+        start_case(*ode, scene, -0.01)->step();
         return std::string();
       },
       10.0, [&](const ChildOutcome& o) { outcome = o; });

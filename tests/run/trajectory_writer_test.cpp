@@ -12,6 +12,7 @@
 #include "course/course_backend.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/registry.hpp"
+#include "study/start_case.hpp"
 #include "support/program.hpp"
 #include "support/test_support.hpp"
 #include "support/trajectory_csv.hpp"
@@ -94,7 +95,7 @@ TEST(TrajectoryFile, EveryStepIsARowAtKTimesDtHoldingTheBackendsOwnState) {
   const long steps = static_cast<long>(scene.steps_per_sample(dt)) * scene.sample_count();
   ASSERT_EQ(file.rows.size(), bodies * static_cast<std::size_t>(steps + 1));
   // The backend stepped here, state by state, beside the file's rows.
-  const auto sim = kExplicitEuler.start(scene, dt);
+  const auto sim = start_case(kExplicitEuler, scene, dt);
   State state(bodies);
   for (long k = 0; k <= steps; ++k) {
     if (k > 0) sim->step();

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "run/registry.hpp"
+#include "study/start_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -44,8 +45,8 @@ TEST(WorldOnly, EveryBackendRunsTheSameWorldTheSameWayWhateverTheStudy) {
   for (const Backend* backend : backends) {
     if (!scene.features().missing_from(backend->supports()).empty()) continue;
     ++ran;
-    const auto a = backend->start(scene, dt);
-    const auto b = backend->start(other, dt);
+    const auto a = start_case(*backend, scene, dt);
+    const auto b = start_case(*backend, other, dt);
     State sa(scene.bodies.size()), sb(scene.bodies.size());
     for (int step = 0; step < 120; ++step) {
       a->step(), b->step();
