@@ -101,5 +101,22 @@ TEST(Architecture, EveryIncludeInSrcAndAdaptersPointsDownAsTheDocSays) {
   EXPECT_GT(checked, 100);
 }
 
+// The model, the seam and the study are separate layers: the model includes only itself,
+// the seam only the model, and nothing an engine plugin compiles (the seam, the force model,
+// contact pairs, the adapters) sees the study, whose loader links the TOML library.
+TEST(Architecture, TheModelTheSeamAndTheStudyAreLayersNoPluginSees) {
+  const auto allowed = allowed_includes();
+  ASSERT_TRUE(allowed.count("model") && allowed.count("seam") && allowed.count("study"))
+      << "docs/architecture.md has no row for model/, seam/ or study/";
+  EXPECT_EQ(allowed.at("model"), std::set<std::string>{"model"});
+  EXPECT_EQ(allowed.at("seam"), (std::set<std::string>{"model", "seam"}));
+  EXPECT_TRUE(allowed.at("study").count("model"));
+  for (const char* below_study : {"model", "seam", "physics", "contact", "adapters"}) {
+    ASSERT_TRUE(allowed.count(below_study)) << below_study;
+    EXPECT_FALSE(allowed.at(below_study).count("study"))
+        << below_study << "/ may include study/ in docs/architecture.md";
+  }
+}
+
 }  // namespace
 }  // namespace bb
