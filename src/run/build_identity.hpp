@@ -1,7 +1,8 @@
 // Which build made a result: the bytes of every piece of code that can change it. The
 // program; every shared library the process has loaded, found from the process itself (its
-// loaded objects), not from a list of names, so that beachball's own (libbb_scene.so, the
-// loader; libbb_physics.so, every force term), the engines' and the system's are covered, and
+// loaded objects), not from a list of names, so that beachball's own (libbb_model.so, the
+// model and the seam; libbb_study.so, the loader; libbb_physics.so, every force term), the
+// engines' and the system's are covered, and
 // a new library is covered with no edit; and the engine plugins, each on its own, so that a
 // rebuilt plugin reruns only its backend's runs.
 #pragma once

@@ -19,7 +19,7 @@ TEST(BuildIdentity, TheProjectsLibrariesAreFoundFromTheProcess) {
   const std::vector<std::string> files = loaded_code_files();
   ASSERT_FALSE(files.empty());
   EXPECT_EQ(files.front(), "/proc/self/exe");
-  for (const char* library : {"libbb_scene.so", "libbb_physics.so"}) {
+  for (const char* library : {"libbb_model.so", "libbb_study.so", "libbb_physics.so"}) {
     const std::string path = fs::canonical(bin / library).string();
     EXPECT_NE(std::find(files.begin(), files.end(), path), files.end()) << path;
   }
