@@ -3,20 +3,11 @@
 #include <sstream>
 
 #include "study/case_error.hpp"
+#include "study/load_parts.hpp"
 
 namespace bb {
 
-namespace {
-
-/// A number as messages show it: up to ten significant digits.
-std::string show(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
-}  // namespace
+using load::show;
 
 double contact_pair_count(const CaseSize& size) {
   if (!size.all_pairs) return size.named_pairs;

@@ -5,34 +5,15 @@
 #include <filesystem>
 
 #include "support/program.hpp"
+#include "support/spring_pair_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
 namespace {
 
 /// Two unit masses on a spring, a map of its stiffness by the step.
-const char* kSpringMap = R"(name = "spring_map"
-dims = 2
-duration = 1.0
-sample = 0.1
-dt = [0.1, 0.05]
-report_dt = 0.05
-gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "left"
-shape = "point"
-mass = 1.0
-position = [-0.6, 0.0, 0.0]
-[[body]]
-name = "right"
-shape = "point"
-mass = 1.0
-position = [0.6, 0.0, 0.0]
-[[spring]]
-bodies = ["left", "right"]
-stiffness = 100.0
-rest_length = 1.0
-[course]
+const std::string kSpringMap =
+    test::spring_pair_case("spring_map", "0.1", "[0.1, 0.05]", "0.05") + R"([course]
 integrators = ["explicit-euler", "semi-implicit-euler"]
 [[observe]]
 kind = "max_stretch"

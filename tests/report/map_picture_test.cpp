@@ -11,6 +11,7 @@
 
 #include "report/map_cells.hpp"
 #include "run/sweep_runner.hpp"
+#include "support/spring_pair_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -18,28 +19,8 @@ namespace {
 
 /// Two unit masses on a spring, a map of its stiffness by the step.
 Scene spring_map() {
-  return test::scene_from(R"(name = "spring_map"
-dims = 2
-duration = 1.0
-sample = 0.2
-dt = [0.2, 0.1]
-report_dt = 0.1
-gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "left"
-shape = "point"
-mass = 1.0
-position = [-0.6, 0.0, 0.0]
-[[body]]
-name = "right"
-shape = "point"
-mass = 1.0
-position = [0.6, 0.0, 0.0]
-[[spring]]
-bodies = ["left", "right"]
-stiffness = 100.0
-rest_length = 1.0
-[course]
+  return test::scene_from(test::spring_pair_case("spring_map", "0.2", "[0.2, 0.1]", "0.1") +
+                          R"([course]
 integrators = ["explicit-euler", "semi-implicit-euler", "velocity-verlet"]
 [[sweep]]
 parameter = "spring.1.stiffness"

@@ -7,6 +7,7 @@
 
 #include "study/case_error.hpp"
 #include "study/sweep_parameter.hpp"
+#include "support/spring_pair_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -14,28 +15,7 @@ namespace {
 
 /// Two unit masses joined by a spring, then `sweeps`.
 std::string spring_pair(const std::string& sweeps) {
-  return R"(name = "pair"
-dims = 2
-duration = 1.0
-sample = 0.1
-dt = [0.1, 0.05]
-report_dt = 0.05
-gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "left"
-shape = "point"
-mass = 1.0
-position = [-0.6, 0.0, 0.0]
-[[body]]
-name = "right"
-shape = "point"
-mass = 1.0
-position = [0.6, 0.0, 0.0]
-[[spring]]
-bodies = ["left", "right"]
-stiffness = 100.0
-rest_length = 1.0
-)" + sweeps;
+  return test::spring_pair_case("pair", "0.1", "[0.1, 0.05]", "0.05") + sweeps;
 }
 
 TEST(LoadMap, TwoSweepsMakeAMapOfBothInTheFilesOrder) {
