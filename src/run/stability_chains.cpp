@@ -43,6 +43,9 @@ std::optional<StabilityTrial> StabilityChains::at_hand(Chain& c, double dt) {
   if (const auto f = c.finished.find(dt); f != c.finished.end()) {
     const StabilityTrial trial = f->second;
     c.finished.erase(f);
+    // A trial run ahead was not looked for in the kept results when it started: it counts
+    // as run now that the search asks for it (a trial it asked for counted when looked for).
+    if (c.ahead.erase(dt) > 0 && options_.cache) options_.cache->count_run();
     out_[&c - chains_.data()].step_seconds += trial.step_seconds;
     return trial;
   }
@@ -155,6 +158,7 @@ void StabilityChains::look_ahead() {
     for (double dt : c.search.likely_next(free, known_here)) {
       RunCache* cache = options_.cache;
       submit(i, dt, cache ? cache->key(scene_, "stability trial", *c.backend, dt) : "");
+      c.ahead.insert(dt);
       if (--free == 0) return;
     }
   }

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,8 @@ class StabilityChains {
     std::map<double, StabilityTrial> finished;  ///< run here, not yet asked for
     std::map<double, StabilityTrial> kept;      ///< peeked at in the cache while looking ahead
     std::map<double, long> running;             ///< steps running, with their pieces in the pool
-    double child_seconds = 0.0;                 ///< wall time of its finished children
+    std::set<double> ahead;      ///< steps run ahead, before the search asked for them
+    double child_seconds = 0.0;  ///< wall time of its finished children
     int children = 0;
     bool over = false;
   };
