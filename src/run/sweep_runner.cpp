@@ -19,14 +19,14 @@ namespace {
 /// Rows for a point whose child did not come back: one per backend it would have run.
 std::vector<RunRecord> lost_point(const Scene& point, const Registry& registry,
                                   const RunOptions& options, const ChildOutcome& outcome) {
-  std::vector<std::string> names{"reference"};
+  std::vector<std::string> names{kReferenceName};
   for (const Backend* b : backends_for(point, registry).all) names.push_back(b->name());
   std::vector<RunRecord> rows;
   for (const std::string& name : names) {
-    if (name != "reference" && !backend_wanted(options, name)) continue;
+    if (name != kReferenceName && !backend_wanted(options, name)) continue;
     RunRecord r;
     r.backend = name;
-    if (name != "reference") r.dt = point.report_dt;
+    if (name != kReferenceName) r.dt = point.report_dt;
     r.status =
         outcome.kind == ChildOutcome::Kind::Timeout ? RunStatus::Timeout : RunStatus::Crashed;
     r.reason = "the sweep point's process: " + outcome.reason;
