@@ -18,6 +18,7 @@
 #include "bullet_engine.hpp"
 #include "bullet_gyroscopic.hpp"
 #include "bullet_hinges.hpp"
+#include "bullet_pools.hpp"
 #include "bullet_settings.hpp"
 #include "bullet_springs.hpp"
 #include "bullet_vectors.hpp"
@@ -262,7 +263,7 @@ class BulletSimulation : public Simulation {
   double dt_;
   bool contacts_;
   PlaneMultipoint multipoint_ = plane_multipoint(scene_);
-  btDefaultCollisionConfiguration configuration_;
+  btDefaultCollisionConfiguration configuration_{pools_for(scene_)};
   btCollisionDispatcher dispatcher_{&configuration_};
   btDbvtBroadphase broadphase_;
   btSequentialImpulseConstraintSolver solver_;

@@ -17,6 +17,7 @@
 
 #include "../described_backend.hpp"
 #include "bullet_engine.hpp"
+#include "bullet_pools.hpp"
 #include "bullet_vectors.hpp"
 #include "physics/step_start.hpp"
 #include "seam/engine_catalogue.hpp"
@@ -152,7 +153,7 @@ class SoftBodySimulation : public Simulation {
   const World& scene_;
   const EngineTables& engines_;  ///< the case's [engines.bullet] table among the others
   double dt_;
-  btSoftBodyRigidBodyCollisionConfiguration configuration_;
+  btSoftBodyRigidBodyCollisionConfiguration configuration_{pools_for(scene_)};
   btCollisionDispatcher dispatcher_{&configuration_};
   btDbvtBroadphase broadphase_;
   btSequentialImpulseConstraintSolver solver_;
