@@ -128,7 +128,7 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
   for (const CaseResults* r : cases) t.rows.push_back(row(r->scene->name, r->time_spent));
   return "\n## Where the time went\n\nWall-clock seconds of this report's runs, by the part of "
          "the work: the accuracy runs (the reference and every backend at every dt, in "
-         "parallel, measured), the serial cost pass, the stability search and the sweeps; "
+         "parallel, measured), the cost pass, the stability search and the sweeps; "
          "writing the pages is not counted. Measured like cost, so they change from one run "
          "to the next.\n\n" +
          accuracy_runs_text(runs, reused, sum.accuracy, steps, jobs) +

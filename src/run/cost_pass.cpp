@@ -63,8 +63,8 @@ std::string utc_now() {
   return text;
 }
 
-/// Queues the cost measurement of `runs`, all of `backend`, in one child of the serial pool
-/// (a fork per backend rather than per run), filling each run's cost when it is done. A
+/// Queues the cost measurement of `runs`, all of `backend`, in one child of the pool (a fork
+/// per backend rather than per run), filling each run's cost when it is done. A
 /// measurement that crashes or times out leaves the batch's runs without a cost. A batch
 /// kept from an earlier invocation is not timed again: its costs say when they were.
 /// `timed_steps` gains the seconds of steps the measurement timed.
@@ -121,24 +121,24 @@ void queue_costs(ChildPool& pool, const Backend& backend, const Scene& scene,
 
 }  // namespace
 
-/// The cost pass, when asked for: serial, after every accuracy run, so runs do not disturb
-/// its timing.
+/// The cost pass, when asked for: after every accuracy run, so runs do not disturb its
+/// timing; one measurement per job at once, each a single-threaded loop on its own core.
 void time_costs(const Scene& scene, const ReferenceBackend& reference,
                 const std::vector<AccuracyJob>& jobs, const RunOptions& options,
                 const std::function<void(const std::string&)>& progress, CaseResults& out) {
   if (options.cost) {
-    ChildPool serial(1, options.isolation);
+    ChildPool pool(options.jobs, options.isolation);
     double& timed = out.time_spent.cost_steps;
-    queue_costs(serial, reference, scene, {&out.reference_run}, options, progress, timed);
+    queue_costs(pool, reference, scene, {&out.reference_run}, options, progress, timed);
     // One child per backend measures all its runs, in the order of the sweep.
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       if (i > 0 && jobs[i].backend == jobs[i - 1].backend) continue;
       std::vector<RunRecord*> runs;
       for (std::size_t k = i; k < jobs.size() && jobs[k].backend == jobs[i].backend; ++k)
         runs.push_back(&out.runs[k]);
-      queue_costs(serial, *jobs[i].backend, scene, runs, options, progress, timed);
+      queue_costs(pool, *jobs[i].backend, scene, runs, options, progress, timed);
     }
-    serial.run();
+    pool.run();
   }
 }
 

@@ -1,5 +1,5 @@
-// The cost pass: after every accuracy run, serial so that nothing disturbs its timing, each
-// backend's runs timed in one child (run/cost.hpp times them); a batch kept from an earlier
+// The cost pass: after every accuracy run so that no run disturbs its timing, --jobs
+// measurements at once (one core each), each backend's runs timed in one child (run/cost.hpp times them); a batch kept from an earlier
 // invocation (run_cache.hpp) is not timed again, and its costs say when they were.
 #pragma once
 
