@@ -55,6 +55,27 @@ std::string accuracy_runs_text(long runs, long reused, double seconds, double st
       kept, steps, steps / jobs, jobs);
 }
 
+/// The accuracy runs with a cost, timed two ways: their costs times their steps, and their own
+/// blocks of steps between samples (every step, with whatever observes each step).
+struct TwoTimings {
+  double from_costs = 0.0;
+  double own_blocks = 0.0;
+};
+
+/// What the runs' own timing says beside their costs: a cost times the first
+/// max_seconds_per_repeat of each repeat and extrapolates, so a scene whose steps grow
+/// dearer later (contacts, a cloth settling) costs more over its whole run than its cost says.
+std::string own_timing_text(const TwoTimings& t) {
+  if (t.from_costs <= 0.0 || t.own_blocks <= 0.0) return "";
+  return fmt::format(
+      "Timed in the runs themselves (their blocks of steps between samples, whatever observes "
+      "every step included), the runs with a cost stepped for {:.1f} s of one core, {:.2f} times "
+      "the {:.1f} s their costs give: a cost times the first steps of each repeat and "
+      "extrapolates, so where the steps grow dearer later in a run (contacts, a cloth settling) "
+      "the run takes longer than its cost says.\n\n",
+      t.own_blocks, t.own_blocks / t.from_costs, t.from_costs);
+}
+
 /// Seconds of a core the steps alone took in one part of the work, and the part's name.
 struct StepPart {
   const char* name;
@@ -96,9 +117,12 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
   // costs); a run taken from kept results took no run's time, and is counted apart.
   long runs = 0, reused = 0;
   double steps = 0.0;
+  TwoTimings timed;
   const auto count = [&](const RunRecord& run) {
     ++(run.reused ? reused : runs);
-    if (!run.reused) steps += step_seconds(run);
+    if (run.reused) return;
+    steps += step_seconds(run);
+    if (run.cost) timed.from_costs += step_seconds(run), timed.own_blocks += run.step_seconds;
   };
   for (const CaseResults& r : all) {
     count(r.reference_run);
@@ -131,7 +155,7 @@ std::string time_spent_section(const std::vector<CaseResults>& all, int jobs) {
          "parallel, measured), the cost pass, the stability search and the sweeps; "
          "writing the pages is not counted. Measured like cost, so they change from one run "
          "to the next.\n\n" +
-         accuracy_runs_text(runs, reused, sum.accuracy, steps, jobs) +
+         accuracy_runs_text(runs, reused, sum.accuracy, steps, jobs) + own_timing_text(timed) +
          floor_text({{"accuracy runs, from their costs or their timed steps", steps},
                      {"the cost pass's timed steps", cost_steps},
                      {"the stability trials' step loops", stability_steps},

@@ -70,6 +70,30 @@ TEST(TimeSpent, SaysWhatTheStepsAloneTakeAndTheCostOfARun) {
   EXPECT_NE(page.find("no less than 2.5 s with --jobs 2"), std::string::npos) << page;
 }
 
+// The runs with a cost timed two ways: their costs (the first steps of each repeat,
+// extrapolated) and their own blocks of steps; the page gives both and their ratio.
+TEST(TimeSpent, SetsTheRunsOwnTimingBesideTheirCosts) {
+  Scene scene;
+  scene.name = "timed";
+  std::vector<CaseResults> all(1);
+  all[0].scene = &scene;
+  all[0].time_spent = {6.0, 1.0, 0.0, 0.0};
+  all[0].runs.resize(3);
+  all[0].runs[0].steps = 2000;
+  all[0].runs[0].cost = Cost{1.5e6, 0.0, 3, 1e6, 2e6, ""};  // 3 s from its cost
+  all[0].runs[0].step_seconds = 4.5;                        // 4.5 s timed in the run
+  all[0].runs[1].steps = 1000;
+  all[0].runs[1].cost = Cost{1e6, 0.0, 3, 1e6, 1e6, ""};  // 1 s from its cost
+  all[0].runs[1].step_seconds = 1.5;
+  all[0].runs[2].steps = 10;  // no cost: counted in neither
+  all[0].runs[2].step_seconds = 7.0;
+  const std::string page = time_spent_section(all, 2);
+  EXPECT_NE(page.find("the runs with a cost stepped for 6.0 s of one core, 1.50 times the 4.0 s "
+                      "their costs give"),
+            std::string::npos)
+      << page;
+}
+
 // A run taken from kept results took no run's time: the per-run figure and the floor count
 // only the runs that ran, and the page says how many were reused.
 TEST(TimeSpent, RunsTakenFromKeptResultsAreNotCountedAsRuns) {
