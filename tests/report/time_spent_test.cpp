@@ -70,8 +70,8 @@ TEST(TimeSpent, SaysWhatTheStepsAloneTakeAndTheCostOfARun) {
   EXPECT_NE(page.find("no less than 2.5 s with --jobs 2"), std::string::npos) << page;
 }
 
-// The runs with a cost timed two ways: their costs (the first steps of each repeat,
-// extrapolated) and their own blocks of steps; the page gives both and their ratio.
+// The runs with a cost timed two ways: their costs (step() alone, in a loop of its own) and
+// their own blocks of steps (with what observes each step); the page gives both and their ratio.
 TEST(TimeSpent, SetsTheRunsOwnTimingBesideTheirCosts) {
   Scene scene;
   scene.name = "timed";
