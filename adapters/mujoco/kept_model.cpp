@@ -33,9 +33,13 @@ std::pair<mjModel*, mjData*> KeptModel::take(const std::string& xml) {
     model_ = compiled, xml_ = xml;
   }
   mjModel* model = mj_copyModel(nullptr, model_);
-  mjData* data = data_ != nullptr ? data_ : mj_makeData(model);
+  // mj_makeData resets what it makes; only data kept from an earlier run needs a reset.
+  mjData* data = data_;
   data_ = nullptr;
-  mj_resetData(model, data);
+  if (data != nullptr)
+    mj_resetData(model, data);
+  else
+    data = mj_makeData(model);
   return {model, data};
 }
 
