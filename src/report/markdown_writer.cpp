@@ -282,7 +282,8 @@ std::string reference_section(const CaseResults& results) {
   else
     out += "- self-check: none (" + markdown_text(ref.self_check_note) + ")\n";
   out += fmt::format(
-      "- cost: time spent in step() only, in a serial pass after the accuracy runs; each run "
+      "- cost: time spent in step() only, in a pass after the accuracy runs (one timing per "
+      "core); each run "
       "is repeated until the timed total reaches a minimum and the median is reported (the "
       "Every dt table and the JSON give the fastest and slowest repeat beside it); a median more "
       "than {:g} times "

@@ -20,7 +20,7 @@ struct RunOptions {
   std::vector<std::string> backends;  ///< empty: all; "reference" is always run
   std::vector<double> dts;            ///< empty: the case's sweep
   int jobs = 1;                       ///< accuracy runs in parallel
-  bool cost = true;                   ///< run the serial cost pass
+  bool cost = true;                   ///< run the cost pass
   bool sweep = true;                  ///< run the case's [[sweep]], if it has one
   CostOptions cost_options;
   /// Each run in its own child process with a time limit; false runs in this process.

@@ -25,8 +25,8 @@ inline bool ran_to_end(RunStatus status) {
   return status == RunStatus::Ok || status == RunStatus::Capped;
 }
 
-/// Time spent in step() only, from a separate serial pass: the median over repeats, with the
-/// fastest and slowest repeat beside it.
+/// Time spent in step() only, from a separate pass (one timing per core): the median over repeats,
+/// with the fastest and slowest repeat beside it.
 struct Cost {
   double ns_per_step = 0.0;
   double seconds_per_simulated_second = 0.0;
@@ -192,7 +192,7 @@ struct SweepResults {
 /// written to the results (the report's index page shows where a report's time went).
 struct TimeSpent {
   double accuracy = 0.0;   ///< the reference and every backend at every dt, measured
-  double cost = 0.0;       ///< the serial cost pass
+  double cost = 0.0;       ///< the cost pass
   double stability = 0.0;  ///< the stability search
   double sweep = 0.0;      ///< the case's [[sweep]]
   /// Seconds of the cost pass's timed steps, every repeat of every run it timed: its share
