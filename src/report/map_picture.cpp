@@ -145,7 +145,7 @@ std::string opening(double width, double height, const std::string& title) {
 }
 
 /// The colours' meanings, in a row at `y`, and the line's under it when one is drawn.
-std::string legend(const Scene& scene, double y, bool line) {
+std::string legend(const Scene& scene, double y, const MapTheory* line) {
   std::string out;
   double x = 12.0;
   std::vector<MapOutcome> shown = {MapOutcome::Ok};
@@ -162,12 +162,11 @@ std::string legend(const Scene& scene, double y, bool line) {
         num(x), num(y), outcome_fill(o), num(x + 16.0), num(y + 10.5), escape_xml(name));
     x += 28.0 + 6.5 * static_cast<double>(name.size());
   }
-  if (!line) return out;
+  if (line == nullptr) return out;
   out += fmt::format(
       "<line x1=\"12\" y1=\"{0}\" x2=\"40\" y2=\"{0}\" stroke=\"#000000\" stroke-width=\"2\" "
-      "stroke-dasharray=\"6 3\"/><text x=\"46\" y=\"{1}\">the course theory's largest stable "
-      "step for the backend's integrator (stable on the side of the smaller steps)</text>\n",
-      num(y + 32.0), num(y + 36.0));
+      "stroke-dasharray=\"6 3\"/><text x=\"46\" y=\"{1}\">{2}</text>\n",
+      num(y + 32.0), num(y + 36.0), escape_xml(line->line));
   return out;
 }
 
@@ -194,16 +193,17 @@ std::string map_multiples_file(const Scene& scene) {
 
 std::string boundary_points(const Scene& scene, const std::string& backend, double left, double top,
                             double cell) {
-  const std::vector<BoundaryPoint> boundary = map_boundary(scene, backend);
+  const MapTheory* theory = map_theory(scene, backend);
+  if (theory == nullptr) return "";
   const MapAxis rows = map_rows(scene), columns = map_columns(scene);
-  const bool step_across = columns.parameter == "dt";
+  const bool bound_across = columns.parameter == theory->bounded;
   const double rows_px = cell * static_cast<double>(rows.values.size());
   std::string out;
-  for (const BoundaryPoint& b : boundary) {
-    const double along = axis_position(step_across ? columns : rows, b.dt);
-    const double at = axis_position(step_across ? rows : columns, b.value);
-    const double x = left + cell * (step_across ? along : at);
-    const double y = top + rows_px - cell * (step_across ? at : along);
+  for (const BoundaryPoint& b : map_boundary(scene, backend)) {
+    const double along = axis_position(bound_across ? columns : rows, b.limit);
+    const double at = axis_position(bound_across ? rows : columns, b.value);
+    const double x = left + cell * (bound_across ? along : at);
+    const double y = top + rows_px - cell * (bound_across ? at : along);
     out += (out.empty() ? "" : " ") + num(x) + "," + num(y);
   }
   return out;
@@ -215,7 +215,7 @@ std::string map_svg(const CaseResults& results, const std::string& backend) {
   const double height = panel_height(scene) + kLegendHeight;
   return opening(width, height, scene.name + ": the map of " + backend) +
          panel(results, backend, 0.0, 0.0) +
-         legend(scene, panel_height(scene), !map_boundary(scene, backend).empty()) + "</svg>\n";
+         legend(scene, panel_height(scene), map_theory(scene, backend)) + "</svg>\n";
 }
 
 std::string map_multiples_svg(const CaseResults& results) {
@@ -227,11 +227,11 @@ std::string map_multiples_svg(const CaseResults& results) {
   const double width = std::max(w * static_cast<double>(across), 620.0);
   const double height = h * static_cast<double>(down) + kLegendHeight;
   std::string out = opening(width, height, scene.name + ": every backend's map");
-  bool line = false;
+  const MapTheory* line = nullptr;
   for (std::size_t i = 0; i < backends.size(); ++i) {
     out += panel(results, backends[i], w * static_cast<double>(i % across),
                  h * static_cast<double>(i / across));
-    line = line || !map_boundary(scene, backends[i]).empty();
+    if (line == nullptr) line = map_theory(scene, backends[i]);
   }
   return out + legend(scene, h * static_cast<double>(down), line) + "</svg>\n";
 }
