@@ -3,8 +3,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "course/tunnelling_theory.hpp"
 #include "model/contact_pairs.hpp"
 #include "run/stability.hpp"
+#include "study/backend_names.hpp"
 
 namespace bb {
 
@@ -27,6 +29,15 @@ std::optional<double> coulomb_hold_tilt(const Scene& point, const std::string&) 
   }
   if (!pair) return std::nullopt;
   return std::atan(pair->friction_static) * 180.0 / std::numbers::pi;
+}
+
+/// Seed section 4: the course's end-of-step collision test surely turns a ball back from a
+/// thin fixed box only below (h + r) / v (course/tunnelling_theory.hpp), for a course variant
+/// whose rule moves the ball out of what it hit (clamp, mirror; reflect leaves it inside).
+std::optional<double> course_catch_step(const Scene& point, const std::string& backend) {
+  for (const CourseVariant& v : course_variants(point))
+    if (v.name == backend && v.ground != "reflect") return surely_turned_back_step(point);
+  return std::nullopt;
 }
 
 }  // namespace
@@ -52,6 +63,17 @@ const std::vector<MapTheory>& map_theories() {
        "and slides beyond; the same line on every backend's map, since it is the law and not a "
        "method.",
        coulomb_hold_tilt},
+      {"dt", "step the course's test surely turns the ball back below",
+       "(panel's half thickness + ball's radius) / speed: below it a step surely ends with the "
+       "ball in the panel's near half, which turns it back",
+       "On a course variant's map the dashed line is (h + r) / v, h the panel's half thickness, "
+       "r the ball's radius and v its speed: the course tests for an overlap only at the end of "
+       "each step and turns a ball out through the face nearest its centre, so it turns back "
+       "for certain only where steps v dt apart must end inside the panel's near half, v dt < "
+       "h + r (half of the panel's thickness and the ball's diameter, not all of it). Past the "
+       "line whether a step lands there, in the far half (out through the far face) or in "
+       "neither (never seen) depends on where the steps happen to fall.",
+       course_catch_step},
   };
   return theories;
 }

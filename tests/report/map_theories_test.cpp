@@ -1,7 +1,8 @@
 // The boundaries the map cases draw besides the spring's: Coulomb's law on the friction map,
 // atan(mu_s) at each static friction, drawn on every backend's map where the tilt axis puts
 // it (a range of tilts is evenly spaced, so the line sits linearly between the rows around
-// it).
+// it); and on the tunnelling map, the step below which the course's test surely turns the
+// ball back, (h + r) / v at each speed, on a course variant's map only.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -78,6 +79,61 @@ TEST(MapTheories, TheFrictionMapsBoundaryIsAtanMuSAtEachColumn) {
     ASSERT_NE(map_theory(scene, backend), nullptr);
     EXPECT_EQ(map_theory(scene, backend)->bounded, "ground.normal");
   }
+}
+
+/// A 5 cm ball flying at a 2 cm panel 1 m away, its speed by the step.
+Scene tunnelling_map(const std::string& ground_rule) {
+  return test::scene_from(R"(name = "tunnelling"
+dims = 2
+duration = 1.0
+sample = 0.1
+dt = [0.1, 0.05]
+report_dt = 0.05
+gravity = [0.0, 0.0, 0.0]
+[[body]]
+name = "ball"
+radius = 0.05
+mass = 0.05
+position = [-1.0, 1.0, 0.0]
+velocity = [8.0, 0.0, 0.0]
+[[body]]
+name = "panel"
+shape = "box"
+half_extents = [0.01, 1.0, 1.0]
+mass = 1.0
+fixed = true
+position = [0.0, 1.0, 0.0]
+[[contact]]
+bodies = ["ball", "panel"]
+restitution = 0.5
+[course]
+integrators = ["semi-implicit-euler"]
+ground = [")" + ground_rule +
+                          R"("]
+[[sweep]]
+parameter = "body.ball.velocity.x"
+values = [32.0, 2.0, 8.0]
+[[sweep]]
+parameter = "dt"
+values = [0.1, 0.05, 0.025, 0.0125]
+)");
+}
+
+TEST(MapTheories, TheTunnellingMapsBoundaryIsHalfThicknessAndRadiusOverSpeed) {
+  const Scene scene = tunnelling_map("clamp");
+  const std::vector<BoundaryPoint> line = map_boundary(scene, "course/semi-implicit-euler");
+  const std::vector<double> speeds = {2.0, 8.0, 32.0};
+  ASSERT_EQ(line.size(), speeds.size());
+  for (std::size_t k = 0; k < speeds.size(); ++k) {
+    EXPECT_EQ(line[k].value, speeds[k]);
+    EXPECT_NEAR(line[k].limit, (0.01 + 0.05) / speeds[k], 1e-15);
+  }
+  EXPECT_EQ(map_theory(scene, "course/semi-implicit-euler")->bounded, "dt");
+  // The course's test, not an engine's or the reference's; nor under the reflect rule, which
+  // leaves the ball inside to be turned again.
+  for (const char* other : {"reference", "bullet", "box2d"})
+    EXPECT_TRUE(map_boundary(scene, other).empty()) << other;
+  EXPECT_TRUE(map_boundary(tunnelling_map("reflect"), "course/semi-implicit-euler").empty());
 }
 
 }  // namespace
