@@ -103,7 +103,13 @@ std::string map_markdown(const CaseResults& results, const MapFiles& files) {
           ? ""
           : fmt::format("; an ok run whose `{}` exceeds {} is past the onset",
                         markdown_text(first.onset), short_number(first.onset_above)),
-      drawn_theory(results) ? " " + drawn_theory(results)->page : std::string());
+      (first.colour.empty()
+           ? std::string()
+           : fmt::format(" An ok run's cell is coloured instead by its `{}` error (against "
+                         "the reference at that point), on one scale for every backend: the "
+                         "bar under the maps.",
+                         markdown_text(first.colour))) +
+          (drawn_theory(results) ? " " + drawn_theory(results)->page : std::string()));
   if (!files.multiples.empty()) out += "![every backend's map](" + files.multiples + ")\n\n";
   if (!files.backends.empty()) {
     out += "Each backend's map alone:";
