@@ -156,6 +156,30 @@ double legend_height(const CaseResults& results, bool line) {
   return kLegendHeight + (line && !map_scale(results).metric.empty() ? 44.0 : 0.0);
 }
 
+/// The outcomes the legend names, each with its words (the onset's threshold stated).
+std::vector<std::pair<MapOutcome, std::string>> legend_outcomes(const Scene& scene) {
+  std::vector<MapOutcome> shown = {MapOutcome::Ok};
+  if (!scene.sweep->onset.empty()) shown.push_back(MapOutcome::PastOnset);
+  for (MapOutcome o : {MapOutcome::Diverged, MapOutcome::Unsupported, MapOutcome::Failed})
+    shown.push_back(o);
+  std::vector<std::pair<MapOutcome, std::string>> out;
+  for (MapOutcome o : shown) {
+    std::string name = map_outcome_name(o);
+    if (o == MapOutcome::PastOnset)
+      name += " (" + scene.sweep->onset + " > " + short_number(scene.sweep->onset_above) + ")";
+    out.emplace_back(o, name);
+  }
+  return out;
+}
+
+/// The legend's width, px: its row of outcomes, or the line's words where they are longer.
+double legend_width(const Scene& scene, const MapTheory* line) {
+  double x = 12.0;
+  for (const auto& [o, name] : legend_outcomes(scene))
+    x += 28.0 + 6.5 * static_cast<double>(name.size());
+  return line ? std::max(x, 58.0 + 6.5 * static_cast<double>(line->line.size())) : x;
+}
+
 /// The colours' meanings, in a row at `y`, the line's under it when one is drawn, and a
 /// coloured map's bar under that.
 std::string legend(const CaseResults& results, double y, const MapTheory* line) {
@@ -164,14 +188,7 @@ std::string legend(const CaseResults& results, double y, const MapTheory* line) 
   if (const MapScale scale = map_scale(results); !scale.metric.empty())
     out += scale_legend(scale, 12.0, y + (line ? 48.0 : 22.0));
   double x = 12.0;
-  std::vector<MapOutcome> shown = {MapOutcome::Ok};
-  if (!scene.sweep->onset.empty()) shown.push_back(MapOutcome::PastOnset);
-  for (MapOutcome o : {MapOutcome::Diverged, MapOutcome::Unsupported, MapOutcome::Failed})
-    shown.push_back(o);
-  for (MapOutcome o : shown) {
-    std::string name = map_outcome_name(o);
-    if (o == MapOutcome::PastOnset)
-      name += " (" + scene.sweep->onset + " > " + short_number(scene.sweep->onset_above) + ")";
+  for (const auto& [o, name] : legend_outcomes(scene)) {
     out += fmt::format(
         "<rect x=\"{}\" y=\"{}\" width=\"12\" height=\"12\" fill=\"{}\" stroke=\"#444444\"/>"
         "<text x=\"{}\" y=\"{}\">{}</text>\n",
@@ -227,8 +244,8 @@ std::string boundary_points(const Scene& scene, const std::string& backend, doub
 
 std::string map_svg(const CaseResults& results, const std::string& backend) {
   const Scene& scene = *results.scene;
-  const double width = std::max(panel_width(scene), 420.0);
   const MapTheory* line = map_theory(scene, backend);
+  const double width = std::max(panel_width(scene), legend_width(scene, line));
   const double height = panel_height(scene) + legend_height(results, line != nullptr);
   return opening(width, height, scene.name + ": the map of " + backend) +
          panel(results, backend, 0.0, 0.0) + legend(results, panel_height(scene), line) +
@@ -241,7 +258,6 @@ std::string map_multiples_svg(const CaseResults& results) {
   const std::size_t across = std::min(kPanelsPerRow, backends.size());
   const std::size_t down = (backends.size() + across - 1) / across;
   const double w = panel_width(scene), h = panel_height(scene);
-  const double width = std::max(w * static_cast<double>(across), 620.0);
   const MapTheory* line = nullptr;
   std::string panels;
   for (std::size_t i = 0; i < backends.size(); ++i) {
@@ -249,6 +265,7 @@ std::string map_multiples_svg(const CaseResults& results) {
                     h * static_cast<double>(i / across));
     if (line == nullptr) line = map_theory(scene, backends[i]);
   }
+  const double width = std::max(w * static_cast<double>(across), legend_width(scene, line));
   const double height = h * static_cast<double>(down) + legend_height(results, line != nullptr);
   return opening(width, height, scene.name + ": every backend's map") + panels +
          legend(results, h * static_cast<double>(down), line) + "</svg>\n";
