@@ -66,7 +66,8 @@ TEST_F(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
 }
 
 // A map's points spread over the array (each point a unit of a shard, sweep_runner.hpp): three
-// tasks each run their share of a 3 x 3 spring map's points, the merge job puts them together,
+// tasks each run their share of a 3 x 3 spring map's points (every backend: `report` takes
+// no --backends), the merge job puts them together,
 // and the report is the map run whole in one process, byte for byte: its results, its page, the
 // small multiples and each backend's map with the theory's line.
 TEST_F(Slurm, AMapShardedOverAJobArrayMergedIsTheMapUnsplit) {
@@ -86,8 +87,7 @@ onset_above = 2.0
 parameter = "dt"
 values = [0.1, 0.05, 0.02]
 )");
-  const std::string options =
-      "--no-cost --backends course/explicit-euler,course/semi-implicit-euler";
+  const std::string options = "--no-cost";
   const test::Outcome submitted =
       test::shell("cd " + work + " && timeout 300 " + test::source_path("scripts/slurm/submit") +
                   " -n 3 --out merged --program " + BEACHBALL_PROGRAM + " --report-args \"" +
