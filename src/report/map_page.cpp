@@ -31,7 +31,19 @@ std::vector<MapOutcome> counted_outcomes(const Scene& scene) {
   return out;
 }
 
-/// Per backend, its points by outcome, and the theory's limit where there is one.
+/// The first theory drawn on any backend's map, nullptr where none is.
+const MapTheory* drawn_theory(const CaseResults& results) {
+  for (const std::string& backend : map_backends(results))
+    if (const MapTheory* theory = map_theory(*results.scene, backend)) return theory;
+  return nullptr;
+}
+
+/// A bound as the table says it: a step as seconds.
+std::string bound_text(const MapTheory& theory, double limit) {
+  return short_number(limit) + (theory.bounded == "dt" ? " s" : "");
+}
+
+/// Per backend, its points by outcome, and the theory's bounds where there are some.
 std::string outcome_table(const CaseResults& results) {
   const Scene& scene = *results.scene;
   const std::vector<MapOutcome> outcomes = counted_outcomes(scene);
@@ -40,7 +52,8 @@ std::string outcome_table(const CaseResults& results) {
     t.headers.push_back(map_outcome_name(o));
     t.right_aligned.push_back(true);
   }
-  t.headers.push_back("theory's largest stable step");
+  const MapTheory* drawn = drawn_theory(results);
+  t.headers.push_back(drawn ? drawn->column : "theory's bound");
   t.right_aligned.push_back(false);
   for (const std::string& backend : map_backends(results)) {
     std::map<MapOutcome, int> count;
@@ -49,11 +62,11 @@ std::string outcome_table(const CaseResults& results) {
     std::vector<std::string> row{backend};
     for (MapOutcome o : outcomes) row.push_back(std::to_string(count[o]));
     const std::vector<BoundaryPoint> line = map_boundary(scene, backend);
-    row.push_back(line.empty() ? "-"
-                  : line.front().dt == 0.0
-                      ? "none: unstable at every step"
-                      : fmt::format("{} s to {} s", short_number(line.front().dt),
-                                    short_number(line.back().dt)));
+    const MapTheory* theory = map_theory(scene, backend);
+    row.push_back(line.empty()                ? "-"
+                  : line.front().limit == 0.0 ? "none: unstable at every step"
+                                              : bound_text(*theory, line.front().limit) + " to " +
+                                                    bound_text(*theory, line.back().limit));
     t.rows.push_back(row);
   }
   return render_markdown(t);
@@ -80,11 +93,7 @@ std::string map_markdown(const CaseResults& results, const MapFiles& files) {
   out += fmt::format(
       "The whole case run again at each of {} x {} points: `{}` from {} (up the side) with `{}` "
       "from {} (along the bottom), every backend at {}. Each cell is a run's outcome at that "
-      "point{}. Where one axis is the step and the course text's theory covers a backend's "
-      "integrator, the dashed line is the theory's largest stable step at each value of the "
-      "other (the stability search's theory column, computed at that point). A run is judged "
-      "over the case's duration only: growth too slow to show in that time (explicit Euler at "
-      "the smallest steps) is ok on the map though the theory calls it unstable.\n\n",
+      "point{}.{}\n\n",
       first.values.size(), second.values.size(), markdown_text(first.parameter), span_text(first),
       markdown_text(second.parameter), span_text(second),
       first.parameter == "dt" || second.parameter == "dt"
@@ -93,7 +102,14 @@ std::string map_markdown(const CaseResults& results, const MapFiles& files) {
       first.onset.empty()
           ? ""
           : fmt::format("; an ok run whose `{}` exceeds {} is past the onset",
-                        markdown_text(first.onset), short_number(first.onset_above)));
+                        markdown_text(first.onset), short_number(first.onset_above)),
+      (first.colour.empty()
+           ? std::string()
+           : fmt::format(" An ok run's cell is coloured instead by its `{}` error (against "
+                         "the reference at that point), on one scale for every backend: the "
+                         "bar under the maps.",
+                         markdown_text(first.colour))) +
+          (drawn_theory(results) ? " " + drawn_theory(results)->page : std::string()));
   if (!files.multiples.empty()) out += "![every backend's map](" + files.multiples + ")\n\n";
   if (!files.backends.empty()) {
     out += "Each backend's map alone:";

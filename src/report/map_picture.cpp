@@ -7,6 +7,7 @@
 
 #include "model/text.hpp"
 #include "report/map_cells.hpp"
+#include "report/map_colour.hpp"
 #include "report/xml_text.hpp"
 
 namespace bb {
@@ -112,18 +113,24 @@ std::string panel(const CaseResults& results, const std::string& backend, double
   const std::size_t q = columns.values.size(), p = rows.values.size();
   std::string out = fmt::format("<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>\n",
                                 num(left), num(y + 20.0), escape_xml(backend));
+  const MapScale scale = map_scale(results);
   for (std::size_t r = 0; r < p; ++r)
     for (std::size_t c = 0; c < q; ++c) {
       const SweepPoint& point = results.sweep->points[rows.index[r] * q + columns.index[c]];
-      const MapOutcome outcome = map_outcome(scene, run_at(point, backend));
+      const RunRecord* run = run_at(point, backend);
+      const MapOutcome outcome = map_outcome(scene, run);
+      // A coloured map paints an ok run's error on the scale, and names it in the title.
+      const std::optional<double> error = scaled_error(scale, run);
       out += fmt::format(
           "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"><title>{} = {}, {} = "
           "{}: {}</title></rect>\n",
           num(left + static_cast<double>(c) * cell),
           num(top + static_cast<double>(p - 1 - r) * cell), num(cell), num(cell),
-          outcome_fill(outcome), escape_xml(rows.parameter), short_number(rows.values[r]),
-          escape_xml(columns.parameter), short_number(columns.values[c]),
-          escape_xml(map_outcome_name(outcome)));
+          error ? scale_fill(scale, *error) : outcome_fill(outcome), escape_xml(rows.parameter),
+          short_number(rows.values[r]), escape_xml(columns.parameter),
+          short_number(columns.values[c]),
+          escape_xml(map_outcome_name(outcome) +
+                     (error ? ", " + scale.metric + " error " + short_number(*error) : "")));
     }
   out += fmt::format(
       "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444444\"/>\n",
@@ -144,30 +151,55 @@ std::string opening(double width, double height, const std::string& title) {
       num(width), num(height), escape_xml(title));
 }
 
-/// The colours' meanings, in a row at `y`, and the line's under it when one is drawn.
-std::string legend(const Scene& scene, double y, bool line) {
-  std::string out;
-  double x = 12.0;
+/// The legend's height: the outcomes and the line, and a colour map's bar under them.
+double legend_height(const CaseResults& results, bool line) {
+  return kLegendHeight + (line && !map_scale(results).metric.empty() ? 44.0 : 0.0);
+}
+
+/// The outcomes the legend names, each with its words (the onset's threshold stated).
+std::vector<std::pair<MapOutcome, std::string>> legend_outcomes(const Scene& scene) {
   std::vector<MapOutcome> shown = {MapOutcome::Ok};
   if (!scene.sweep->onset.empty()) shown.push_back(MapOutcome::PastOnset);
   for (MapOutcome o : {MapOutcome::Diverged, MapOutcome::Unsupported, MapOutcome::Failed})
     shown.push_back(o);
+  std::vector<std::pair<MapOutcome, std::string>> out;
   for (MapOutcome o : shown) {
     std::string name = map_outcome_name(o);
     if (o == MapOutcome::PastOnset)
       name += " (" + scene.sweep->onset + " > " + short_number(scene.sweep->onset_above) + ")";
+    out.emplace_back(o, name);
+  }
+  return out;
+}
+
+/// The legend's width, px: its row of outcomes, or the line's words where they are longer.
+double legend_width(const Scene& scene, const MapTheory* line) {
+  double x = 12.0;
+  for (const auto& [o, name] : legend_outcomes(scene))
+    x += 28.0 + 6.5 * static_cast<double>(name.size());
+  return line ? std::max(x, 58.0 + 6.5 * static_cast<double>(line->line.size())) : x;
+}
+
+/// The colours' meanings, in a row at `y`, the line's under it when one is drawn, and a
+/// coloured map's bar under that.
+std::string legend(const CaseResults& results, double y, const MapTheory* line) {
+  const Scene& scene = *results.scene;
+  std::string out;
+  if (const MapScale scale = map_scale(results); !scale.metric.empty())
+    out += scale_legend(scale, 12.0, y + (line ? 48.0 : 22.0));
+  double x = 12.0;
+  for (const auto& [o, name] : legend_outcomes(scene)) {
     out += fmt::format(
         "<rect x=\"{}\" y=\"{}\" width=\"12\" height=\"12\" fill=\"{}\" stroke=\"#444444\"/>"
         "<text x=\"{}\" y=\"{}\">{}</text>\n",
         num(x), num(y), outcome_fill(o), num(x + 16.0), num(y + 10.5), escape_xml(name));
     x += 28.0 + 6.5 * static_cast<double>(name.size());
   }
-  if (!line) return out;
+  if (line == nullptr) return out;
   out += fmt::format(
       "<line x1=\"12\" y1=\"{0}\" x2=\"40\" y2=\"{0}\" stroke=\"#000000\" stroke-width=\"2\" "
-      "stroke-dasharray=\"6 3\"/><text x=\"46\" y=\"{1}\">the course theory's largest stable "
-      "step for the backend's integrator (stable on the side of the smaller steps)</text>\n",
-      num(y + 32.0), num(y + 36.0));
+      "stroke-dasharray=\"6 3\"/><text x=\"46\" y=\"{1}\">{2}</text>\n",
+      num(y + 32.0), num(y + 36.0), escape_xml(line->line));
   return out;
 }
 
@@ -194,16 +226,17 @@ std::string map_multiples_file(const Scene& scene) {
 
 std::string boundary_points(const Scene& scene, const std::string& backend, double left, double top,
                             double cell) {
-  const std::vector<BoundaryPoint> boundary = map_boundary(scene, backend);
+  const MapTheory* theory = map_theory(scene, backend);
+  if (theory == nullptr) return "";
   const MapAxis rows = map_rows(scene), columns = map_columns(scene);
-  const bool step_across = columns.parameter == "dt";
+  const bool bound_across = columns.parameter == theory->bounded;
   const double rows_px = cell * static_cast<double>(rows.values.size());
   std::string out;
-  for (const BoundaryPoint& b : boundary) {
-    const double along = axis_position(step_across ? columns : rows, b.dt);
-    const double at = axis_position(step_across ? rows : columns, b.value);
-    const double x = left + cell * (step_across ? along : at);
-    const double y = top + rows_px - cell * (step_across ? at : along);
+  for (const BoundaryPoint& b : map_boundary(scene, backend)) {
+    const double along = axis_position(bound_across ? columns : rows, b.limit);
+    const double at = axis_position(bound_across ? rows : columns, b.value);
+    const double x = left + cell * (bound_across ? along : at);
+    const double y = top + rows_px - cell * (bound_across ? at : along);
     out += (out.empty() ? "" : " ") + num(x) + "," + num(y);
   }
   return out;
@@ -211,11 +244,12 @@ std::string boundary_points(const Scene& scene, const std::string& backend, doub
 
 std::string map_svg(const CaseResults& results, const std::string& backend) {
   const Scene& scene = *results.scene;
-  const double width = std::max(panel_width(scene), 420.0);
-  const double height = panel_height(scene) + kLegendHeight;
+  const MapTheory* line = map_theory(scene, backend);
+  const double width = std::max(panel_width(scene), legend_width(scene, line));
+  const double height = panel_height(scene) + legend_height(results, line != nullptr);
   return opening(width, height, scene.name + ": the map of " + backend) +
-         panel(results, backend, 0.0, 0.0) +
-         legend(scene, panel_height(scene), !map_boundary(scene, backend).empty()) + "</svg>\n";
+         panel(results, backend, 0.0, 0.0) + legend(results, panel_height(scene), line) +
+         "</svg>\n";
 }
 
 std::string map_multiples_svg(const CaseResults& results) {
@@ -224,16 +258,17 @@ std::string map_multiples_svg(const CaseResults& results) {
   const std::size_t across = std::min(kPanelsPerRow, backends.size());
   const std::size_t down = (backends.size() + across - 1) / across;
   const double w = panel_width(scene), h = panel_height(scene);
-  const double width = std::max(w * static_cast<double>(across), 620.0);
-  const double height = h * static_cast<double>(down) + kLegendHeight;
-  std::string out = opening(width, height, scene.name + ": every backend's map");
-  bool line = false;
+  const MapTheory* line = nullptr;
+  std::string panels;
   for (std::size_t i = 0; i < backends.size(); ++i) {
-    out += panel(results, backends[i], w * static_cast<double>(i % across),
-                 h * static_cast<double>(i / across));
-    line = line || !map_boundary(scene, backends[i]).empty();
+    panels += panel(results, backends[i], w * static_cast<double>(i % across),
+                    h * static_cast<double>(i / across));
+    if (line == nullptr) line = map_theory(scene, backends[i]);
   }
-  return out + legend(scene, h * static_cast<double>(down), line) + "</svg>\n";
+  const double width = std::max(w * static_cast<double>(across), legend_width(scene, line));
+  const double height = h * static_cast<double>(down) + legend_height(results, line != nullptr);
+  return opening(width, height, scene.name + ": every backend's map") + panels +
+         legend(results, h * static_cast<double>(down), line) + "</svg>\n";
 }
 
 }  // namespace bb

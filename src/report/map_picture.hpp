@@ -1,9 +1,10 @@
 // A map (two [[sweep]]s) drawn as SVG by the program itself: per backend a grid of cells,
 // the first parameter up the side and the second along the bottom (each ascending), each
 // cell coloured by the run's outcome at that point (map_cells.hpp), with the theory's
-// boundary on top where one axis is the step: to its left (or below) the theory says
-// stable, to its right unstable. The small multiples put every backend's map side by side
-// with one legend, so that a class compares where each one holds and where it breaks.
+// boundary on top where a theory bounds one axis (map_theory.hpp): to its left (or below)
+// the theory says the method holds, to its right (or above) not. The small multiples put every
+// backend's map side by side with one legend, so that a class compares where each one holds and
+// where it breaks.
 #pragma once
 
 #include <string>
@@ -30,8 +31,9 @@ std::string map_svg(const CaseResults& results, const std::string& backend);
 std::string map_multiples_svg(const CaseResults& results);
 
 /// The boundary's line in a panel whose cells start at (`left`, `top`) and are `cell` px
-/// wide and high: the "x,y" pairs of its SVG polyline, or "" without a boundary. A step of
-/// 0 (unstable at every step) lies on the step axis's start.
+/// wide and high: the "x,y" pairs of its SVG polyline, one per value of the axis the theory
+/// does not bound, or "" without a boundary. A bound below the bounded axis's first value
+/// (a step of 0: unstable at every step) lies on that axis's start.
 std::string boundary_points(const Scene& scene, const std::string& backend, double left, double top,
                             double cell);
 

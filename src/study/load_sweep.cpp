@@ -107,7 +107,7 @@ Sweep read_second_sweep(TomlReader& r, const Scene& scene, const Sweep& first) {
     r.fail(r.line_of("parameter"),
            "[[sweep]] 'parameter' '" + s.parameter + "' is the first [[sweep]]'s too (line " +
                std::to_string(first.line) + "); a map varies two parameters");
-  for (const char* key : {"published", "onset", "onset_above"})
+  for (const char* key : {"published", "onset", "onset_above", "colour"})
     if (r.has(key))
       r.fail(r.line_of(key), std::string("[[sweep]] '") + key +
                                  "' belongs in the first [[sweep]] of a map (line " +
@@ -148,6 +148,13 @@ void read_sweep(TomlReader& root, Scene& scene) {
   if (r.has("onset_above") && s.onset.empty())
     r.fail(r.line_of("onset_above"), "[[sweep]] 'onset_above' needs an 'onset' to compare");
   s.onset_above = r.number_or("onset_above", 0.0);
+  s.colour = r.string_or("colour", "");
+  if (!s.colour.empty() && !MetricNames(scene).contains(s.colour))
+    r.fail(r.line_of("colour"), "[[sweep]] 'colour' '" + s.colour +
+                                    "' is neither an error metric nor an [[observe]] of this case");
+  if (!s.colour.empty() && sweeps.size() < 2)
+    r.fail(r.line_of("colour"),
+           "[[sweep]] 'colour' colours a map's points: it needs a second [[sweep]]");
   r.finish();
   scene.sweep = s;
   if (sweeps.size() < 2) return;

@@ -75,6 +75,9 @@ struct Sweep {
   /// (the angle at which a block first slides); may be empty.
   std::string onset;
   double onset_above = 0.0;
+  /// A map's colour: an error metric or observable whose error (its difference from the
+  /// reference's) colours each ok point, on one scale for every backend; may be empty.
+  std::string colour;
   int line = 0;
 };
 

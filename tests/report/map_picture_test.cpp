@@ -38,11 +38,13 @@ TEST(MapPicture, TheBoundaryIsTwoOverOmegaAtEachStiffness) {
     ASSERT_EQ(line.size(), 2u) << backend;
     for (const BoundaryPoint& b : line)
       // The theory finds the limit numerically (the step matrix's spectral radius), to 1e-9.
-      EXPECT_NEAR(b.dt, 2.0 / std::sqrt(2.0 * b.value), 1e-9 * b.dt) << backend << " " << b.value;
+      EXPECT_NEAR(b.limit, 2.0 / std::sqrt(2.0 * b.value), 1e-9 * b.limit)
+          << backend << " " << b.value;
     EXPECT_EQ(line.front().value, 100.0);  // ascending, as the rows are drawn
   }
   // Explicit Euler grows every undamped oscillation: no step is stable.
-  for (const BoundaryPoint& b : map_boundary(scene, "course/explicit-euler")) EXPECT_EQ(b.dt, 0.0);
+  for (const BoundaryPoint& b : map_boundary(scene, "course/explicit-euler"))
+    EXPECT_EQ(b.limit, 0.0);
   EXPECT_TRUE(map_boundary(scene, "bullet").empty());
 }
 

@@ -3,8 +3,9 @@
 // free ports, nothing system-wide touched: slurm_cluster.hpp), runs scripts/slurm/submit: the array
 // of shards (scripts/slurm/report.sbatch) and the merge that depends on it; the merged report is
 // the report run whole, byte for byte; and the by-hand example of the same section, its two sbatch
-// lines run as written. Skipped, with the reason, where Slurm is not installed (Debian's
-// slurm-wlm); a cluster that fails to start is a failure, with the daemons' logs.
+// lines run as written; and a map (two [[sweep]]s) sharded over the array point by point, merged
+// byte-identical to the map run whole. Skipped, with the reason, where Slurm is not installed
+// (Debian's slurm-wlm); a cluster that fails to start is a failure, with the daemons' logs.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -17,6 +18,7 @@
 
 #include "slurm/slurm_cluster.hpp"
 #include "support/program.hpp"
+#include "support/spring_pair_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -57,6 +59,57 @@ TEST_F(Slurm, AJobArrayOfShardsMergedIsTheReportUnsplit) {
   ASSERT_EQ(whole.exit_code, 0) << whole.out;
   const auto merged = test::snapshot(work + "/merged"), unsplit = test::snapshot(work + "/whole");
   ASSERT_GT(unsplit.size(), 5u);
+  EXPECT_EQ(merged, unsplit) << job_logs();
+  for (int i = 1; i <= 3; ++i)
+    EXPECT_TRUE(fs::exists(work + "/merged.shards/" + std::to_string(i) + "/beachball-shard.txt"))
+        << i;
+}
+
+// A map's points spread over the array (each point a unit of a shard, sweep_runner.hpp): three
+// tasks each run their share of a 3 x 3 spring map's points (every backend: `report` takes
+// no --backends), the merge job puts them together,
+// and the report is the map run whole in one process, byte for byte: its results, its page, the
+// small multiples and each backend's map with the theory's line.
+TEST_F(Slurm, AMapShardedOverAJobArrayMergedIsTheMapUnsplit) {
+  const std::string work = dir_ + "/work";
+  const std::string map = test::write_case(
+      work, "spring_map.toml",
+      test::spring_pair_case("spring_map", "0.1", "[0.1, 0.05]", "0.05") + R"([course]
+integrators = ["explicit-euler", "semi-implicit-euler"]
+[[observe]]
+kind = "max_stretch"
+[[sweep]]
+parameter = "spring.1.stiffness"
+values = [40.0, 300.0, 900.0]
+onset = "max_stretch"
+onset_above = 2.0
+[[sweep]]
+parameter = "dt"
+values = [0.1, 0.05, 0.02]
+)");
+  const std::string options = "--no-cost";
+  const test::Outcome submitted =
+      test::shell("cd " + work + " && timeout 300 " + test::source_path("scripts/slurm/submit") +
+                  " -n 3 --out merged --program " + BEACHBALL_PROGRAM + " --report-args \"" +
+                  options + "\" --wait " + map);
+  const auto job_logs = [&] {
+    std::string out = "\n--- queue:\n" + test::shell("squeue").out;
+    if (fs::exists(work + "/merged.shards/logs"))
+      for (const auto& [name, bytes] : test::snapshot(work + "/merged.shards/logs"))
+        out += "\n--- " + name + ":\n" + bytes;
+    return out + logs();
+  };
+  ASSERT_EQ(submitted.exit_code, 0) << submitted.out << job_logs();
+
+  const test::Outcome whole =
+      test::beachball("report " + map + " " + options + " --out " + work + "/whole");
+  ASSERT_EQ(whole.exit_code, 0) << whole.out;
+  const auto merged = test::snapshot(work + "/merged"), unsplit = test::snapshot(work + "/whole");
+  ASSERT_TRUE(unsplit.count("spring_map.json") && unsplit.count("spring_map-map.svg") &&
+              unsplit.count("spring_map-map-course-semi-implicit-euler.svg"))
+      << whole.out;
+  EXPECT_NE(unsplit.at("spring_map-map-course-semi-implicit-euler.svg").find("<polyline"),
+            std::string::npos);
   EXPECT_EQ(merged, unsplit) << job_logs();
   for (int i = 1; i <= 3; ++i)
     EXPECT_TRUE(fs::exists(work + "/merged.shards/" + std::to_string(i) + "/beachball-shard.txt"))
