@@ -83,6 +83,46 @@ std::string point_values(const Scene& scene, const SweepPoint& at) {
   return what;
 }
 
+/// A point's runs in its child: the reference's row, then every backend's, encoded.
+std::string run_point(const Scene& point, const Registry& registry, const RunOptions& each) {
+  CaseResults r = run_case(point, registry, each);
+  std::vector<RunRecord> rows{std::move(r.reference_run)};
+  for (RunRecord& run : r.runs) rows.push_back(std::move(run));
+  // The page draws the point's numbers, not its motion.
+  for (RunRecord& row : rows) {
+    row.trajectory = Trajectory{};
+    row.energy.clear();
+    row.distance.clear();
+  }
+  return wire::encode(rows);
+}
+
+/// The points of this machine's share that kept results do not hold, each with its key;
+/// those they hold are filled in from them (and said done).
+std::vector<std::pair<std::size_t, std::string>> take_kept_points(
+    const Scene& scene, const RunOptions& options, SweepResults& out,
+    const std::function<void(const std::string&)>& progress) {
+  std::vector<std::pair<std::size_t, std::string>> to_run;
+  for (std::size_t i = 0; i < out.points.size(); ++i) {
+    const SweepPoint at = out.points[i];
+    if (!in_shard(options.shard, scene, point_unit(scene, at))) continue;
+    // The point's rows depend on the backends asked for, too.
+    std::string what = point_values(scene, at) + "; backends:";
+    for (const std::string& b : options.backends) what += " " + b;
+    const std::string key =
+        options.cache ? options.cache->key(scene, "sweep point", what, point_unit(scene, at)) : "";
+    if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
+      out.points[i].runs = wire::decode_runs(*kept);
+      // Kept, not run: its steps took none of this report's time.
+      for (RunRecord& run : out.points[i].runs) run.step_seconds = 0.0;
+      progress("sweep " + point_label(scene, at));
+      continue;
+    }
+    to_run.emplace_back(i, key);
+  }
+  return to_run;
+}
+
 }  // namespace
 
 Scene sweep_point_scene(const Scene& scene, double value) {
@@ -144,24 +184,8 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
   // A point runs the reference, its self-check and every backend, each with its own limit.
   const std::size_t runs = backends_for(scene, registry).all.size() + 2;
   ChildPool pool(options.jobs, options.isolation);
-  std::vector<std::pair<std::size_t, std::string>> to_run;  // each point's index and its key
-  for (std::size_t i = 0; i < out.points.size(); ++i) {
-    const SweepPoint at = out.points[i];
-    if (!in_shard(options.shard, scene, point_unit(scene, at))) continue;
-    // The point's rows depend on the backends asked for, too.
-    std::string what = point_values(scene, at) + "; backends:";
-    for (const std::string& b : options.backends) what += " " + b;
-    const std::string key =
-        options.cache ? options.cache->key(scene, "sweep point", what, point_unit(scene, at)) : "";
-    if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
-      out.points[i].runs = wire::decode_runs(*kept);
-      // Kept, not run: its steps took none of this report's time.
-      for (RunRecord& run : out.points[i].runs) run.step_seconds = 0.0;
-      progress("sweep " + point_label(scene, at));
-      continue;
-    }
-    to_run.emplace_back(i, key);
-  }
+  std::vector<std::pair<std::size_t, std::string>> to_run =
+      take_kept_points(scene, options, out, progress);
   const auto submit = [&](std::size_t i, const std::string& key,
                           const std::function<void()>& then) {
     const std::string label = point_label(scene, out.points[i]);
@@ -170,20 +194,7 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
     const double limit =
         static_cast<double>(runs) * time_limit(point, point.report_dt, options.timeout);
     pool.submit(
-        label,
-        [&registry, &each, point] {
-          CaseResults r = run_case(point, registry, each);
-          std::vector<RunRecord> rows{std::move(r.reference_run)};
-          for (RunRecord& run : r.runs) rows.push_back(std::move(run));
-          // The page draws the point's numbers, not its motion.
-          for (RunRecord& row : rows) {
-            row.trajectory = Trajectory{};
-            row.energy.clear();
-            row.distance.clear();
-          }
-          return wire::encode(rows);
-        },
-        limit,
+        label, [&registry, &each, point] { return run_point(point, registry, each); }, limit,
         [&, i, point, label, key, then](const ChildOutcome& outcome) {
           out.points[i].runs = outcome.kind == ChildOutcome::Kind::Done
                                    ? wire::decode_runs(outcome.payload)
