@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
 #include "report/format.hpp"
+#include "run/map_budget.hpp"
 #include "study/case_error.hpp"
 
 namespace bb::cli {
@@ -23,6 +24,13 @@ void check_before_work(const std::vector<Scene>& scenes, const RunOptions& optio
                  "gates at report_dt will be empty\n",
                  scene.name, format_dt(scene.report_dt));
   }
+}
+
+void say_map_sizes(const std::vector<Scene>& scenes, const RunOptions& options) {
+  for (const Scene& scene : scenes)
+    if (const std::string size = map_size_text(scene, options); !size.empty())
+      fmt::print(stderr, "beachball: note: {}\n", size);
+  std::fflush(stderr);
 }
 
 RunOptions with_imports(const std::vector<Scene>& scenes, const RunOptions& options) {

@@ -38,6 +38,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
   // The new report is built beside the old one (or inside it) and switched in whole; a
   // folder that holds anything beachball did not write is refused here, before any run.
   ReportFolder report(folder);
+  say_map_sizes(scenes, options);
   int units = 0;
   for (const Scene& scene : scenes)
     units += progress_units(scene, registry, options) +
@@ -45,6 +46,7 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
   Progress progress(units);
   RunOptions with_progress = options;
   with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
+  with_progress.on_note = [&](const std::string& text) { progress.note(text); };
   std::vector<CaseResults> all;
   for (const Scene& scene : scenes) {
     all.push_back(run_case(scene, registry, with_progress));

@@ -42,11 +42,13 @@ int run_command(const std::vector<std::string>& paths, const std::string& out,
     check_outputs_are_ours(folder.path(), case_output_names(scene));
     check_trajectories_are_ours(folder.path(), scene.name, trajectories);
   }
+  say_map_sizes(scenes, options);
   const auto run_one = [&](const Scene& scene, const std::string& steps_folder) {
     Progress progress(progress_units(scene, registry, options));
     RunOptions with_progress = options;
     with_progress.trajectories = steps_folder;
     with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
+    with_progress.on_note = [&](const std::string& text) { progress.note(text); };
     return run_case(scene, registry, with_progress);
   };
   std::vector<CaseResults> ready;

@@ -154,6 +154,7 @@ int shard_command(const std::vector<std::string>& paths, const std::string& out,
   const Registry registry = Registry::load();
   check_before_work(scenes, options);
   check_shard_folder(out);
+  say_map_sizes(scenes, options);
   if (const std::string problem = options.cache->store().problem(); !problem.empty())
     throw CaseError(out, 0, "cannot keep the shard's results: " + problem);
   const Shard shard = *options.shard;
@@ -166,6 +167,7 @@ int shard_command(const std::vector<std::string>& paths, const std::string& out,
   Progress progress(units);
   RunOptions with_progress = options;
   with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
+  with_progress.on_note = [&](const std::string& text) { progress.note(text); };
   for (const Scene& scene : scenes) {
     const CaseResults results = run_case(scene, registry, with_progress);
     if (command == ShardOf::run) continue;

@@ -37,6 +37,10 @@ std::vector<std::string> case_output_names(const Scene& scene);
 /// what each case has, every output name fits.
 void check_before_work(const std::vector<Scene>& scenes, const RunOptions& options);
 
+/// Says on stderr, before any work, each map's size: its points and runs on this machine
+/// (run/map_budget.hpp); its time follows once its first point has run (`on_note`).
+void say_map_sizes(const std::vector<Scene>& scenes, const RunOptions& options);
+
 /// `options` with the programs' trajectories it names (`import_files`) read and checked
 /// against the one case they belong to; throws CaseError with more than one case.
 RunOptions with_imports(const std::vector<Scene>& scenes, const RunOptions& options);

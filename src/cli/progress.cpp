@@ -29,4 +29,10 @@ void Progress::advance(const std::string& what) {
   std::fflush(stderr);
 }
 
+void Progress::note(const std::string& text) {
+  // The progress line is cleared first; the next advance draws it again under the note.
+  fmt::print(stderr, "{}beachball: note: {}\n", enabled_ && done_ > 0 ? "\r\033[K" : "", text);
+  std::fflush(stderr);
+}
+
 }  // namespace bb::cli

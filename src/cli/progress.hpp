@@ -16,6 +16,8 @@ class Progress {
   Progress& operator=(const Progress&) = delete;
   /// One unit done; `what` names it.
   void advance(const std::string& what);
+  /// A line to say (on stderr, "beachball: note: ..."), above the progress line.
+  void note(const std::string& text);
 
  private:
   bool enabled_;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "report/format.hpp"
+#include "report/map_claim_picture.hpp"
 #include "run/claims.hpp"
 
 namespace bb {
@@ -35,10 +36,16 @@ std::string source_cell(const Claim& claim) {
          (quoted.empty() ? std::string() : "; prompted by " + quoted);
 }
 
-std::string verdicts_cell(const ClaimResult& c) {
+/// The verdicts, and for a map's claim whose map ran, its picture.
+std::string verdicts_cell(const CaseResults& results, const ClaimResult& c) {
   std::string cell;
   for (const ClaimVerdict& v : c.verdicts)
     cell += (cell.empty() ? "" : "; ") + verdict_text(*c.claim, v);
+  if (c.claim->region && results.sweep)
+    cell += fmt::format(
+        " ([its map]({}))",
+        map_claim_file(*results.scene,
+                       static_cast<std::size_t>(c.claim - results.scene->claims.data())));
   return cell.empty() ? "-" : cell;
 }
 
@@ -49,7 +56,7 @@ Table case_claims_table(const CaseResults& results) {
   t.headers = {"claim", "course text", "verdicts (numbers at report_dt)"};
   t.right_aligned.assign(t.headers.size(), false);
   for (const ClaimResult& c : results.claims)
-    t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim), verdicts_cell(c)});
+    t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim), verdicts_cell(results, c)});
   return t;
 }
 
@@ -67,7 +74,7 @@ std::string claims_page(const std::vector<CaseResults>& all) {
       ++count;
       // render_markdown escapes every cell's text once.
       t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim),
-                        fmt::format("[{0}]({0}.md)", r.scene->name), verdicts_cell(c)});
+                        fmt::format("[{0}]({0}.md)", r.scene->name), verdicts_cell(r, c)});
     }
   std::string page =
       "# Claims ledger\n\nSentences of the course text, each quoted beside the claim that "
@@ -80,8 +87,11 @@ std::string claims_page(const std::vector<CaseResults>& all) {
       "case page says why). Runs that diverged are named; "
       "where the claim says so, a divergence counts as evidence for it (a claim that "
       "something explodes) or against it. Runs that an engine held at a cap of its own (capped) "
-      "are named and not judged: their numbers are the cap's. The two numbers are those compared "
-      "at report_dt, "
+      "are named and not judged: their numbers are the cap's. A map's claim (a backend's "
+      "outcome inside the theory's region and outside it) is judged at each point of its map: "
+      "it holds at N of M judged points, the points it does not judge counted apart (within its "
+      "margin of the boundary, without an outcome), with a picture of where it fails. The two "
+      "numbers are those compared at report_dt, "
       "and a known cause of a verdict other than holds is named. Computed by the program "
       "from the case files; nothing here is written by hand.\n\n";
   if (count == 0) return page + "No case of this suite has a claim yet.\n";

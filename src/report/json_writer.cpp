@@ -125,16 +125,32 @@ void add_orders(const CaseResults& results, Json& j) {
   }
 }
 
+/// A map's claim counted over its points, with the points where it failed.
+Json region_counts_json(const RegionCounts& n) {
+  Json failing = Json::array();
+  for (const auto& [value, second] : n.failing)
+    failing.push_back({{"value", value}, {"second_value", second}});
+  return {{"judged", n.judged},
+          {"held", n.held},
+          {"within_margin", n.within_margin},
+          {"unclaimed", n.unclaimed},
+          {"no_outcome", n.no_outcome},
+          {"no_theory", n.no_theory},
+          {"failing", failing}};
+}
+
 /// Each claim's verdict per backend, computed from the runs.
 Json claims_json(const CaseResults& results) {
   Json out = Json::array();
   for (const ClaimResult& c : results.claims) {
     Json verdicts = Json::object();
-    for (const ClaimVerdict& v : c.verdicts)
+    for (const ClaimVerdict& v : c.verdicts) {
       verdicts[v.backend] = {{"verdict", v.verdict},
                              {"left", optional_json(v.left)},
                              {"right", optional_json(v.right)},
                              {"cause", v.cause}};
+      if (v.region) verdicts[v.backend]["points"] = region_counts_json(*v.region);
+    }
     out.push_back({{"text", c.claim->text},
                    {"seed", c.claim->seed},
                    {"quote", c.claim->quote},

@@ -9,19 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "run/map_outcome.hpp"
 #include "run/map_theory.hpp"
 #include "run/results.hpp"
 
 namespace bb {
-
-enum class MapOutcome { Ok, PastOnset, Diverged, Unsupported, Failed, Absent };
-
-/// The outcome's name, as the legend and the page say it.
-std::string map_outcome_name(MapOutcome outcome);
-
-/// `run`'s outcome: its status; an ok run whose value of the first [[sweep]]'s `onset` is
-/// above `onset_above` is past the onset (a spring's stretch grown tenfold: exploded).
-MapOutcome map_outcome(const Scene& scene, const RunRecord* run);
 
 /// One axis of a map: its parameter, and its values ascending with the case's index of each.
 struct MapAxis {

@@ -7,6 +7,7 @@
 
 #include "model/text.hpp"
 #include "report/map_cells.hpp"
+#include "report/map_difference.hpp"
 #include "report/map_picture.hpp"
 #include "report/markdown_text.hpp"
 #include "report/table.hpp"
@@ -117,7 +118,7 @@ std::string map_markdown(const CaseResults& results, const MapFiles& files) {
       out += fmt::format(" [{}]({})", markdown_text(backend), file);
     out += ".\n\n";
   }
-  return out + outcome_table(results);
+  return out + outcome_table(results) + "\n" + map_differences_markdown(results, files.differs);
 }
 
 }  // namespace bb

@@ -10,9 +10,11 @@
 
 namespace bb {
 
-/// The map's pictures as written: the small multiples, and (backend, file) for each.
+/// The map's pictures as written: the small multiples, and (backend, file) for each; the
+/// differences from the reference.
 struct MapFiles {
   std::string multiples;
+  std::string differs;
   std::vector<std::pair<std::string, std::string>> backends;
 };
 

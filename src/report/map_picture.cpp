@@ -104,33 +104,55 @@ std::string axes(const Scene& scene, double x, double y) {
   return out;
 }
 
-/// One backend's panel with its top left corner at (`x`, `y`).
-std::string panel(const CaseResults& results, const std::string& backend, double x, double y) {
+/// The drawn mark's SVG on the cell at (`x`, `y`), `cell` px wide: a cross, a ring or "?".
+std::string mark_svg(MapMark mark, double x, double y, double cell) {
+  const double m = cell * 0.22, cx = x + cell / 2.0, cy = y + cell / 2.0;
+  switch (mark) {
+    case MapMark::Cross:
+      return fmt::format(
+          "<path d=\"M{0},{1} L{2},{3} M{0},{3} L{2},{1}\" stroke=\"#000000\" "
+          "stroke-width=\"2\"/>\n",
+          num(x + m), num(y + m), num(x + cell - m), num(y + cell - m));
+    case MapMark::Ring:
+      return fmt::format(
+          "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"none\" stroke=\"#000000\" "
+          "stroke-width=\"1.5\"/>\n",
+          num(cx), num(cy), num(cell / 2.0 - m));
+    case MapMark::Question:
+      return fmt::format(
+          "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\" font-size=\"{}\">?</text>\n", num(cx),
+          num(cy + cell * 0.2), num(cell * 0.6));
+    case MapMark::None:
+      break;
+  }
+  return "";
+}
+
+/// A panel with its top left corner at (`x`, `y`) titled `heading`, each cell as `paint`
+/// gives it, and `backend`'s line on top.
+std::string panel(const CaseResults& results, const std::string& backend,
+                  const std::string& heading, double x, double y, const MapCellPaint& paint) {
   const Scene& scene = *results.scene;
   const MapAxis rows = map_rows(scene), columns = map_columns(scene);
   const double cell = cell_size(scene);
   const double left = x + kLeft, top = y + kTop;
   const std::size_t q = columns.values.size(), p = rows.values.size();
   std::string out = fmt::format("<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>\n",
-                                num(left), num(y + 20.0), escape_xml(backend));
-  const MapScale scale = map_scale(results);
+                                num(left), num(y + 20.0), escape_xml(heading));
+  std::string marks;
   for (std::size_t r = 0; r < p; ++r)
     for (std::size_t c = 0; c < q; ++c) {
       const SweepPoint& point = results.sweep->points[rows.index[r] * q + columns.index[c]];
-      const RunRecord* run = run_at(point, backend);
-      const MapOutcome outcome = map_outcome(scene, run);
-      // A coloured map paints an ok run's error on the scale, and names it in the title.
-      const std::optional<double> error = scaled_error(scale, run);
+      const MapCell painted = paint(point);
+      const double cx = left + static_cast<double>(c) * cell;
+      const double cy = top + static_cast<double>(p - 1 - r) * cell;
       out += fmt::format(
           "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"><title>{} = {}, {} = "
           "{}: {}</title></rect>\n",
-          num(left + static_cast<double>(c) * cell),
-          num(top + static_cast<double>(p - 1 - r) * cell), num(cell), num(cell),
-          error ? scale_fill(scale, *error) : outcome_fill(outcome), escape_xml(rows.parameter),
+          num(cx), num(cy), num(cell), num(cell), painted.fill, escape_xml(rows.parameter),
           short_number(rows.values[r]), escape_xml(columns.parameter),
-          short_number(columns.values[c]),
-          escape_xml(map_outcome_name(outcome) +
-                     (error ? ", " + scale.metric + " error " + short_number(*error) : "")));
+          short_number(columns.values[c]), escape_xml(painted.words));
+      marks += mark_svg(painted.mark, cx, cy, cell);
     }
   out += fmt::format(
       "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444444\"/>\n",
@@ -140,7 +162,23 @@ std::string panel(const CaseResults& results, const std::string& backend, double
     for (const char* stroke : {"stroke=\"#ffffff\" stroke-width=\"5\"",
                                "stroke=\"#000000\" stroke-width=\"2\" stroke-dasharray=\"6 3\""})
       out += fmt::format("<polyline points=\"{}\" fill=\"none\" {}/>\n", line, stroke);
-  return out + axes(scene, left, top);
+  return out + marks + axes(scene, left, top);
+}
+
+/// One backend's panel of its outcomes with its top left corner at (`x`, `y`).
+std::string panel(const CaseResults& results, const std::string& backend, double x, double y) {
+  const Scene& scene = *results.scene;
+  const MapScale scale = map_scale(results);
+  return panel(results, backend, backend, x, y, [&](const SweepPoint& point) {
+    const RunRecord* run = run_at(point, backend);
+    const MapOutcome outcome = map_outcome(scene, run);
+    // A coloured map paints an ok run's error on the scale, and names it in the title.
+    const std::optional<double> error = scaled_error(scale, run);
+    return MapCell{error ? scale_fill(scale, *error) : outcome_fill(outcome),
+                   map_outcome_name(outcome) +
+                       (error ? ", " + scale.metric + " error " + short_number(*error) : ""),
+                   MapMark::None};
+  });
 }
 
 std::string opening(double width, double height, const std::string& title) {
@@ -182,10 +220,11 @@ double legend_width(const Scene& scene, const MapTheory* line) {
 
 /// The colours' meanings, in a row at `y`, the line's under it when one is drawn, and a
 /// coloured map's bar under that.
-std::string legend(const CaseResults& results, double y, const MapTheory* line) {
+std::string legend(const CaseResults& results, double y, const MapTheory* line,
+                   bool with_scale = true) {
   const Scene& scene = *results.scene;
   std::string out;
-  if (const MapScale scale = map_scale(results); !scale.metric.empty())
+  if (const MapScale scale = map_scale(results); with_scale && !scale.metric.empty())
     out += scale_legend(scale, 12.0, y + (line ? 48.0 : 22.0));
   double x = 12.0;
   for (const auto& [o, name] : legend_outcomes(scene)) {
@@ -204,6 +243,31 @@ std::string legend(const CaseResults& results, double y, const MapTheory* line) 
 }
 
 }  // namespace
+
+std::string map_panel(const CaseResults& results, const std::string& backend,
+                      const std::string& heading, double x, double y, const MapCellPaint& paint) {
+  return panel(results, backend, heading, x, y, paint);
+}
+
+std::string map_svg_opening(double width, double height, const std::string& title) {
+  return opening(width, height, title);
+}
+
+std::string map_outcome_fill(MapOutcome outcome) {
+  return outcome_fill(outcome);
+}
+
+std::string map_outcomes_legend(const CaseResults& results, double y, const std::string& backend) {
+  return legend(results, y, map_theory(*results.scene, backend), false);
+}
+
+double map_panel_width(const Scene& scene) {
+  return panel_width(scene);
+}
+
+double map_panel_height(const Scene& scene) {
+  return panel_height(scene);
+}
 
 std::vector<std::string> map_backends(const CaseResults& results) {
   std::vector<std::string> out;

@@ -7,9 +7,11 @@
 // where it breaks.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "report/map_cells.hpp"
 #include "run/results.hpp"
 
 namespace bb {
@@ -29,6 +31,31 @@ std::string map_svg(const CaseResults& results, const std::string& backend);
 
 /// Every backend's map side by side, one legend.
 std::string map_multiples_svg(const CaseResults& results);
+
+/// What a panel's cell shows: its colour, the words its tooltip gives after the point's
+/// values, and a mark drawn on it (a cross, a ring, a question mark) or none.
+enum class MapMark { None, Cross, Ring, Question };
+struct MapCell {
+  std::string fill;
+  std::string words;
+  MapMark mark = MapMark::None;
+};
+using MapCellPaint = std::function<MapCell(const SweepPoint&)>;
+
+/// A panel of the map titled `heading` with its top left corner at (`x`, `y`), each point's
+/// cell as `paint` gives it, and `backend`'s theory line on top where it has one.
+std::string map_panel(const CaseResults& results, const std::string& backend,
+                      const std::string& heading, double x, double y, const MapCellPaint& paint);
+
+/// An SVG's opening (white background, its title) and the size of one panel, for pictures
+/// made of map panels.
+std::string map_svg_opening(double width, double height, const std::string& title);
+double map_panel_width(const Scene& scene);
+/// An outcome's colour on the maps, and the outcomes' legend at `y` (with `backend`'s theory's
+/// line where one bounds its map; no colour bar), for pictures of a map's outcomes.
+std::string map_outcome_fill(MapOutcome outcome);
+std::string map_outcomes_legend(const CaseResults& results, double y, const std::string& backend);
+double map_panel_height(const Scene& scene);
 
 /// The boundary's line in a panel whose cells start at (`left`, `top`) and are `cell` px
 /// wide and high: the "x,y" pairs of its SVG polyline, one per value of the axis the theory

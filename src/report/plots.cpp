@@ -14,6 +14,9 @@
 #include "report/body_panels.hpp"
 #include "report/energy_plot.hpp"
 #include "report/gnuplot.hpp"
+#include "report/map_claim_picture.hpp"
+#include "report/map_difference.hpp"
+#include "report/map_difference_picture.hpp"
 #include "report/map_picture.hpp"
 #include "report/motion_view.hpp"
 #include "report/plot_layout.hpp"
@@ -135,6 +138,9 @@ std::vector<std::string> plot_file_names(const Scene& scene) {
   // A map's pictures: the small multiples and one per backend that can run the case.
   if (scene.second_sweep) {
     names.push_back(map_multiples_file(scene));
+    names.push_back(map_differences_file(scene));
+    for (std::size_t k = 0; k < scene.claims.size(); ++k)
+      if (scene.claims[k].region) names.push_back(map_claim_file(scene, k));
     for (const std::string& backend : runnable_backend_names(scene, engine_catalogue()))
       names.push_back(map_file(scene, backend));
   }
@@ -163,10 +169,19 @@ void write_map(const CaseResults& results, FileBatch& batch, PlotFiles& files) {
   const Scene& scene = *results.scene;
   files.map.multiples = map_multiples_file(scene);
   batch.write(files.map.multiples, map_multiples_svg(results));
+  if (const std::string differs = map_differences_svg(results); !differs.empty()) {
+    files.map.differs = map_differences_file(scene);
+    batch.write(files.map.differs, differs);
+  }
   for (const std::string& backend : map_backends(results)) {
     files.map.backends.push_back({backend, map_file(scene, backend)});
     batch.write(files.map.backends.back().second, map_svg(results, backend));
   }
+  // Each map's claim drawn: its backend's map with the points where it failed crossed out.
+  for (const ClaimResult& c : results.claims)
+    if (c.claim->region)
+      batch.write(map_claim_file(scene, static_cast<std::size_t>(c.claim - scene.claims.data())),
+                  map_claim_svg(results, c));
 }
 
 PlotFiles write_plots(const CaseResults& results, FileBatch& batch) {

@@ -2,6 +2,7 @@
 
 #include "observe/observable_registry.hpp"
 #include "run/engine_catalogue.hpp"
+#include "run/region_claims.hpp"
 
 namespace bb {
 
@@ -14,11 +15,15 @@ const CaseVocabulary& every_word() {
 }
 
 Scene load_case(const std::string& path) {
-  return load_case(path, every_word());
+  Scene scene = load_case(path, every_word());
+  require_region_theory(scene);
+  return scene;
 }
 
 Scene parse_case(std::string_view text, const std::string& file) {
-  return parse_case(text, file, every_word());
+  Scene scene = parse_case(text, file, every_word());
+  require_region_theory(scene);
+  return scene;
 }
 
 }  // namespace bb

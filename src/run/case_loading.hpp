@@ -13,7 +13,8 @@ namespace bb {
 /// Every observable kind of the registry and every engine of the catalogue.
 const CaseVocabulary& every_word();
 
-/// Load the case at `path`; throws CaseError.
+/// Load the case at `path`; throws CaseError (also for a map's claim on a backend the
+/// course theory gives no stable step for, region_claims.hpp).
 Scene load_case(const std::string& path);
 
 /// Parse case text; `file` names it in messages. Throws CaseError.

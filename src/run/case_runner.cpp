@@ -295,10 +295,11 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   keep_drawn_states(scene, out.reference_run);
 
   out.gates = evaluate_gates(scene, out);
-  out.claims = judge_claims(out);
   clock.lap();
   if (scene.sweep && options.sweep) out.sweep = run_sweep(scene, registry, options, progress);
   out.time_spent.sweep = clock.lap();
+  // After the map: a map's claims are judged on its points.
+  out.claims = judge_claims(out);
   return out;
 }
 

@@ -44,6 +44,9 @@ struct RunOptions {
   /// Called after each piece of work with what was done, e.g. "bullet 1/60"; may be called
   /// from several threads at once, never concurrently.
   std::function<void(const std::string&)> on_progress;
+  /// Called with a line to say to the user as the work goes (a map's estimated time, once
+  /// its first point has run); from the thread that runs the case.
+  std::function<void(const std::string&)> on_note;
 };
 
 /// Whether `options` select the backend called `name` (no --backends: every one).

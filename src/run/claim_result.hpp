@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "study/scene.hpp"
@@ -13,6 +14,21 @@ namespace bb {
 /// What a verdict says, for counting: a claim that holds at every dt judged, at some only,
 /// at none, or that has nothing to judge.
 enum class VerdictKind { Holds, Partial, Fails, NotMeasured };
+
+/// A map's claim (region), counted over the map's points: those judged and those of them
+/// where it held, and those not judged: within the margin of the boundary, on a side the
+/// claim does not state ("any"), where the backend has no outcome (unsupported, failed, not
+/// run) or where the theory gives no step.
+struct RegionCounts {
+  int judged = 0;
+  int held = 0;
+  int within_margin = 0;
+  int unclaimed = 0;
+  int no_outcome = 0;
+  int no_theory = 0;
+  /// The points where it failed: (the first [[sweep]]'s value, the second's).
+  std::vector<std::pair<double, double>> failing;
+};
 
 /// One backend's verdict on a claim.
 struct ClaimVerdict {
@@ -37,6 +53,10 @@ struct ClaimVerdict {
   std::string capped_reason;          ///< the first capped run's reason
   /// The dts whose runs had no value for it, largest first.
   std::vector<double> unmeasured = {};
+  /// A map's claim: its counts; then `verdict` is "holds at N of M judged points", "fails at
+  /// N of M judged points" or "holds at N of M judged points, fails at F", each with what
+  /// was not judged, or "not measured (why)".
+  std::optional<RegionCounts> region = {};
 };
 
 struct ClaimResult {

@@ -5,6 +5,7 @@
 
 #include "model/text.hpp"
 #include "run/claim_causes.hpp"
+#include "run/region_claims.hpp"
 #include "study/backend_names.hpp"
 #include "study/metric_names.hpp"
 
@@ -146,6 +147,11 @@ std::vector<ClaimResult> judge_claims(const CaseResults& results) {
   std::vector<ClaimResult> out;
   for (const Claim& claim : results.scene->claims) {
     ClaimResult r{&claim, {}};
+    if (claim.region) {
+      r.verdicts.push_back(judge_region_claim(results, claim));
+      out.push_back(std::move(r));
+      continue;
+    }
     std::vector<std::string> backends;
     if (claim.left.backend == "*") {
       if (!results.reference_run.backend.empty() && judges_the_reference(claim))
@@ -175,7 +181,8 @@ ClaimStanding claim_standing(const ClaimResult& claim) {
   for (const ClaimVerdict& v : claim.verdicts) {
     if (v.kind == VerdictKind::Fails || v.kind == VerdictKind::Partial) return ClaimStanding::Fails;
     neither = neither || v.kind == VerdictKind::NotMeasured || !v.unmeasured.empty() ||
-              (!v.diverged.empty() && !v.diverged_judged) || !v.capped.empty();
+              (!v.diverged.empty() && !v.diverged_judged) || !v.capped.empty() ||
+              (v.region && v.region->no_outcome > 0);
   }
   return neither ? ClaimStanding::Neither : ClaimStanding::Holds;
 }

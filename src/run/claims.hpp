@@ -13,7 +13,8 @@
 
 namespace bb {
 
-/// Every claim of `results.scene` judged on `results`' runs. run_case does this once, into
+/// Every claim of `results.scene` judged on `results`' runs (a map's claim on its map's
+/// points, region_claims.hpp). run_case does this once, after the map, into
 /// CaseResults::claims, which every writer reads.
 std::vector<ClaimResult> judge_claims(const CaseResults& results);
 
@@ -29,8 +30,8 @@ bool claim_holds(const std::string& op, double left, double right, double tolera
 enum class ClaimStanding {
   Holds,    ///< holds for every backend, at every dt judged
   Fails,    ///< fails, or holds only in part, for some backend
-  Neither,  ///< no fail, but some backend not measured (at some dt or all), or with runs
-            ///< diverged unjudged or capped
+  Neither,  ///< no fail, but some backend not measured (at some dt or all, or at some point
+            ///< of a map), or with runs diverged unjudged or capped
 };
 ClaimStanding claim_standing(const ClaimResult& claim);
 

@@ -5,7 +5,8 @@
 
 #include "model/text.hpp"
 #include "run/child_pool.hpp"
-#include "run/engine_catalogue.hpp"
+#include "run/map_budget.hpp"
+#include "run/stopwatch.hpp"
 #include "run/wire.hpp"
 #include "study/backend_names.hpp"
 #include "study/case_error.hpp"
@@ -82,6 +83,46 @@ std::string point_values(const Scene& scene, const SweepPoint& at) {
   return what;
 }
 
+/// A point's runs in its child: the reference's row, then every backend's, encoded.
+std::string run_point(const Scene& point, const Registry& registry, const RunOptions& each) {
+  CaseResults r = run_case(point, registry, each);
+  std::vector<RunRecord> rows{std::move(r.reference_run)};
+  for (RunRecord& run : r.runs) rows.push_back(std::move(run));
+  // The page draws the point's numbers, not its motion.
+  for (RunRecord& row : rows) {
+    row.trajectory = Trajectory{};
+    row.energy.clear();
+    row.distance.clear();
+  }
+  return wire::encode(rows);
+}
+
+/// The points of this machine's share that kept results do not hold, each with its key;
+/// those they hold are filled in from them (and said done).
+std::vector<std::pair<std::size_t, std::string>> take_kept_points(
+    const Scene& scene, const RunOptions& options, SweepResults& out,
+    const std::function<void(const std::string&)>& progress) {
+  std::vector<std::pair<std::size_t, std::string>> to_run;
+  for (std::size_t i = 0; i < out.points.size(); ++i) {
+    const SweepPoint at = out.points[i];
+    if (!in_shard(options.shard, scene, point_unit(scene, at))) continue;
+    // The point's rows depend on the backends asked for, too.
+    std::string what = point_values(scene, at) + "; backends:";
+    for (const std::string& b : options.backends) what += " " + b;
+    const std::string key =
+        options.cache ? options.cache->key(scene, "sweep point", what, point_unit(scene, at)) : "";
+    if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
+      out.points[i].runs = wire::decode_runs(*kept);
+      // Kept, not run: its steps took none of this report's time.
+      for (RunRecord& run : out.points[i].runs) run.step_seconds = 0.0;
+      progress("sweep " + point_label(scene, at));
+      continue;
+    }
+    to_run.emplace_back(i, key);
+  }
+  return to_run;
+}
+
 }  // namespace
 
 Scene sweep_point_scene(const Scene& scene, double value) {
@@ -105,13 +146,9 @@ std::vector<SweepPoint> sweep_points(const Scene& scene) {
 
 void check_map_size(const Scene& scene, const RunOptions& options) {
   if (!scene.second_sweep) return;
-  // The reference and its self-check, then each backend asked for that can run the case.
-  double per_point = 2.0;
-  for (const std::string& name : runnable_backend_names(scene, engine_catalogue()))
-    if (name != kReferenceName && backend_wanted(options, name)) per_point += 1.0;
-  const double points =
-      static_cast<double>(scene.sweep->values.size() * scene.second_sweep->values.size());
-  const double runs = points * per_point;
+  const MapSize size = map_size(scene, options);
+  const double per_point = size.runs_per_point;
+  const double runs = size.runs();
   const int shards = options.shard ? options.shard->count : 1;
   if (runs / shards <= kMaxMapRunsPerMachine) return;
   const int needed = static_cast<int>(std::ceil(runs / kMaxMapRunsPerMachine));
@@ -139,6 +176,7 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
   each.cost = false;
   each.sweep = false;
   each.on_progress = nullptr;
+  each.on_note = nullptr;
   // A point is one unit of a shard: all of it runs where it runs.
   each.shard.reset();
   // A point is kept whole (in this process), not run by run in its child.
@@ -146,42 +184,18 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
   // A point runs the reference, its self-check and every backend, each with its own limit.
   const std::size_t runs = backends_for(scene, registry).all.size() + 2;
   ChildPool pool(options.jobs, options.isolation);
-  for (std::size_t i = 0; i < out.points.size(); ++i) {
-    const SweepPoint at = out.points[i];
-    if (!in_shard(options.shard, scene, point_unit(scene, at))) continue;
-    const std::string label = point_label(scene, at);
-    // The point's rows depend on the backends asked for, too.
-    std::string what = point_values(scene, at) + "; backends:";
-    for (const std::string& b : options.backends) what += " " + b;
-    const std::string key =
-        options.cache ? options.cache->key(scene, "sweep point", what, point_unit(scene, at)) : "";
-    if (const auto kept = options.cache ? options.cache->find(key) : std::nullopt) {
-      out.points[i].runs = wire::decode_runs(*kept);
-      // Kept, not run: its steps took none of this report's time.
-      for (RunRecord& run : out.points[i].runs) run.step_seconds = 0.0;
-      progress("sweep " + label);
-      continue;
-    }
+  std::vector<std::pair<std::size_t, std::string>> to_run =
+      take_kept_points(scene, options, out, progress);
+  const auto submit = [&](std::size_t i, const std::string& key,
+                          const std::function<void()>& then) {
+    const std::string label = point_label(scene, out.points[i]);
     // A swept step sets the point's own limit.
-    const Scene point = point_scene(scene, at);
+    const Scene point = point_scene(scene, out.points[i]);
     const double limit =
         static_cast<double>(runs) * time_limit(point, point.report_dt, options.timeout);
     pool.submit(
-        label,
-        [&registry, &each, point] {
-          CaseResults r = run_case(point, registry, each);
-          std::vector<RunRecord> rows{std::move(r.reference_run)};
-          for (RunRecord& run : r.runs) rows.push_back(std::move(run));
-          // The page draws the point's numbers, not its motion.
-          for (RunRecord& row : rows) {
-            row.trajectory = Trajectory{};
-            row.energy.clear();
-            row.distance.clear();
-          }
-          return wire::encode(rows);
-        },
-        limit,
-        [&, i, point, label, key](const ChildOutcome& outcome) {
+        label, [&registry, &each, point] { return run_point(point, registry, each); }, limit,
+        [&, i, point, label, key, then](const ChildOutcome& outcome) {
           out.points[i].runs = outcome.kind == ChildOutcome::Kind::Done
                                    ? wire::decode_runs(outcome.payload)
                                    : lost_point(point, registry, options, outcome);
@@ -193,7 +207,31 @@ SweepResults run_sweep(const Scene& scene, const Registry& registry, const RunOp
                 outcome.kind == ChildOutcome::Kind::Done &&
                     std::all_of(rows.begin(), rows.end(), RunCache::repeatable));
           progress("sweep " + label);
+          if (then) then();
         });
+  };
+  // A map's point with the most steps runs first, alone: the others' time is estimated from
+  // it and said before they start (map_budget.hpp). A one-parameter sweep runs all at once.
+  Stopwatch alone;
+  if (scene.second_sweep && !to_run.empty()) {
+    const auto first =
+        std::max_element(to_run.begin(), to_run.end(), [&](const auto& a, const auto& b) {
+          return point_steps(scene, out.points[a.first]) < point_steps(scene, out.points[b.first]);
+        });
+    const std::pair<std::size_t, std::string> head = *first;
+    to_run.erase(first);
+    // It runs alone: its wall time is the pool's until it is done.
+    submit(head.first, head.second, [&, head] {
+      const double seconds = alone.lap();
+      std::vector<const SweepPoint*> rest;
+      for (const auto& [i, key] : to_run) rest.push_back(&out.points[i]);
+      if (options.on_note && !rest.empty())
+        options.on_note(map_estimate_text(
+            scene, estimate_map(scene, out.points[head.first], seconds, rest, options.jobs)));
+      for (const auto& [i, key] : to_run) submit(i, key, nullptr);
+    });
+  } else {
+    for (const auto& [i, key] : to_run) submit(i, key, nullptr);
   }
   pool.run();
   return out;

@@ -200,6 +200,7 @@ Scene parse_case(std::string_view text, const std::string& file, const CaseVocab
   load::read_gates(root, scene, vocabulary.engines);
   load::read_claims(root, scene, vocabulary.engines);
   load::read_sweep(root, scene);
+  load::check_region_claims(scene);
   load::read_report_and_stability(root, scene);
   load::read_baseline(root, scene);
   root.finish();

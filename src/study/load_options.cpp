@@ -173,7 +173,6 @@ MetricNames::MetricNames(const Scene& scene) {
   for (const Observe& o : scene.observes) names_.insert(o.name);
 }
 
-/// Fail unless `backend`, named by `key` of `r` (`what` in messages), is one `scene` runs.
 void require_runnable(const TomlReader& r, const Scene& scene, const std::string& key,
                       const std::string& what, const std::string& backend,
                       const std::vector<std::string>& runnable, const EngineCatalogue& catalogue) {
@@ -287,6 +286,13 @@ void read_claims(TomlReader& root, Scene& scene, const EngineCatalogue& catalogu
     c.text = r.string("text");
     if (c.text.empty()) r.fail(r.line_of("text"), "[[claim]] 'text' must not be empty");
     c.seed = r.string_or("seed", "");
+    if (r.has("region")) {
+      read_region_claim(r, scene, c, catalogue);
+      read_claim_source(r, c);
+      r.finish();
+      scene.claims.push_back(c);
+      continue;
+    }
     c.left = read_claim_side(r, scene, "left", backends, metrics, catalogue);
     c.op = r.string("op");
     if (!contains(ops, c.op))

@@ -66,6 +66,16 @@ void read_observes(TomlReader& root, Scene& scene, const BodyNames& names,
                    const CaseVocabulary& vocabulary);
 void read_gates(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue);
 void read_claims(TomlReader& root, Scene& scene, const EngineCatalogue& catalogue);
+/// A [[claim]] with `region` (a map's claim), its keys read from `r` into `c`.
+void read_region_claim(TomlReader& r, const Scene& scene, Claim& c,
+                       const EngineCatalogue& catalogue);
+/// Refuses a map's claim in a case without a map that has the step as one axis; after
+/// read_sweep.
+void check_region_claims(const Scene& scene);
+/// Fail unless `backend`, named by `key` of `r` (`what` in messages), is one `scene` runs.
+void require_runnable(const TomlReader& r, const Scene& scene, const std::string& key,
+                      const std::string& what, const std::string& backend,
+                      const std::vector<std::string>& runnable, const EngineCatalogue& catalogue);
 void read_sweep(TomlReader& root, Scene& scene);
 void read_report_and_stability(TomlReader& root, Scene& scene);
 void read_baseline(TomlReader& root, Scene& scene);

@@ -44,7 +44,23 @@ enum class DivergedCounts {
   Fails,    ///< evidence against it: a claim that something stays bounded
 };
 
-/// A sentence of the course text checked by numbers ([[claim]]): left op right.
+/// A map's claim ([[claim]] with `region`): at each point of the map (two [[sweep]]s, one of
+/// them the step), `backend`'s outcome is `inside` where the point's step lies inside the
+/// region and `outside` where it lies beyond; a point whose step is within `margin` of the
+/// region's boundary (relative) is not judged.
+struct RegionClaim {
+  std::string backend;
+  /// "theory": the steps below the course theory's largest stable step for the backend's
+  /// integrator at the point, times `boundary_factor`.
+  std::string region;
+  double boundary_factor = 1.0;
+  std::string inside = "ok";         ///< "ok", "exploded" (past the onset or diverged), "any"
+  std::string outside = "exploded";  ///< as `inside`
+  double margin = 0.0;               ///< 0 to 1
+};
+
+/// A sentence of the course text checked by numbers ([[claim]]): left op right, or over a
+/// map, a region's outcomes (`region`; then left, op and right are empty).
 struct Claim {
   std::string text;
   std::string seed;  ///< the section of the course text, may be empty
@@ -61,6 +77,7 @@ struct Claim {
   /// `compare = "error"`: each side is read as its distance from the reference's value,
   /// |x - x_reference| (an error metric is one already), not as the value itself.
   bool against_reference = false;
+  std::optional<RegionClaim> region;
   int line = 0;
 };
 

@@ -10,6 +10,8 @@
 
 #include "run/claims.hpp"
 #include "run/engine_catalogue.hpp"
+#include "run/region_claims.hpp"
+#include "run/sweep_runner.hpp"
 #include "study/backend_names.hpp"
 #include "study/metric_names.hpp"
 #include "support/test_support.hpp"
@@ -157,12 +159,39 @@ std::optional<CaseResults> contradicting_results(const Scene& scene, const Claim
   return results;
 }
 
+/// A map in which `claim`, a map's claim, must fail at every point it judges: its backend's
+/// outcome at each point is the other one than the claim states there (diverged for "ok", ok
+/// for "exploded").
+CaseResults contradicting_map(const Scene& scene, const Claim& claim) {
+  CaseResults results;
+  results.scene = &scene;
+  results.sweep =
+      SweepResults{scene.sweep->parameter, sweep_points(scene), scene.second_sweep->parameter};
+  for (SweepPoint& p : results.sweep->points) p.runs.push_back(RunRecord{});
+  const std::vector<RegionPoint> places = region_points(results, claim);
+  for (std::size_t i = 0; i < places.size(); ++i) {
+    RunRecord& run = results.sweep->points[i].runs.front();
+    run.backend = claim.region->backend;
+    const std::string& word =
+        places[i].place == RegionPlace::Inside ? claim.region->inside : claim.region->outside;
+    run.status = word == "ok" ? RunStatus::Diverged : RunStatus::Ok;
+  }
+  return results;
+}
+
 TEST(SuiteClaims, EveryClaimFailsOnNumbersThatContradictIt) {
   int checked = 0;
   for (const Scene& scene : bundled_cases()) {
     const std::vector<std::string> backends = backend_names(scene, engine_catalogue());
     for (std::size_t k = 0; k < scene.claims.size(); ++k) {
       const Claim& claim = scene.claims[k];
+      if (claim.region) {
+        const std::vector<ClaimResult> verdicts = judge_claims(contradicting_map(scene, claim));
+        EXPECT_EQ(verdicts[k].verdicts.front().kind, VerdictKind::Fails)
+            << scene.file << ":" << claim.line << ": " << verdicts[k].verdicts.front().verdict;
+        ++checked;
+        continue;
+      }
       // "*": the reference and a backend that is not the reference; else the one named.
       std::vector<std::string> judged = {claim.left.backend};
       if (claim.left.backend == "*") {

@@ -1,0 +1,138 @@
+#include "run/region_claims.hpp"
+
+#include <map>
+
+#include "model/text.hpp"
+#include "run/stability.hpp"
+#include "run/sweep_runner.hpp"
+#include "study/case_error.hpp"
+
+namespace bb {
+
+namespace {
+
+bool step_is_first(const Scene& scene) {
+  return scene.sweep->parameter == "dt";
+}
+
+/// Whether `outcome` is the one `word` ("ok", "exploded") names.
+bool is_claimed_outcome(const std::string& word, MapOutcome outcome) {
+  if (word == "ok") return outcome == MapOutcome::Ok;
+  return outcome == MapOutcome::PastOnset || outcome == MapOutcome::Diverged;
+}
+
+const RunRecord* region_row(const SweepPoint& point, const std::string& backend) {
+  for (const RunRecord& run : point.runs)
+    if (run.backend == backend) return &run;
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<RegionPoint> region_points(const CaseResults& results, const Claim& claim) {
+  std::vector<RegionPoint> out;
+  if (!results.sweep || !claim.region) return out;
+  const Scene& scene = *results.scene;
+  const RegionClaim& g = *claim.region;
+  const bool step_first = step_is_first(scene);
+  // The theory's step at a value of the other axis (the point's step does not move it).
+  std::map<double, std::optional<double>> limits;
+  for (const SweepPoint& p : results.sweep->points) {
+    const double step = step_first ? p.value : p.second_value;
+    const double other = step_first ? p.second_value : p.value;
+    if (!limits.count(other))
+      limits[other] = theory_for(map_point_scene(scene, p.value, p.second_value), g.backend);
+    RegionPoint r;
+    r.outcome = map_outcome(scene, region_row(p, g.backend));
+    if (const std::optional<double> limit = limits[other]) {
+      r.boundary = *limit * g.boundary_factor;
+      r.place = step < *r.boundary * (1.0 - g.margin)   ? RegionPlace::Inside
+                : step > *r.boundary * (1.0 + g.margin) ? RegionPlace::Outside
+                                                        : RegionPlace::WithinMargin;
+    }
+    const std::string* word = r.place == RegionPlace::Inside    ? &g.inside
+                              : r.place == RegionPlace::Outside ? &g.outside
+                                                                : nullptr;
+    r.judged = word != nullptr && *word != "any" && ran_to_an_outcome(r.outcome);
+    r.held = r.judged && is_claimed_outcome(*word, r.outcome);
+    out.push_back(r);
+  }
+  return out;
+}
+
+ClaimVerdict judge_region_claim(const CaseResults& results, const Claim& claim) {
+  const RegionClaim& g = *claim.region;
+  ClaimVerdict v;
+  v.backend = g.backend;
+  if (!results.sweep) {
+    v.verdict = "not measured (the map did not run)";
+    return v;
+  }
+  const std::vector<RegionPoint> points = region_points(results, claim);
+  RegionCounts n;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const RegionPoint& r = points[i];
+    const SweepPoint& p = results.sweep->points[i];
+    if (r.place == RegionPlace::NoTheory) {
+      ++n.no_theory;
+    } else if (r.place == RegionPlace::WithinMargin) {
+      ++n.within_margin;
+    } else if ((r.place == RegionPlace::Inside ? g.inside : g.outside) == "any") {
+      ++n.unclaimed;
+    } else if (!r.judged) {
+      ++n.no_outcome;
+    } else {
+      ++n.judged;
+      n.held += r.held;
+      if (!r.held) n.failing.emplace_back(p.value, p.second_value);
+    }
+  }
+  const int failed = n.judged - n.held;
+  const std::string of = std::to_string(n.judged) + " judged point" + (n.judged == 1 ? "" : "s");
+  if (n.judged == 0) {
+    v.kind = VerdictKind::NotMeasured;
+    v.verdict = "not measured (no point judged";
+  } else if (failed == 0) {
+    v.kind = VerdictKind::Holds;
+    v.verdict = "holds at " + std::to_string(n.held) + " of " + of;
+  } else if (n.held == 0) {
+    v.kind = VerdictKind::Fails;
+    v.verdict = "fails at " + std::to_string(failed) + " of " + of;
+  } else {
+    v.kind = VerdictKind::Partial;
+    v.verdict =
+        "holds at " + std::to_string(n.held) + " of " + of + ", fails at " + std::to_string(failed);
+  }
+  // Every point of the map is accounted for: what was not judged, and why.
+  const std::vector<std::pair<int, std::string>> apart = {
+      {n.within_margin, "within " + short_number(100.0 * g.margin) + " % of the boundary"},
+      {n.unclaimed, "on a side the claim does not state"},
+      {n.no_outcome, "without an outcome (unsupported, failed or not run)"},
+      {n.no_theory, "where the theory gives no step"}};
+  std::string rest;
+  for (const auto& [count, why] : apart)
+    if (count > 0) rest += (rest.empty() ? "" : ", ") + std::to_string(count) + " " + why;
+  if (n.judged == 0) {
+    v.verdict += rest.empty() ? ")" : ": " + rest + ")";
+  } else if (!rest.empty()) {
+    v.verdict += "; not judged: " + rest;
+  }
+  v.region = n;
+  return v;
+}
+
+void require_region_theory(const Scene& scene) {
+  for (const Claim& claim : scene.claims) {
+    if (!claim.region) continue;
+    const Scene point =
+        map_point_scene(scene, scene.sweep->values.front(), scene.second_sweep->values.front());
+    if (!theory_for(point, claim.region->backend))
+      throw CaseError(scene.file, claim.line,
+                      "[[claim]] with region = \"theory\" names backend '" + claim.region->backend +
+                          "', for which the course theory gives no largest stable step on this "
+                          "case (it covers the course integrators, on scenes its stability "
+                          "theory describes)");
+  }
+}
+
+}  // namespace bb
