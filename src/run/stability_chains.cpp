@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "run/case_runner.hpp"
 #include "run/stability_watch.hpp"
 #include "run/wire.hpp"
 
