@@ -1,5 +1,5 @@
 // [[observe]] of a case file: each observable the case asks for, its kind from the vocabulary
-// the loader is handed, its body, its count and its thresholds.
+// the loader is handed, its body, its count and its thresholds; one name each.
 #include "model/text.hpp"
 #include "study/load_parts.hpp"
 #include "study/vector_limits.hpp"
@@ -88,6 +88,12 @@ void read_observes(TomlReader& root, Scene& scene, const BodyNames& names,
     } else if (r.has("n")) {
       r.fail(r.line_of("n"), "'n' counts events; kind '" + o.kind + "' does not take it");
     }
+    // Results, gates and the events' traces know an observable by its name alone.
+    for (const Observe& first : scene.observes)
+      if (first.name == o.name)
+        r.fail(o.line, "[[observe]] '" + o.name + "' is given twice (first on line " +
+                           std::to_string(first.line) + "): an observable is named by its kind, " +
+                           "body and n alone, so two would share one name");
     read_observe_thresholds(r, scene, *word, o);
     r.finish();
     scene.observes.push_back(o);
