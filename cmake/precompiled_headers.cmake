@@ -1,5 +1,5 @@
 # Precompiled headers: the library headers nearly every source includes (Eigen through the
-# scene model's headers, the standard library) compiled once per target, so each of its
+# headers of model/, the standard library) compiled once per target, so each of its
 # sources (or unity sources) loads them instead of parsing them again. Off with
 # -DBEACHBALL_PCH=OFF (a source that forgot an include still compiles with them on).
 #

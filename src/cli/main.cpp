@@ -22,7 +22,10 @@ namespace {
 struct Values {
   std::vector<std::string> cases;
   std::string out, backends, dts, junit, baseline;
-  int default_jobs = static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u));
+  /// --jobs when not given: the cores, within the option's range.
+  int default_jobs =
+      static_cast<int>(std::clamp(static_cast<double>(std::thread::hardware_concurrency()),
+                                  bb::cli::kJobsRange.min, bb::cli::kJobsRange.max));
   int jobs = default_jobs;
   bool no_cost = false;
   bool no_isolation = false;
@@ -57,10 +60,19 @@ void add_plugin_option(CLI::App* command, Values& v) {
                       "every beachball-*.so in the folders of $BEACHBALL_PLUGIN_PATH)");
 }
 
+/// --jobs: how many of `what` run at once, within kJobsRange; every command that runs in
+/// parallel declares it here.
+void add_jobs_option(CLI::App* command, Values& v, const std::string& what) {
+  const bb::cli::OptionRange& range = bb::cli::kJobsRange;
+  command
+      ->add_option("--jobs", v.jobs,
+                   fmt::format("{} in parallel ({:g} to {:g})", what, range.min, range.max))
+      ->default_val(v.default_jobs);
+}
+
 /// Options shared by the commands that run and time a sweep.
 void add_sweep_options(CLI::App* command, Values& v) {
-  command->add_option("--jobs", v.jobs, "accuracy runs in parallel (1 to 256)")
-      ->default_val(v.default_jobs);
+  add_jobs_option(command, v, "accuracy runs");
   command->add_flag("--no-cost", v.no_cost, "skip the timing pass");
   command
       ->add_option("--cost-time", v.cost_seconds,
@@ -151,7 +163,7 @@ CLI::App* declare_merge(CLI::App& app, Values& v) {
                     "the bundled suite)");
   merge->add_option("--out", v.out, "report folder (or run's output folder)")
       ->default_val("reports");
-  merge->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
+  add_jobs_option(merge, v, "runs");
   add_isolation_options(merge, v);
   add_plugin_option(merge, v);
   return merge;
@@ -164,8 +176,7 @@ CLI::App* declare_stability(CLI::App& app, Values& v) {
   stability->add_option("CASES", v.cases, "case files or folders")->required();
   stability->add_option("--out", v.out, "output folder")->default_val("out/stability");
   stability->add_option("--backends", v.backends, "comma-separated backend names (default: all)");
-  stability->add_option("--jobs", v.jobs, "backends searched in parallel (1 to 256)")
-      ->default_val(v.default_jobs);
+  add_jobs_option(stability, v, "backends searched");
   add_isolation_options(stability, v);
   add_plugin_option(stability, v);
   add_import_option(stability, v);
@@ -181,7 +192,7 @@ CLI::App* declare_check(CLI::App& app, Values& v) {
   check->add_option("--baseline", v.baseline,
                     "also compare every error and observable with the results kept in this "
                     "folder (<case>.json of a `run` or a report); exit 1 where one got worse");
-  check->add_option("--jobs", v.jobs, "runs in parallel (1 to 256)")->default_val(v.default_jobs);
+  add_jobs_option(check, v, "runs");
   add_isolation_options(check, v);
   add_plugin_option(check, v);
   add_import_option(check, v);

@@ -17,9 +17,9 @@ namespace bb {
 
 enum class Shape { Sphere, Box, Point };
 
-/// One rigid body (or particle) of the scene.
-/// A boat's sail (seed section 9, "Boat 1"): planar and friction-free, so the apparent wind
-/// pushes it only along its normal, by the drag formula on its area.
+/// A boat's sail (seed section 9, "Boat 1"), one of the parts a Body may have: planar and
+/// friction-free, so the apparent wind pushes it only along its normal, by the drag formula
+/// on its area.
 struct Sail {
   double area = 0.0;         ///< square metres
   double coefficient = 1.0;  ///< C_s, dimensionless
@@ -53,7 +53,7 @@ struct Hull {
   double sideways = 0.0;  ///< square metres, across the heading
   bool no_drift = false;  ///< sideways drag infinite: the boat goes only where it heads
 };
-
+/// One rigid body (or particle) of the scene, with the parts a boat or a panel may have.
 struct Body {
   std::string name;
   Shape shape = Shape::Sphere;

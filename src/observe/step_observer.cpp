@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "model/motion.hpp"
+#include "observe/event_watches.hpp"
 #include "observe/hinge_observables.hpp"
-#include "observe/observable_registry.hpp"
 #include "observe/stop_observables.hpp"
 
 namespace bb {
@@ -37,29 +37,23 @@ StepObserver::StepObserver(const Scene& scene)
       episodes_(pairs_.size()),
       post_owner_(scene.bodies.size(), -1) {
   trace_.bodies.resize(scene.bodies.size());
-  for (const Observe& o : scene.observes) {
-    if (observable_needs(o.kind, kWatchesSwings)) {
-      swinging_.push_back(o.body);
-      swing_hinge_.push_back(hinge_of(scene, o.body));
-    }
-    if (observable_needs(o.kind, kWatchesStretch)) watch_stretch_ = true;
-    if (observable_needs(o.kind, kWatchesFalls) && scene.ground) falling_.push_back(o.body);
-    if (observable_needs(o.kind, kWatchesStops) &&
-        std::find(stopping_.begin(), stopping_.end(), o.body) == stopping_.end())
-      stopping_.push_back(o.body);
+  // What the observes' kinds watch, each kind's event set up in EventWatches::add's switch.
+  const EventWatches events = event_watches(scene, scene.observes);
+  swinging_ = events.swinging;
+  for (int body : swinging_) swing_hinge_.push_back(hinge_of(scene, body));
+  stopping_ = events.stopping;
+  falling_ = events.falling;
+  for (const CrossingWatch& w : events.crossings) {
+    crossing_watches_.push_back({w});
+    trace_.crossings[w.observe->name];
   }
-  for (const Observe& o : scene.observes)
-    if (const ObservableKind* kind = observable_kind(o.kind); kind && kind->crossing) {
-      crossing_watches_.push_back({&o, kind->crossing});
-      trace_.crossings[o.name];
-    }
   fastest_.assign(stopping_.size(), 0.0);
   for (int body : stopping_) rest_speeds_.push_back(stated_rest_speed(scene, body));
   watches_.assign(stopping_.size(), StopWatch{});
+  watch_stretch_ = events.stretch;
   if (watch_stretch_) {
     trace_.max_stretch = 0.0;
-    for (int k = 0; k < static_cast<int>(scene.springs.size()); ++k)
-      if (scene.springs[k].rest_length > 0.0) stretched_.push_back(k);
+    stretched_ = events.springs;
     last_stretch_.resize(stretched_.size());
   }
   // A 2D body turns when it spins at the start, is pushed, touches something or hangs on a
@@ -198,14 +192,15 @@ void StepObserver::observe_falls(double t, const State& s) {
 }
 
 void StepObserver::observe_crossings(double t, const State& s) {
-  for (CrossingWatch& w : crossing_watches_) {
-    const double now = w.value(scene_, *w.observe, s[w.observe->body]), before = w.last;
-    w.last = now;
+  for (CrossingState& c : crossing_watches_) {
+    const Observe& o = *c.watch.observe;
+    const double now = c.watch.value(scene_, o, s[o.body]), before = c.last;
+    c.last = now;
     if (first_) continue;
     // Up when it leaves below zero, down when it leaves above: as the reference's events.
     const bool rising = before < 0.0 && now >= 0.0, falling = before > 0.0 && now <= 0.0;
     if (rising || falling)
-      trace_.crossings[w.observe->name].push_back(
+      trace_.crossings[o.name].push_back(
           {previous_t_ + (t - previous_t_) * before / (before - now), rising});
   }
 }

@@ -14,7 +14,7 @@
 #include "contact/contact_pairs.hpp"
 #include "model/peaks.hpp"
 #include "model/state.hpp"
-#include "observe/observable_measure.hpp"
+#include "observe/event_watches.hpp"
 #include "seam/event_trace.hpp"
 #include "study/scene.hpp"
 
@@ -96,13 +96,12 @@ class StepObserver {
   /// Each observe whose kind watches a crossing (a CrossingFn) and its value at the last
   /// step: a step where the value changes sign is a crossing, placed by linear
   /// interpolation between the two steps.
-  struct CrossingWatch {
-    const Observe* observe = nullptr;
-    CrossingFn value = nullptr;
+  struct CrossingState {
+    CrossingWatch watch;
     double last = 0.0;
   };
   void observe_crossings(double t, const State& s);
-  std::vector<CrossingWatch> crossing_watches_;
+  std::vector<CrossingState> crossing_watches_;
   bool watch_stretch_ = false;  ///< a max_stretch observable is asked for
   /// Contacts between each pair that can touch (a step where they are close and stop
   /// approaching), their penetration, and the first collision's balance of momentum and

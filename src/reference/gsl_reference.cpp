@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "model/text.hpp"
+#include "observe/event_watches.hpp"
 #include "physics/force_model.hpp"
 #include "physics/state_forces.hpp"
 #include "reference/hybrid_integrator.hpp"
@@ -157,7 +158,8 @@ class ReferenceSimulation : public Simulation {
     integrator_.reset();
     model_ = std::make_unique<SceneModel>(scene_, settings_);
     // The largest stretch and overlap, found between the solver's steps.
-    peaks_ = std::make_unique<PeakWatch>(scene_, settings_.observed(), model_->initial_state());
+    peaks_ = std::make_unique<PeakWatch>(scene_, event_watches(scene_, settings_.observed()),
+                                         model_->initial_state());
     if (!peaks_->active()) peaks_.reset();
     integrator_ =
         std::make_unique<HybridIntegrator>(*model_, options(method), model_->initial_state());

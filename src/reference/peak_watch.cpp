@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "contact/contact_pairs.hpp"
-#include "observe/observable_registry.hpp"
 #include "reference/scene_model_state.hpp"
 
 namespace bb {
@@ -18,17 +17,13 @@ constexpr double kPeakTimeTolerance = 1e-12;
 
 }  // namespace
 
-PeakWatch::PeakWatch(const World& scene, const std::vector<Observe>& observes,
-                     const std::vector<double>& y0)
-    : scene_(scene), penetration_(scene.bodies.size(), 0.0) {
+PeakWatch::PeakWatch(const World& scene, const EventWatches& events, const std::vector<double>& y0)
+    : scene_(scene),
+      stretch_(events.stretch),
+      springs_(events.springs),
+      penetration_(scene.bodies.size(), 0.0) {
   std::vector<bool> overlap_watched(scene.bodies.size(), false);
-  for (const Observe& o : observes) {
-    if (observable_needs(o.kind, kWatchesStretch)) stretch_ = true;
-    if (observable_needs(o.kind, kWatchesOverlap)) overlap_watched[o.body] = true;
-  }
-  if (stretch_)
-    for (int k = 0; k < static_cast<int>(scene.springs.size()); ++k)
-      if (scene.springs[k].rest_length > 0.0) springs_.push_back(k);
+  for (int body : events.overlapping) overlap_watched[body] = true;
   for (const ContactPair& pair : contact_pairs(scene))
     if (overlap_watched[pair.a] || (!pair.ground() && overlap_watched[pair.b]))
       pairs_.push_back(pair);

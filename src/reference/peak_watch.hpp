@@ -10,19 +10,18 @@
 #include "model/contact_pairs.hpp"
 #include "model/peaks.hpp"
 #include "model/world.hpp"
+#include "observe/event_watches.hpp"
 #include "reference/hybrid_integrator.hpp"
 #include "seam/event_trace.hpp"
-#include "seam/observes.hpp"
 
 namespace bb {
 
 class PeakWatch : public SpanWatcher {
  public:
-  /// Watches what `scene`'s observables ask for: max_stretch (every spring with a rest
-  /// length) and max_penetration (every contact pair of the observed bodies). `y0`: the
-  /// state at t = 0, which counts too.
-  PeakWatch(const World& scene, const std::vector<Observe>& observes,
-            const std::vector<double>& y0);
+  /// Watches what `scene`'s observables ask for (`events`): max_stretch (every spring with
+  /// a rest length) and max_penetration (every contact pair of the observed bodies). `y0`:
+  /// the state at t = 0, which counts too.
+  PeakWatch(const World& scene, const EventWatches& events, const std::vector<double>& y0);
   /// Whether anything is watched at all.
   bool active() const { return stretch_ || !pairs_.empty(); }
   /// Each spring's stretch at the span's end; between its ends, where a spring's stretch

@@ -7,7 +7,7 @@
 #include "contact/contact_geometry.hpp"
 #include "contact/impulse_response.hpp"
 #include "model/motion.hpp"
-#include "observe/observable_registry.hpp"
+#include "observe/event_watches.hpp"
 #include "physics/cross_matrix.hpp"
 #include "physics/hinge_motion.hpp"
 #include "reference/gsl_reference.hpp"
@@ -104,28 +104,29 @@ SceneModel::SceneModel(const World& scene, const BackendSettings& settings)
 }
 
 void SceneModel::watch_observed(const std::vector<Observe>& observed) {
+  // What the observes' kinds watch, each kind's event set up in EventWatches::add's switch.
+  // A stop is an event of every body that slides on a rubbing ground, observed or not (the
+  // constructor's); the stretch and the overlaps are peaks between events (PeakWatch).
+  const EventWatches events = event_watches(scene_, observed);
   // Falls are timed exactly, as every backend's are from its steps.
-  for (const Observe& o : observed)
-    if (observable_needs(o.kind, kWatchesFalls) && scene_.ground)
-      sources_.push_back({Watch::Fall, o.body});
+  for (int body : events.falling) sources_.push_back({Watch::Fall, body});
   // Swings are timed exactly, as every backend's are from its steps: a hinged body's by its
   // spin about the axis, any other's by each component of its velocity.
-  for (const Observe& o : observed)
-    if (observable_needs(o.kind, kWatchesSwings)) {
-      if (hinge_[o.body] != nullptr)
-        sources_.push_back({Watch::HingeSwing, o.body});
-      else
-        for (int axis = 0; axis < 3; ++axis)
-          for (const bool down : {false, true})
-            sources_.push_back({Watch::Swing, o.body, {}, axis, down});
-    }
+  for (int body : events.swinging) {
+    if (hinge_[body] != nullptr)
+      sources_.push_back({Watch::HingeSwing, body});
+    else
+      for (int axis = 0; axis < 3; ++axis)
+        for (const bool down : {false, true})
+          sources_.push_back({Watch::Swing, body, {}, axis, down});
+  }
   // A kind's crossings are located exactly, either way, as every backend's are from its steps.
-  for (const Observe& o : observed)
-    if (const ObservableKind* kind = observable_kind(o.kind); kind && kind->crossing) {
-      trace_.crossings[o.name];
-      for (const bool down : {false, true})
-        sources_.push_back({Watch::Crossing, o.body, {}, -1, down, o, kind->crossing});
-    }
+  for (const CrossingWatch& w : events.crossings) {
+    const Observe& o = *w.observe;
+    trace_.crossings[o.name];
+    for (const bool down : {false, true})
+      sources_.push_back({Watch::Crossing, o.body, {}, -1, down, o, w.value});
+  }
 }
 
 std::vector<double> SceneModel::initial_state() const {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "observe/observable_registry.hpp"
+#include "observe/event_watches.hpp"
 #include "observe/stop_observables.hpp"
 #include "report/gnuplot.hpp"
 #include "run/drawn_bodies.hpp"
@@ -25,12 +25,8 @@ double window_start(const CaseResults& results, int body) {
 
 std::vector<int> stopping_bodies(const Scene& scene) {
   std::vector<int> out;
-  for (const Observe& o : scene.observes) {
-    if (observable_needs(o.kind, kWatchesStops) &&
-        static_cast<std::size_t>(o.body) < kPlottedBodies &&
-        std::find(out.begin(), out.end(), o.body) == out.end())
-      out.push_back(o.body);
-  }
+  for (int body : event_watches(scene, scene.observes).stopping)
+    if (static_cast<std::size_t>(body) < kPlottedBodies) out.push_back(body);
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -290,25 +290,6 @@ std::vector<RunRecord> decode_runs(const std::string& bytes) {
   return out;
 }
 
-std::string encode(const Timing& timing) {
-  Writer w;
-  w.raw(timing.median_seconds);
-  w.raw(timing.repeats);
-  w.raw(timing.min_seconds);
-  w.raw(timing.max_seconds);
-  return w.take();
-}
-
-Timing decode_timing(const std::string& bytes) {
-  Reader r(bytes);
-  Timing t;
-  t.median_seconds = r.raw<double>();
-  t.repeats = r.raw<int>();
-  t.min_seconds = r.raw<double>();
-  t.max_seconds = r.raw<double>();
-  return t;
-}
-
 std::string encode(const std::vector<Timing>& timings) {
   Writer w;
   w.raw<std::uint64_t>(timings.size());

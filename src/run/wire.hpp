@@ -17,8 +17,6 @@ RunRecord decode_run(const std::string& bytes);
 /// Several runs, in order (one sweep point's).
 std::string encode(const std::vector<RunRecord>& runs);
 std::vector<RunRecord> decode_runs(const std::string& bytes);
-std::string encode(const Timing& timing);
-Timing decode_timing(const std::string& bytes);
 /// Several timings, in order (one child's cost pass over a backend's runs).
 std::string encode(const std::vector<Timing>& timings);
 std::vector<Timing> decode_timings(const std::string& bytes);

@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "model/world.hpp"
 #include "seam/backend.hpp"
 #include "seam/engine_catalogue.hpp"
 #include "seam/engine_tables.hpp"
