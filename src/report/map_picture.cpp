@@ -128,6 +128,23 @@ std::string mark_svg(MapMark mark, double x, double y, double cell) {
   return "";
 }
 
+/// A bold 12 px character is about this wide, in px.
+constexpr double kTitleCharWidth = 7.4;
+
+/// A panel's title over its cells (from `left`); a longer one starts at the panel's edge
+/// (`x`), and one longer still is condensed to the panel's width rather than run into the next.
+std::string panel_title(const std::string& heading, double x, double left, double y, double width) {
+  const double wide = kTitleCharWidth * static_cast<double>(heading.size());
+  const double over_cells = x + width - left, over_panel = width - 16.0;
+  const double start = wide <= over_cells ? left : x + 8.0;
+  const std::string squeeze =
+      wide <= over_cells || wide <= over_panel
+          ? ""
+          : fmt::format(" textLength=\"{}\" lengthAdjust=\"spacingAndGlyphs\"", num(over_panel));
+  return fmt::format("<text x=\"{}\" y=\"{}\" font-weight=\"bold\"{}>{}</text>\n", num(start),
+                     num(y + 20.0), squeeze, escape_xml(heading));
+}
+
 /// A panel with its top left corner at (`x`, `y`) titled `heading`, each cell as `paint`
 /// gives it, and `backend`'s line on top.
 std::string panel(const CaseResults& results, const std::string& backend,
@@ -137,8 +154,7 @@ std::string panel(const CaseResults& results, const std::string& backend,
   const double cell = cell_size(scene);
   const double left = x + kLeft, top = y + kTop;
   const std::size_t q = columns.values.size(), p = rows.values.size();
-  std::string out = fmt::format("<text x=\"{}\" y=\"{}\" font-weight=\"bold\">{}</text>\n",
-                                num(left), num(y + 20.0), escape_xml(heading));
+  std::string out = panel_title(heading, x, left, y, panel_width(scene));
   std::string marks;
   for (std::size_t r = 0; r < p; ++r)
     for (std::size_t c = 0; c < q; ++c) {

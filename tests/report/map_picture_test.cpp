@@ -95,5 +95,32 @@ TEST(MapPicture, EachPointIsOneCellOfItsRunsOutcome) {
             "spring_map-map-course-semi-implicit-euler.svg");
 }
 
+// A backend's name longer than its panel (a course variant with its floor rule) starts at
+// the panel's edge and is condensed to the panel's width, never run into the next panel.
+TEST(MapPicture, ALongTitleKeepsToItsPanel) {
+  const Scene scene = spring_map();
+  CaseResults results;
+  results.scene = &scene;
+  results.sweep = SweepResults{"spring.1.stiffness", sweep_points(scene), "dt"};
+  const std::string name = "course/semi-implicit-euler+a-rule-with-a-long-name";
+  const std::string svg = map_svg(results, name);
+  const std::size_t title = svg.find(">" + name + "</text>");
+  ASSERT_NE(title, std::string::npos) << svg;
+  const std::size_t open = svg.rfind("<text ", title);
+  const std::string tag = svg.substr(open, title - open);
+  const auto attribute = [&](const std::string& key) {
+    const std::size_t at = tag.find(key + "=\"");
+    return at == std::string::npos ? -1.0 : std::stod(tag.substr(at + key.size() + 2));
+  };
+  const double x = attribute("x"), length = attribute("textLength");
+  ASSERT_GT(length, 0.0) << tag;
+  const double panel = map_panel_width(scene);
+  EXPECT_LE(x + length, panel) << tag;
+  EXPECT_GE(x, 0.0);
+  // A short name keeps its place over the cells, at its natural width.
+  const std::string short_svg = map_svg(results, "course/rk4");
+  EXPECT_EQ(short_svg.find("textLength"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace bb
