@@ -9,8 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "run/case_loading.hpp"
-#include "run/registry.hpp"
+#include "bundled_suite.hpp"
 #include "study/start_case.hpp"
 
 namespace {
@@ -38,37 +37,19 @@ void cold_start_cost(benchmark::State& state, const bb::Backend* backend, const 
   }
 }
 
-/// Every case of the bundled suite, in name order.
-std::vector<bb::Scene> bundled_cases() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(BEACHBALL_CASES_DIR))
-    if (entry.path().extension() == ".toml") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  std::vector<bb::Scene> scenes;
-  for (const auto& f : files) scenes.push_back(bb::load_case(f.string()));
-  return scenes;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  static const std::vector<bb::Scene> scenes = bundled_cases();
-  static const bb::Registry registry = bb::Registry::load();
-  static std::vector<bb::BackendSet> sets;
-  for (const bb::Scene& scene : scenes) {
-    sets.push_back(bb::backends_for(scene, registry));
-    for (const bb::Backend* backend : sets.back().all) {
-      if (!scene.features().missing_from(backend->supports()).empty()) continue;
-      benchmark::RegisterBenchmark((scene.name + "/" + backend->name()).c_str(), start_cost,
-                                   backend, &scene)
-          ->Unit(benchmark::kMicrosecond);
-      benchmark::RegisterBenchmark(("cold/" + scene.name + "/" + backend->name()).c_str(),
-                                   cold_start_cost, backend, &scene)
-          ->Unit(benchmark::kMicrosecond)
-          ->UseRealTime();
-    }
-  }
+  bench::for_each_supported([](const bb::Scene& scene, const bb::Backend& backend) {
+    benchmark::RegisterBenchmark((scene.name + "/" + backend.name()).c_str(), start_cost, &backend,
+                                 &scene)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("cold/" + scene.name + "/" + backend.name()).c_str(),
+                                 cold_start_cost, &backend, &scene)
+        ->Unit(benchmark::kMicrosecond)
+        ->UseRealTime();
+  });
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

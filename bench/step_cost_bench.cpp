@@ -8,8 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "run/case_loading.hpp"
-#include "run/registry.hpp"
+#include "bundled_suite.hpp"
 #include "study/start_case.hpp"
 
 namespace {
@@ -33,33 +32,14 @@ void step_cost(benchmark::State& state, const bb::Backend* backend, const bb::Sc
   state.counters["dt_s"] = dt;
 }
 
-/// Every case of the bundled suite, in name order.
-std::vector<bb::Scene> bundled_cases() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(BEACHBALL_CASES_DIR))
-    if (entry.path().extension() == ".toml") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  std::vector<bb::Scene> scenes;
-  for (const auto& f : files) scenes.push_back(bb::load_case(f.string()));
-  return scenes;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  // The bundled suite and the engine plugins next to this program.
-  static const std::vector<bb::Scene> scenes = bundled_cases();
-  static const bb::Registry registry = bb::Registry::load();
-  static std::vector<bb::BackendSet> sets;
-  for (const bb::Scene& scene : scenes) {
-    sets.push_back(bb::backends_for(scene, registry));
-    for (const bb::Backend* backend : sets.back().all) {
-      if (!scene.features().missing_from(backend->supports()).empty()) continue;
-      benchmark::RegisterBenchmark((scene.name + "/" + backend->name()).c_str(), step_cost, backend,
-                                   &scene);
-    }
-  }
+  bench::for_each_supported([](const bb::Scene& scene, const bb::Backend& backend) {
+    benchmark::RegisterBenchmark((scene.name + "/" + backend.name()).c_str(), step_cost, &backend,
+                                 &scene);
+  });
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
