@@ -14,6 +14,7 @@
 #include "study/case_error.hpp"
 #include "study/case_limits.hpp"
 #include "support/results_rows.hpp"
+#include "support/spring_pair_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -28,24 +29,7 @@ dims = 2
 duration = 1.0
 sample = 0.1
 )" + (dt.empty() ? std::string("dt = [0.1, 0.05]\nreport_dt = 0.05\n") : "dt = [" + dt + "]\n") +
-         R"(gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "left"
-shape = "point"
-mass = 1.0
-position = [-0.5005, 0.0, 0.0]
-[[body]]
-name = "right"
-shape = "point"
-mass = 1.0
-position = [0.5005, 0.0, 0.0]
-[[spring]]
-bodies = ["left", "right"]
-stiffness = )" +
-         k +
-         R"(
-rest_length = 1.0
-[course]
+         "gravity = [0.0, 0.0, 0.0]\n" + test::two_masses_on_a_spring("0.5005", k) + R"([course]
 integrators = ["explicit-euler", "semi-implicit-euler"]
 [[observe]]
 kind = "max_stretch"

@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "support/spring_pair_case.hpp"
+
 namespace bb::test {
 
 /// The map named `name` over 1 s at the stiffnesses `ks` and the steps `dts` (TOML list
@@ -15,22 +17,8 @@ namespace bb::test {
 inline std::string spring_map_case(const std::string& name, const std::string& ks,
                                    const std::string& dts, const std::string& integrators) {
   return "name = \"" + name + "\"\ndims = 2\nduration = 1.0\nsample = 0.2\ndt = " + dts +
-         "\nreport_dt = 0.1\n" + R"(gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "left"
-shape = "point"
-mass = 1.0
-position = [-0.5005, 0.0, 0.0]
-[[body]]
-name = "right"
-shape = "point"
-mass = 1.0
-position = [0.5005, 0.0, 0.0]
-[[spring]]
-bodies = ["left", "right"]
-stiffness = 100.0
-rest_length = 1.0
-[[observe]]
+         "\nreport_dt = 0.1\ngravity = [0.0, 0.0, 0.0]\n" +
+         two_masses_on_a_spring("0.5005", "100.0") + R"([[observe]]
 kind = "max_stretch"
 [course]
 integrators = )" +
