@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <malloc.h>
 
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
@@ -47,24 +48,27 @@ int report_command(const std::vector<std::string>& paths, const std::string& out
   RunOptions with_progress = options;
   with_progress.on_progress = [&](const std::string& what) { progress.advance(what); };
   with_progress.on_note = [&](const std::string& text) { progress.note(text); };
+  // Each case's pages are written into the batch as soon as the case has run, and its series
+  // dropped: the process stays near its starting size, and every child it forks (a fork copies
+  // the parent's page tables) stays cheap. A signal rolls the batch back, pages and all, or
+  // waits for the switch (a few renames).
   std::vector<CaseResults> all;
-  for (const Scene& scene : scenes) {
-    all.push_back(run_case(scene, registry, with_progress));
-    Stopwatch stability;
-    all.back().stability = find_stability_all(
-        scene, registry, options.backends, options.jobs,
-        [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
-        options.isolation, options.timeout, known_trials(all.back().runs), options.cache);
-    all.back().time_spent.stability = stability.lap();
-  }
-  // Pages are written only when every case has run. A signal stops the writing and rolls it
-  // back (the batch and the folder beside go), or waits for the switch (a few renames).
+  std::vector<std::string> rotation_plots;
   {
     const KeptDrawings drawings = keep_drawings(options);
     FileBatch batch(report.target());
-    std::vector<std::string> rotation_plots;
-    for (const CaseResults& r : all)
-      rotation_plots.push_back(write_case_outputs(r, batch).rotation);
+    for (const Scene& scene : scenes) {
+      all.push_back(run_case(scene, registry, with_progress));
+      Stopwatch stability;
+      all.back().stability = find_stability_all(
+          scene, registry, options.backends, options.jobs,
+          [&](const std::string& b) { progress.advance(scene.name + ": stability of " + b); },
+          options.isolation, options.timeout, known_trials(all.back().runs), options.cache);
+      all.back().time_spent.stability = stability.lap();
+      rotation_plots.push_back(write_case_outputs(all.back(), batch).rotation);
+      drop_page_series(all.back());
+      malloc_trim(0);
+    }
     stop_if_interrupted("the report's index");
     batch.write("README.md",
                 index_page(all, rotation_plots, options.cost, options.jobs, index_source(paths)));

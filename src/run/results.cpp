@@ -47,4 +47,22 @@ std::string status_name(RunStatus status) {
   return "?";
 }
 
+namespace {
+
+void drop_series(RunRecord& run) {
+  run.trajectory = Trajectory{};
+  std::vector<double>().swap(run.energy);
+  std::vector<double>().swap(run.distance);
+}
+
+}  // namespace
+
+void drop_page_series(CaseResults& results) {
+  drop_series(results.reference_run);
+  for (RunRecord& run : results.runs) drop_series(run);
+  if (results.sweep)
+    for (SweepPoint& point : results.sweep->points)
+      for (RunRecord& run : point.runs) drop_series(run);
+}
+
 }  // namespace bb

@@ -230,4 +230,8 @@ struct CaseResults {
   TimeSpent time_spent;
 };
 
+/// Empties what only the case's own pages read (every run's trajectory, energy and distance
+/// series), once those pages are written: the index and the claims page read the rest.
+void drop_page_series(CaseResults& results);
+
 }  // namespace bb
