@@ -102,6 +102,9 @@ class OdeSimulation : public Simulation {
     dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_),
                                          threading_);
     quick_step_ = engine_setting(engines, ode_description(), "quick_step") != 0.0;
+    // dWorldQuickStep reorders its rows by ODE's one process-wide random sequence: every run
+    // starts it where a new process does, whatever ran before it in this process.
+    dRandSetSeed(0);
     gyroscopic_ = engine_setting(engines, ode_description(), "gyroscopic_term") != 0.0;
     dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), scene.gravity.z());
     dWorldSetERP(world_, engine_setting(engines, ode_description(), "erp"));
