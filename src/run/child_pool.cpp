@@ -15,6 +15,7 @@
 #include <cstring>
 #include <new>
 
+#include "run/child_batch.hpp"
 #include "run/interrupt.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -31,7 +32,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// What an interrupt during the runs leaves: outputs are written only after all runs.
+/// How many shared children a group's queued pieces are spread over, per slot.
+constexpr std::size_t kSharesPerSlot = 4;
+
+/// What an interrupt during the runs leaves: outputs are switched into place only after all runs.
 constexpr const char* kNothingWritten =
     "; nothing more was written and earlier outputs are as they were";
 
@@ -71,8 +75,9 @@ long address_space_bytes() {
 }
 #endif
 
-/// Runs in the child: the work, its bytes to `result_fd`, then out without cleanup.
-[[noreturn]] void child_main(const ChildPool::Work& work, int result_fd, int console_fd) {
+/// Runs first in every child: default signal handlers, its output to `console_fd`, and its
+/// memory cap.
+void child_setup(int console_fd) {
   restore_default_signal_handlers();
   dup2(console_fd, STDOUT_FILENO);
   dup2(console_fd, STDERR_FILENO);
@@ -84,6 +89,11 @@ long address_space_bytes() {
   const rlimit memory{cap, cap};
   setrlimit(RLIMIT_AS, &memory);
 #endif
+}
+
+/// Runs in the child: the work, its bytes to `result_fd`, then out without cleanup.
+[[noreturn]] void child_main(const ChildPool::Work& work, int result_fd, int console_fd) {
+  child_setup(console_fd);
   int code = 0;
   try {
     write_all(result_fd, work());
@@ -101,7 +111,8 @@ long address_space_bytes() {
 }  // namespace
 
 struct ChildPool::Active {
-  Job job;
+  std::vector<Job> jobs;   ///< one, or a group's in the order they run
+  std::size_t framed = 0;  ///< a shared child's pieces called back so far
   pid_t pid = -1;
   int result_fd = -1;
   int console_fd = -1;
@@ -111,9 +122,10 @@ struct ChildPool::Active {
   Clock::time_point started;
 };
 
-long ChildPool::submit(std::string label, Work work, double timeout, Done done, double priority) {
-  queue_.push_back(
-      {std::move(label), std::move(work), timeout, std::move(done), priority, ++submitted_});
+long ChildPool::submit(std::string label, Work work, double timeout, Done done, double priority,
+                       std::string group) {
+  queue_.push_back({std::move(label), std::move(work), timeout, std::move(done), priority,
+                    ++submitted_, std::move(group)});
   return submitted_;
 }
 
@@ -131,14 +143,30 @@ int ChildPool::free_slots() const {
   return std::max(0, parallel_ - running_ - static_cast<int>(queue_.size()));
 }
 
-ChildPool::Job ChildPool::take_next() {
+std::vector<ChildPool::Job> ChildPool::take_next(bool shared) {
   // The first of the highest priority: max_element keeps the first of equals.
   const auto best = std::max_element(queue_.begin(), queue_.end(), [](const Job& a, const Job& b) {
     return a.priority < b.priority;
   });
-  Job job = std::move(*best);
+  std::vector<Job> jobs;
+  jobs.push_back(std::move(*best));
   queue_.erase(best);
-  return job;
+  if (!shared || jobs.front().group.empty()) return jobs;
+  // Its group's other queued pieces, in the order they were queued: all of them with one
+  // slot, else a few shares of the queue per slot, so that the last pieces still spread
+  // over the slots.
+  const std::size_t pieces = queue_.size() + 1;
+  const std::size_t shares = parallel_ == 1 ? 1 : kSharesPerSlot * parallel_;
+  const std::size_t share = (pieces + shares - 1) / shares;
+  for (auto it = queue_.begin(); it != queue_.end() && jobs.size() < share;) {
+    if (it->group != jobs.front().group) {
+      ++it;
+      continue;
+    }
+    jobs.push_back(std::move(*it));
+    it = queue_.erase(it);
+  }
+  return jobs;
 }
 
 void ChildPool::run() {
@@ -152,7 +180,7 @@ void ChildPool::run_in_process() {
   while (!queue_.empty()) {
     if (interrupt_signal() != 0)
       throw Interrupted("stopped before " + queue_.front().label + kNothingWritten);
-    Job job = take_next();
+    Job job = std::move(take_next(false).front());
     ChildOutcome outcome;
     try {
       outcome.payload = job.work();
@@ -164,7 +192,7 @@ void ChildPool::run_in_process() {
   }
 }
 
-ChildPool::Active ChildPool::start_child(Job job) {
+ChildPool::Active ChildPool::start_child(std::vector<Job> jobs) {
   int result[2], console[2];
   if (pipe(result) != 0 || pipe(console) != 0)
     throw std::runtime_error("cannot make a pipe for a child");
@@ -180,19 +208,52 @@ ChildPool::Active ChildPool::start_child(Job job) {
     if (getppid() != parent) _exit(1);
     close(result[0]);
     close(console[0]);
-    child_main(job.work, result[1], console[1]);
+    if (jobs.size() == 1) child_main(jobs.front().work, result[1], console[1]);
+    std::vector<Work> works;
+    for (const Job& j : jobs) works.push_back(j.work);
+    child_setup(console[1]);
+    run_batch_child(works, result[1]);
   }
   close(result[1]);
   close(console[1]);
   Active a;
+  // A shared child's limit is its first piece's, renewed as each piece is done.
   a.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                  std::chrono::duration<double>(job.timeout));
-  a.job = std::move(job);
+                                  std::chrono::duration<double>(jobs.front().timeout));
+  a.jobs = std::move(jobs);
   a.pid = pid;
   a.started = Clock::now();
   a.result_fd = result[0];
   a.console_fd = console[0];
   return a;
+}
+
+void ChildPool::deliver_frames(Active& a) {
+  if (a.jobs.size() < 2) return;
+  while (a.framed < a.jobs.size()) {
+    std::optional<ChildFrame> frame = take_frame(a.payload);
+    if (!frame) return;
+    Job& job = a.jobs[a.framed++];
+    if (a.framed < a.jobs.size())
+      a.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(a.jobs[a.framed].timeout));
+    if (cancelled_.erase(job.number) > 0) continue;
+    ChildOutcome outcome;
+    outcome.payload = std::move(frame->payload);
+    outcome.console = std::move(frame->console);
+    outcome.seconds = frame->seconds;
+    Done done = std::move(job.done);
+    done(outcome);
+  }
+}
+
+void ChildPool::requeue_rest(Active& a) {
+  for (std::size_t k = a.jobs.size(); k-- > a.framed;) {
+    Job& job = a.jobs[k];
+    if (cancelled_.erase(job.number) > 0) continue;
+    job.group.clear();
+    queue_.push_front(std::move(job));
+  }
 }
 
 void ChildPool::read_output(std::vector<Active>& active) {
@@ -229,9 +290,10 @@ ChildOutcome ChildPool::finish(Active& a, bool closed) {
     kill(a.pid, SIGKILL);
     waitpid(a.pid, &status, 0);
     outcome.kind = ChildOutcome::Kind::Timeout;
-    outcome.reason = with_console("no result within the time limit of " +
-                                      std::to_string(a.job.timeout) + " s (--timeout changes it)",
-                                  a.console);
+    outcome.reason =
+        with_console("no result within the time limit of " +
+                         std::to_string(a.jobs.front().timeout) + " s (--timeout changes it)",
+                     a.console);
     for (int fd : {a.result_fd, a.console_fd})
       if (fd >= 0) close(fd);
   } else {
@@ -264,16 +326,31 @@ void ChildPool::run_isolated() {
       if (a.console_fd >= 0) close(a.console_fd);
     }
   };
+  // A callback that throws (the work cannot go on) stops the other children first.
+  const auto calling_back = [&](const auto& call) {
+    try {
+      call();
+    } catch (...) {
+      stop_all();
+      queue_.clear();
+      throw;
+    }
+  };
   while (!queue_.empty() || !active.empty()) {
     if (interrupt_signal() != 0) {
-      std::string what = active.empty() ? queue_.front().label : active.front().job.label;
+      std::string what = queue_.empty() ? "" : queue_.front().label;
+      if (!active.empty()) {
+        const Active& a = active.front();
+        what = a.jobs[std::min(a.framed, a.jobs.size() - 1)].label;
+      }
       stop_all();
       queue_.clear();
       throw Interrupted("stopped during " + what + kNothingWritten);
     }
-    // The children cancelled by the last callbacks stop before others start.
+    // The children cancelled by the last callbacks stop before others start (a shared
+    // child goes on: its cancelled pieces are not called back).
     std::erase_if(active, [&](Active& a) {
-      if (!cancelled_.erase(a.job.number)) return false;
+      if (a.jobs.size() != 1 || !cancelled_.erase(a.jobs.front().number)) return false;
       kill(a.pid, SIGKILL);
       waitpid(a.pid, nullptr, 0);
       for (int fd : {a.result_fd, a.console_fd})
@@ -282,9 +359,10 @@ void ChildPool::run_isolated() {
     });
     running_ = static_cast<int>(active.size());
     while (static_cast<int>(active.size()) < parallel_ && !queue_.empty())
-      active.push_back(start_child(take_next()));
+      active.push_back(start_child(take_next(true)));
     running_ = static_cast<int>(active.size());
     read_output(active);
+    for (Active& a : active) calling_back([&] { deliver_frames(a); });
     // Finish every child that closed its output or ran out of time.
     for (std::size_t i = 0; i < active.size();) {
       Active& a = active[i];
@@ -293,20 +371,20 @@ void ChildPool::run_isolated() {
         ++i;
         continue;
       }
+      if (a.jobs.size() > 1) {
+        // A shared child: its pieces not framed (a crash, a hang) run again, one child each.
+        finish(a, closed);
+        requeue_rest(a);
+        active.erase(active.begin() + static_cast<long>(i));
+        running_ = static_cast<int>(active.size());
+        continue;
+      }
       const ChildOutcome outcome = finish(a, closed);
-      Done done = std::move(a.job.done);
-      const bool cancelled = cancelled_.erase(a.job.number) > 0;
+      Done done = std::move(a.jobs.front().done);
+      const bool cancelled = cancelled_.erase(a.jobs.front().number) > 0;
       active.erase(active.begin() + static_cast<long>(i));
       running_ = static_cast<int>(active.size());
-      if (cancelled) continue;
-      // A callback that throws (the work cannot go on) stops the other children first.
-      try {
-        done(outcome);
-      } catch (...) {
-        stop_all();
-        queue_.clear();
-        throw;
-      }
+      if (!cancelled) calling_back([&] { done(outcome); });
     }
   }
 }
