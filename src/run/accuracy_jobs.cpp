@@ -151,7 +151,7 @@ class AccuracySchedule {
   /// --trajectories) writes them from its child into its file, and so always runs.
   void submit(const Backend& b, double dt, RunRecord& slot, std::optional<double> shown_dt,
               Finish finish, std::function<void()> then, const std::string& key, bool look_up,
-              bool writes_steps) {
+              bool writes_steps, const std::string& group = "") {
     const std::string what = label(b.name(), shown_dt);
     const std::string steps_file =
         writes_steps && !options_.trajectories.empty()
@@ -166,19 +166,21 @@ class AccuracySchedule {
       if (then) then();
       return;
     }
-    pool_.submit(what, child_work(b, dt, shown_dt.has_value(), std::move(finish), steps_file),
-                 time_limit(scene_, dt, options_.timeout),
-                 [this, &slot, &b, shown_dt, what, then, key, steps_file](const ChildOutcome& o) {
-                   slot = record_from(o, b.name(), shown_dt);
-                   // A trajectory that could not be written stops the command, as any
-                   // output does.
-                   if (!slot.trajectory_problem.empty())
-                     throw WriteError(steps_file, slot.trajectory_problem);
-                   if (!key.empty())
-                     options_.cache->keep(key, wire::encode(slot), RunCache::repeatable(slot));
-                   progress_(what);
-                   if (then) then();
-                 });
+    pool_.submit(
+        what, child_work(b, dt, shown_dt.has_value(), std::move(finish), steps_file),
+        time_limit(scene_, dt, options_.timeout),
+        [this, &slot, &b, shown_dt, what, then, key, steps_file](const ChildOutcome& o) {
+          slot = record_from(o, b.name(), shown_dt);
+          // A trajectory that could not be written stops the command, as any
+          // output does.
+          if (!slot.trajectory_problem.empty())
+            throw WriteError(steps_file, slot.trajectory_problem);
+          if (!key.empty())
+            options_.cache->keep(key, wire::encode(slot), RunCache::repeatable(slot));
+          progress_(what);
+          if (then) then();
+        },
+        0.0, group);
   }
 
   /// What a run's child does: the run (writing its steps to `steps_file`, if named), then
@@ -199,10 +201,11 @@ class AccuracySchedule {
     return options_.cache ? options_.cache->key(scene_, role, b, dt) : std::string();
   }
 
+  /// Job i; jobs of one non-empty `group` may share a child (child_pool.hpp).
   void job(std::size_t i, Finish finish, std::function<void()> then, const std::string& key,
-           bool look_up) {
+           bool look_up, const std::string& group = "") {
     submit(*jobs_[i].backend, jobs_[i].dt, out_.runs[i], jobs_[i].dt, std::move(finish),
-           std::move(then), key, look_up, true);
+           std::move(then), key, look_up, true, group);
   }
 
   /// A backend's jobs are adjacent, largest dt first: its last is its finest.
@@ -218,11 +221,12 @@ class AccuracySchedule {
         if (finest_job(i)) fallback_family(i);
       return;
     }
-    // Every child measures its run against the reference it inherits at fork.
+    // Every child measures its runs against the reference it inherits at fork; the runs,
+    // independent of each other, may share children.
     for (std::size_t i : longest_first(jobs_))
       job(
           i, [this](RunRecord& run) { summarise_in_child(scene_, run, out_.reference); }, nullptr,
-          key_of(*jobs_[i].backend, jobs_[i].dt, "accuracy"), true);
+          key_of(*jobs_[i].backend, jobs_[i].dt, "accuracy"), true, "runs");
   }
 
   /// The keys of a backend's runs in the fallback, its finest (job i) first, then `family`'s
