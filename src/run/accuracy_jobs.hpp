@@ -26,8 +26,8 @@ struct AccuracyRuns {
 /// Jobs are grouped by backend, largest dt first; the runs come back in that order. They
 /// start once the reference is back, the smallest dt first (the longest runs: a case's last
 /// runs are short ones); each child inherits the reference at fork and measures its run
-/// against it. Without an ok reference (the fallback of docs/design.md) each backend's finest run goes
-/// first and writes its whole trajectory once, to a temporary file that the backend's other
+/// against it. Without an ok reference (the fallback of docs/design.md) each backend's finest run
+/// goes first and writes its whole trajectory once, to a temporary file that the backend's other
 /// runs read in their children; where the finest run fails, the others come back whole for
 /// the caller.
 AccuracyRuns run_accuracy_jobs(const Scene& scene, const ReferenceBackend& reference,

@@ -1,6 +1,7 @@
 // The cost pass: after every accuracy run so that no run disturbs its timing, --jobs
-// measurements at once (one core each), each backend's runs timed in one child (run/cost.hpp times them); a batch kept from an earlier
-// invocation (run_cache.hpp) is not timed again, and its costs say when they were.
+// measurements at once (one core each), each backend's runs timed in one child (run/cost.hpp times
+// them); a batch kept from an earlier invocation (run_cache.hpp) is not timed again, and its costs
+// say when they were.
 #pragma once
 
 #include <functional>

@@ -34,8 +34,8 @@ void keep_drawn_states(const Scene& scene, RunRecord& run);
 void record_position_scale(RunRecord& run);
 
 /// In the child: errors, observables and series against `against` (an ok run: the
-/// reference, or in the fallback of docs/design.md the backend's finest run, possibly `run` itself),
-/// the position scale, then the trajectory cut to what the page draws.
+/// reference, or in the fallback of docs/design.md the backend's finest run, possibly `run`
+/// itself), the position scale, then the trajectory cut to what the page draws.
 void summarise_in_child(const Scene& scene, RunRecord& run, const RunRecord& against);
 
 }  // namespace bb
