@@ -5,8 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "run/claims.hpp"
 #include "run/sweep_runner.hpp"
 #include "support/missing.hpp"
@@ -38,7 +36,7 @@ backend = "course/semi-implicit-euler"
       scene.claims.front().text + ": " + results.claims.front().verdicts.front().verdict;
   ASSERT_GT(verdict.size(), 150u) << verdict;
   const std::string dir = test::fresh_dir("map_claim_picture");
-  std::ofstream(dir + "/claim.svg") << map_claim_svg(results, results.claims.front());
+  test::write_case(dir, "claim.svg", map_claim_svg(results, results.claims.front()));
   ASSERT_EQ(std::system(("rsvg-convert " + dir + "/claim.svg -o " + dir + "/claim.png").c_str()),
             0);
   const test::Image picture = test::read_png(dir + "/claim.png");
