@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "model/text.hpp"
 #include "report/format.hpp"
 #include "report/map_claim_picture.hpp"
 #include "run/claims.hpp"
+#include "run/map_theory.hpp"
 
 namespace bb {
 
@@ -20,8 +22,26 @@ std::string verdict_text(const Claim& claim, const ClaimVerdict& v) {
   return out;
 }
 
-/// The claim's sentence, and how its sides are read when that is not their value.
-std::string claim_cell(const Claim& claim) {
+/// What a map's claim's word for a side ("ok", "exploded", "any") is on `scene`'s map, in the
+/// map's outcomes: "exploded" is past the first [[sweep]]'s onset (a block that slides, a ball
+/// that flies through) or diverged.
+std::string side_outcome(const Scene& scene, const std::string& word) {
+  if (word == "any") return "any outcome";
+  if (word == "ok") return "ok";
+  const Sweep& first = *scene.sweep;
+  if (first.onset.empty()) return "diverged";
+  return "past the onset (" + first.onset + " > " + short_number(first.onset_above) +
+         ") or diverged";
+}
+
+/// The claim's sentence, and how its sides are read when that is not their value: a map's
+/// claim in its map's outcomes, on either side of its theory's bound.
+std::string claim_cell(const Scene& scene, const Claim& claim) {
+  if (claim.region && scene.second_sweep)
+    if (const MapTheory* theory = map_theory(scene, claim.region->backend))
+      return claim.text + " (judged on its map: " + side_outcome(scene, claim.region->inside) +
+             " where " + theory->bounded + " is below the theory's bound, " +
+             side_outcome(scene, claim.region->outside) + " where it is above)";
   if (!claim.against_reference) return claim.text;
   return claim.text + " (each side read as its distance from the reference's value)";
 }
@@ -56,7 +76,8 @@ Table case_claims_table(const CaseResults& results) {
   t.headers = {"claim", "course text", "verdicts (numbers at report_dt)"};
   t.right_aligned.assign(t.headers.size(), false);
   for (const ClaimResult& c : results.claims)
-    t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim), verdicts_cell(results, c)});
+    t.rows.push_back(
+        {claim_cell(*results.scene, *c.claim), source_cell(*c.claim), verdicts_cell(results, c)});
   return t;
 }
 
@@ -73,7 +94,7 @@ std::string claims_page(const std::vector<CaseResults>& all) {
       own += c.claim->own;
       ++count;
       // render_markdown escapes every cell's text once.
-      t.rows.push_back({claim_cell(*c.claim), source_cell(*c.claim),
+      t.rows.push_back({claim_cell(*r.scene, *c.claim), source_cell(*c.claim),
                         fmt::format("[{0}]({0}.md)", r.scene->name), verdicts_cell(r, c)});
     }
   std::string page =

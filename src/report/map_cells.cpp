@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "run/sweep_runner.hpp"
+#include "model/text.hpp"
 
 namespace bb {
 
@@ -28,26 +28,6 @@ MapAxis axis_of(const Sweep& sweep) {
   for (std::size_t k : axis.index) axis.values.push_back(sweep.values[k]);
   axis.logarithmic = axis.values.front() > 0.0 && !evenly_spaced(axis.values);
   return axis;
-}
-
-/// `theory`'s bound for `backend` at each value of the axis it does not bound, ascending;
-/// empty where the map has no axis it bounds or it does not cover every value.
-std::vector<BoundaryPoint> bounds(const Scene& scene, const MapTheory& theory,
-                                  const std::string& backend) {
-  const bool bounds_rows = scene.sweep->parameter == theory.bounded;
-  if (!bounds_rows && scene.second_sweep->parameter != theory.bounded) return {};
-  const MapAxis other = bounds_rows ? map_columns(scene) : map_rows(scene);
-  // The bounded parameter's value at a point does not move its bound: any one will do.
-  const double any = bounds_rows ? scene.sweep->values.front() : scene.second_sweep->values.front();
-  std::vector<BoundaryPoint> out;
-  for (double value : other.values) {
-    const Scene point =
-        bounds_rows ? map_point_scene(scene, any, value) : map_point_scene(scene, value, any);
-    const std::optional<double> limit = theory.bound(point, backend);
-    if (!limit) return {};
-    out.push_back({value, *limit});
-  }
-  return out;
 }
 
 }  // namespace
@@ -74,15 +54,8 @@ double axis_position(const MapAxis& axis, double value) {
   return static_cast<double>(k) + 0.5 + (x - a) / (b - a);
 }
 
-const MapTheory* map_theory(const Scene& scene, const std::string& backend) {
-  for (const MapTheory& theory : map_theories())
-    if (!bounds(scene, theory, backend).empty()) return &theory;
-  return nullptr;
-}
-
-std::vector<BoundaryPoint> map_boundary(const Scene& scene, const std::string& backend) {
-  const MapTheory* theory = map_theory(scene, backend);
-  return theory ? bounds(scene, *theory, backend) : std::vector<BoundaryPoint>{};
+std::string map_bound_text(const MapTheory& theory, double limit) {
+  return short_number(limit) + (theory.bounded == "dt" ? " s" : "");
 }
 
 }  // namespace bb

@@ -1,8 +1,7 @@
 // What a map's picture is made of, apart from the drawing: each backend's outcome at each
 // point (ok, past the sweep's onset, diverged, unsupported, failed), the axes in ascending
-// order with where a value sits along them, and the theory's boundary where a theory bounds
-// one axis (run/map_theory.hpp): per value of the other axis, the bound there (the course
-// integrator's largest stable step, the steepest tilt a block holds on, ...).
+// order with where a value sits along them. The theory's boundary, where a theory bounds one
+// axis, is run/map_theory.hpp's (map_theory(), map_boundary()), shared with the map's claims.
 #pragma once
 
 #include <optional>
@@ -33,18 +32,7 @@ MapAxis map_columns(const Scene& scene);
 /// [0, count] outside them.
 double axis_position(const MapAxis& axis, double value);
 
-/// The theory drawn on `backend`'s map: the first of map_theories() that bounds one of the
-/// map's axes and covers the backend at every value of the other; nullptr when none does
-/// (an engine under the stability theory, a scene with contacts).
-const MapTheory* map_theory(const Scene& scene, const std::string& backend);
-
-/// That theory's boundary: per value of the axis it does not bound (ascending), the bound
-/// there; empty without a theory. A step's bound of 0 means unstable at every step (explicit
-/// Euler on an undamped spring).
-struct BoundaryPoint {
-  double value = 0.0;  ///< of the axis the theory does not bound
-  double limit = 0.0;  ///< on the bounded axis, in its parameter's unit
-};
-std::vector<BoundaryPoint> map_boundary(const Scene& scene, const std::string& backend);
+/// A theory's bound as a page says it: a step as seconds ("0.0707 s"), else the number.
+std::string map_bound_text(const MapTheory& theory, double limit);
 
 }  // namespace bb

@@ -27,10 +27,13 @@ MapMark claim_mark(const RegionPoint& point) {
   return MapMark::None;
 }
 
-/// What a point's tooltip says: its outcome and what the claim makes of it.
-std::string claim_words(const RegionPoint& point) {
+/// What a point's tooltip says: its outcome, the boundary on `theory`'s axis, and what the
+/// claim makes of it.
+std::string claim_words(const RegionPoint& point, const MapTheory* theory) {
   std::string out = map_outcome_name(point.outcome);
-  if (point.boundary) out += "; the region's boundary " + short_number(*point.boundary) + " s";
+  if (point.boundary && theory)
+    out += "; the region's boundary at " + theory->bounded + " = " +
+           map_bound_text(*theory, *point.boundary);
   if (point.judged) return out + (point.held ? ": the claim holds" : ": the claim fails");
   if (point.place == RegionPlace::WithinMargin) return out + ": within the margin, not judged";
   return out + ": not judged";
@@ -78,17 +81,19 @@ std::string map_claim_svg(const CaseResults& results, const ClaimResult& claim) 
   const Scene& scene = *results.scene;
   const RegionClaim& g = *claim.claim->region;
   const std::vector<RegionPoint> points = region_points(results, *claim.claim);
+  const MapTheory* theory = map_theory(scene, g.backend);
   const std::string verdict =
       claim.verdicts.empty() ? "" : claim.claim->text + ": " + claim.verdicts.front().verdict;
   const double w = map_panel_width(scene), h = map_panel_height(scene);
-  // As wide as the outcomes' legend in one row, and as the verdict's line.
-  const double width = std::max({w, kClaimWidth, 6.5 * static_cast<double>(verdict.size()) + 24.0});
+  // As wide as the outcomes' legend in one row, and as the verdict's line (bold, from x = 12).
+  const double width =
+      std::max({w, kClaimWidth, kMapBoldCharWidth * static_cast<double>(verdict.size()) + 24.0});
   std::string out =
       map_svg_opening(width, h + kClaimLegendHeight, scene.name + ": " + claim.claim->text);
   // The panel draws the points row by row ascending; each is found by its place in the list.
   out += map_panel(results, g.backend, g.backend, 0.0, 0.0, [&](const SweepPoint& at) {
     const RegionPoint& point = points[static_cast<std::size_t>(&at - results.sweep->points.data())];
-    return MapCell{map_outcome_fill(point.outcome), claim_words(point), claim_mark(point)};
+    return MapCell{map_outcome_fill(point.outcome), claim_words(point, theory), claim_mark(point)};
   });
   return out + map_outcomes_legend(results, h, g.backend) + marks_legend(h + 64.0, verdict) +
          "</svg>\n";

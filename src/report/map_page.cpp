@@ -32,16 +32,16 @@ std::vector<MapOutcome> counted_outcomes(const Scene& scene) {
   return out;
 }
 
+/// What the page says of a map no theory bounds for any of its backends.
+const char* const kNoTheory =
+    " No theory bounds either axis of this map for any of its backends: no line is drawn, "
+    "and no map's claim (`region = \"theory\"`) can be stated on it.";
+
 /// The first theory drawn on any backend's map, nullptr where none is.
 const MapTheory* drawn_theory(const CaseResults& results) {
   for (const std::string& backend : map_backends(results))
     if (const MapTheory* theory = map_theory(*results.scene, backend)) return theory;
   return nullptr;
-}
-
-/// A bound as the table says it: a step as seconds.
-std::string bound_text(const MapTheory& theory, double limit) {
-  return short_number(limit) + (theory.bounded == "dt" ? " s" : "");
 }
 
 /// Per backend, its points by outcome, and the theory's bounds where there are some.
@@ -64,10 +64,11 @@ std::string outcome_table(const CaseResults& results) {
     for (MapOutcome o : outcomes) row.push_back(std::to_string(count[o]));
     const std::vector<BoundaryPoint> line = map_boundary(scene, backend);
     const MapTheory* theory = map_theory(scene, backend);
-    row.push_back(line.empty()                ? "-"
-                  : line.front().limit == 0.0 ? "none: unstable at every step"
-                                              : bound_text(*theory, line.front().limit) + " to " +
-                                                    bound_text(*theory, line.back().limit));
+    row.push_back(line.empty() ? "-"
+                  : line.front().limit == 0.0
+                      ? "none: unstable at every step"
+                      : map_bound_text(*theory, line.front().limit) + " to " +
+                            map_bound_text(*theory, line.back().limit));
     t.rows.push_back(row);
   }
   return render_markdown(t);
@@ -110,7 +111,7 @@ std::string map_markdown(const CaseResults& results, const MapFiles& files) {
                          "the reference at that point), on one scale for every backend: the "
                          "bar under the maps.",
                          markdown_text(first.colour))) +
-          (drawn_theory(results) ? " " + drawn_theory(results)->page : std::string()));
+          (drawn_theory(results) ? " " + drawn_theory(results)->page : kNoTheory));
   if (!files.multiples.empty()) out += "![every backend's map](" + files.multiples + ")\n\n";
   if (!files.backends.empty()) {
     out += "Each backend's map alone:";

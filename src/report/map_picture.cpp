@@ -128,13 +128,10 @@ std::string mark_svg(MapMark mark, double x, double y, double cell) {
   return "";
 }
 
-/// A bold 12 px character is about this wide, in px.
-constexpr double kTitleCharWidth = 7.4;
-
 /// A panel's title over its cells (from `left`); a longer one starts at the panel's edge
 /// (`x`), and one longer still is condensed to the panel's width rather than run into the next.
 std::string panel_title(const std::string& heading, double x, double left, double y, double width) {
-  const double wide = kTitleCharWidth * static_cast<double>(heading.size());
+  const double wide = kMapBoldCharWidth * static_cast<double>(heading.size());
   const double over_cells = x + width - left, over_panel = width - 16.0;
   const double start = wide <= over_cells ? left : x + 8.0;
   const std::string squeeze =

@@ -47,6 +47,9 @@ using MapCellPaint = std::function<MapCell(const SweepPoint&)>;
 std::string map_panel(const CaseResults& results, const std::string& backend,
                       const std::string& heading, double x, double y, const MapCellPaint& paint);
 
+/// A bold 12 px character (a panel's title, a claim's verdict) is about this wide, in px.
+inline constexpr double kMapBoldCharWidth = 7.4;
+
 /// An SVG's opening (white background, its title) and the size of one panel, for pictures
 /// made of map panels.
 std::string map_svg_opening(double width, double height, const std::string& title);

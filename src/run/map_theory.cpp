@@ -1,11 +1,13 @@
 #include "run/map_theory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "course/tunnelling_theory.hpp"
 #include "model/contact_pairs.hpp"
 #include "run/stability.hpp"
+#include "run/sweep_runner.hpp"
 #include "study/backend_names.hpp"
 
 namespace bb {
@@ -54,6 +56,8 @@ const std::vector<MapTheory>& map_theories() {
        "stability search's theory column, computed at that point). A run is judged over the "
        "case's duration only: growth too slow to show in that time (explicit Euler at the "
        "smallest steps) is ok on the map though the theory calls it unstable.",
+       "the step (dt), for a course integrator on a scene the course's stability theory "
+       "describes (springs, no contacts)",
        [](const Scene& point, const std::string& backend) { return theory_for(point, backend); }},
       {"ground.normal", "Coulomb's steepest holding tilt (degrees)",
        "Coulomb's law: the block holds on tilts up to atan(mu_s), slides beyond (below the line "
@@ -62,6 +66,8 @@ const std::vector<MapTheory>& map_theories() {
        "rest holds while m g sin(tilt) <= mu_s m g cos(tilt), on every tilt up to atan(mu_s), "
        "and slides beyond; the same line on every backend's map, since it is the law and not a "
        "method.",
+       "the ground's tilt (ground.normal), for every backend, on one body set at rest on the "
+       "ground under gravity alone",
        coulomb_hold_tilt},
       {"dt", "step the course's test surely turns the ball back below",
        "(panel's half thickness + ball's radius) / speed: below it a step surely ends with the "
@@ -73,9 +79,58 @@ const std::vector<MapTheory>& map_theories() {
        "h + r (half of the panel's thickness and the ball's diameter, not all of it). Past the "
        "line whether a step lands there, in the far half (out through the far face) or in "
        "neither (never seen) depends on where the steps happen to fall.",
+       "the step (dt), for a course variant whose collision rule moves a ball out of a thin "
+       "fixed box it flies at (clamp, mirror)",
        course_catch_step},
   };
   return theories;
+}
+
+bool bounds_first_sweep(const Scene& scene, const MapTheory& theory) {
+  return scene.sweep->parameter == theory.bounded;
+}
+
+namespace {
+
+/// `theory`'s bound for `backend` at each value of the axis it does not bound, ascending;
+/// empty where the map has no axis it bounds or it does not cover every value.
+std::vector<BoundaryPoint> bounds(const Scene& scene, const MapTheory& theory,
+                                  const std::string& backend) {
+  if (!scene.sweep || !scene.second_sweep) return {};
+  const bool first = bounds_first_sweep(scene, theory);
+  if (!first && scene.second_sweep->parameter != theory.bounded) return {};
+  std::vector<double> others = first ? scene.second_sweep->values : scene.sweep->values;
+  std::sort(others.begin(), others.end());
+  // The bounded parameter's value at a point does not move its bound: any one will do.
+  const double any = first ? scene.sweep->values.front() : scene.second_sweep->values.front();
+  std::vector<BoundaryPoint> out;
+  for (double value : others) {
+    const Scene point =
+        first ? map_point_scene(scene, any, value) : map_point_scene(scene, value, any);
+    const std::optional<double> limit = theory.bound(point, backend);
+    if (!limit) return {};
+    out.push_back({value, *limit});
+  }
+  return out;
+}
+
+}  // namespace
+
+const MapTheory* map_theory(const Scene& scene, const std::string& backend) {
+  for (const MapTheory& theory : map_theories())
+    if (!bounds(scene, theory, backend).empty()) return &theory;
+  return nullptr;
+}
+
+std::vector<BoundaryPoint> map_boundary(const Scene& scene, const std::string& backend) {
+  const MapTheory* theory = map_theory(scene, backend);
+  return theory ? bounds(scene, *theory, backend) : std::vector<BoundaryPoint>{};
+}
+
+std::string map_theories_cover() {
+  std::string out;
+  for (const MapTheory& theory : map_theories()) out += (out.empty() ? "" : "; ") + theory.covers;
+  return out;
 }
 
 }  // namespace bb

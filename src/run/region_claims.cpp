@@ -3,17 +3,12 @@
 #include <map>
 
 #include "model/text.hpp"
-#include "run/stability.hpp"
-#include "run/sweep_runner.hpp"
+#include "run/map_theory.hpp"
 #include "study/case_error.hpp"
 
 namespace bb {
 
 namespace {
-
-bool step_is_first(const Scene& scene) {
-  return scene.sweep->parameter == "dt";
-}
 
 /// Whether `outcome` is the one `word` ("ok", "exploded") names.
 bool is_claimed_outcome(const std::string& word, MapOutcome outcome) {
@@ -34,21 +29,23 @@ std::vector<RegionPoint> region_points(const CaseResults& results, const Claim& 
   if (!results.sweep || !claim.region) return out;
   const Scene& scene = *results.scene;
   const RegionClaim& g = *claim.region;
-  const bool step_first = step_is_first(scene);
-  // The theory's step at a value of the other axis (the point's step does not move it).
-  std::map<double, std::optional<double>> limits;
+  // The map's theory for the backend (the one its picture draws) and the axis it bounds; its
+  // bound at each value of the other axis (the point's own value of the bounded one does not
+  // move it).
+  const MapTheory* theory = map_theory(scene, g.backend);
+  const bool bounded_first = theory != nullptr && bounds_first_sweep(scene, *theory);
+  std::map<double, double> bound_at;
+  for (const BoundaryPoint& b : map_boundary(scene, g.backend)) bound_at[b.value] = b.limit;
   for (const SweepPoint& p : results.sweep->points) {
-    const double step = step_first ? p.value : p.second_value;
-    const double other = step_first ? p.second_value : p.value;
-    if (!limits.count(other))
-      limits[other] = theory_for(map_point_scene(scene, p.value, p.second_value), g.backend);
+    const double bounded = bounded_first ? p.value : p.second_value;
+    const double other = bounded_first ? p.second_value : p.value;
     RegionPoint r;
     r.outcome = map_outcome(scene, region_row(p, g.backend));
-    if (const std::optional<double> limit = limits[other]) {
-      r.boundary = *limit * g.boundary_factor;
-      r.place = step < *r.boundary * (1.0 - g.margin)   ? RegionPlace::Inside
-                : step > *r.boundary * (1.0 + g.margin) ? RegionPlace::Outside
-                                                        : RegionPlace::WithinMargin;
+    if (const auto limit = bound_at.find(other); limit != bound_at.end()) {
+      r.boundary = limit->second * g.boundary_factor;
+      r.place = bounded < *r.boundary * (1.0 - g.margin)   ? RegionPlace::Inside
+                : bounded > *r.boundary * (1.0 + g.margin) ? RegionPlace::Outside
+                                                           : RegionPlace::WithinMargin;
     }
     const std::string* word = r.place == RegionPlace::Inside    ? &g.inside
                               : r.place == RegionPlace::Outside ? &g.outside
@@ -108,7 +105,7 @@ ClaimVerdict judge_region_claim(const CaseResults& results, const Claim& claim) 
       {n.within_margin, "within " + short_number(100.0 * g.margin) + " % of the boundary"},
       {n.unclaimed, "on a side the claim does not state"},
       {n.no_outcome, "without an outcome (unsupported, failed or not run)"},
-      {n.no_theory, "where the theory gives no step"}};
+      {n.no_theory, "where the theory gives no bound"}};
   std::string rest;
   for (const auto& [count, why] : apart)
     if (count > 0) rest += (rest.empty() ? "" : ", ") + std::to_string(count) + " " + why;
@@ -123,15 +120,12 @@ ClaimVerdict judge_region_claim(const CaseResults& results, const Claim& claim) 
 
 void require_region_theory(const Scene& scene) {
   for (const Claim& claim : scene.claims) {
-    if (!claim.region) continue;
-    const Scene point =
-        map_point_scene(scene, scene.sweep->values.front(), scene.second_sweep->values.front());
-    if (!theory_for(point, claim.region->backend))
-      throw CaseError(scene.file, claim.line,
-                      "[[claim]] with region = \"theory\" names backend '" + claim.region->backend +
-                          "', for which the course theory gives no largest stable step on this "
-                          "case (it covers the course integrators, on scenes its stability "
-                          "theory describes)");
+    if (!claim.region || map_theory(scene, claim.region->backend)) continue;
+    throw CaseError(scene.file, claim.line,
+                    "[[claim]] with region = \"theory\" names backend '" + claim.region->backend +
+                        "', for which no theory bounds '" + scene.sweep->parameter + "' or '" +
+                        scene.second_sweep->parameter +
+                        "' at every point of this map; the theories bound " + map_theories_cover());
   }
 }
 

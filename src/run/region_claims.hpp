@@ -1,8 +1,9 @@
-// A map's claims ([[claim]] with `region`): at each point of the map, where the point's step
-// lies against the region's boundary (the course theory's largest stable step for the
-// backend's integrator at that point, times the claim's boundary_factor), and whether the
-// backend's outcome there is the one the claim states for that side. Points within the
-// claim's margin of the boundary are not judged.
+// A map's claims ([[claim]] with `region`): at each point of the map, where the point's value
+// of the axis the map's theory bounds lies against the region's boundary (that theory's bound
+// for the backend at the point, run/map_theory.hpp's map_theory(), times the claim's
+// boundary_factor: the largest stable step, the steepest tilt a block holds on, ...), and
+// whether the backend's outcome there is the one the claim states for that side. Points
+// within the claim's margin of the boundary are not judged.
 #pragma once
 
 #include <optional>
@@ -20,7 +21,8 @@ enum class RegionPlace { Inside, Outside, WithinMargin, NoTheory };
 /// One point of the map for a map's claim.
 struct RegionPoint {
   RegionPlace place = RegionPlace::NoTheory;
-  std::optional<double> boundary;  ///< the region's boundary there (s), where theory gives one
+  /// The region's boundary there, in the bounded parameter's unit, where a theory gives one.
+  std::optional<double> boundary;
   MapOutcome outcome = MapOutcome::Absent;
   bool judged = false;  ///< on a side the claim states, with an outcome to judge
   bool held = false;    ///< judged, and the outcome is the one claimed
@@ -33,8 +35,9 @@ std::vector<RegionPoint> region_points(const CaseResults& results, const Claim& 
 /// measured" when the map did not run.
 ClaimVerdict judge_region_claim(const CaseResults& results, const Claim& claim);
 
-/// Refuses (CaseError at the claim's line) a map's claim on a backend the course theory
-/// gives no largest stable step for on this case (an engine, an integrator on contacts).
+/// Refuses (CaseError at the claim's line) a map's claim on a backend no theory bounds one of
+/// the map's axes for (map_theory(): an engine on a spring map, an integrator on contacts),
+/// naming what the theories cover.
 void require_region_theory(const Scene& scene);
 
 }  // namespace bb

@@ -69,8 +69,8 @@ void read_claims(TomlReader& root, Scene& scene, const EngineCatalogue& catalogu
 /// A [[claim]] with `region` (a map's claim), its keys read from `r` into `c`.
 void read_region_claim(TomlReader& r, const Scene& scene, Claim& c,
                        const EngineCatalogue& catalogue);
-/// Refuses a map's claim in a case without a map that has the step as one axis; after
-/// read_sweep.
+/// Refuses a map's claim in a case without a map (two [[sweep]]s); after read_sweep. Which
+/// theory bounds the map is run/'s to check (require_region_theory).
 void check_region_claims(const Scene& scene);
 /// Fail unless `backend`, named by `key` of `r` (`what` in messages), is one `scene` runs.
 void require_runnable(const TomlReader& r, const Scene& scene, const std::string& key,

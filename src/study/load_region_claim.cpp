@@ -42,8 +42,9 @@ void read_region_claim(TomlReader& r, const Scene& scene, Claim& c,
   if (g.region != "theory")
     r.fail(r.line_of("region"),
            "[[claim]] 'region' is '" + g.region +
-               "'; known: theory (the steps below the course theory's largest stable step for "
-               "the backend's integrator at each point of the map)");
+               "'; known: theory (the points of the map below the bound of the theory drawn on "
+               "the backend's map: the course's largest stable step, Coulomb's steepest holding "
+               "tilt, ...)");
   g.backend = r.string("backend");
   require_runnable(r, scene, "backend", "[[claim]] 'backend'", g.backend,
                    runnable_backend_names(scene, catalogue), catalogue);
@@ -59,15 +60,15 @@ void read_region_claim(TomlReader& r, const Scene& scene, Claim& c,
   c.region = g;
 }
 
+// Whether a theory bounds one of the map's axes for the backend is the program's to say
+// (run/region_claims.hpp, which knows the theories); here, that there is a map.
 void check_region_claims(const Scene& scene) {
-  const bool step_axis = scene.second_sweep &&
-                         (scene.sweep->parameter == "dt" || scene.second_sweep->parameter == "dt");
   for (const Claim& c : scene.claims)
-    if (c.region && !step_axis)
+    if (c.region && !scene.second_sweep)
       throw CaseError(scene.file, c.line,
                       "[[claim]] with region = \"" + c.region->region +
-                          "\" is judged over a map with the step as one axis: the case needs "
-                          "two [[sweep]]s, one of them parameter = \"dt\"");
+                          "\" is judged over a map: the case needs two [[sweep]]s, one of them "
+                          "a parameter a theory bounds");
 }
 
 }  // namespace bb::load

@@ -50,8 +50,9 @@ enum class DivergedCounts {
 /// region's boundary (relative) is not judged.
 struct RegionClaim {
   std::string backend;
-  /// "theory": the steps below the course theory's largest stable step for the backend's
-  /// integrator at the point, times `boundary_factor`.
+  /// "theory": the points whose value of the axis the map's theory bounds (the step, the
+  /// ground's tilt) is below that theory's bound for the backend at the point, times
+  /// `boundary_factor` (run/map_theory.hpp).
   std::string region;
   double boundary_factor = 1.0;
   std::string inside = "ok";         ///< "ok", "exploded" (past the onset or diverged), "any"

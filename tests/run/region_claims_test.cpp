@@ -146,15 +146,20 @@ TEST(RegionClaims, AMapsClaimThatCannotBeJudgedIsRefusedAtItsLine) {
   // An engine: the course theory gives it no line.
   std::string engine = map;
   engine.replace(engine.find("course/semi-implicit-euler\""), 27, "ode\"");
-  refused(engine, "the course theory gives no largest stable step");
+  refused(engine, "for which no theory bounds 'spring.1.stiffness' or 'dt'");
   // A claim that compares quantities has no place in a map's claim.
   refused(map + "op = \">\"\n", "'op' belongs to a claim that compares two quantities");
   refused(map + "inside = \"stable\"\n", "known: ok, exploded");
-  // Without a step axis there is no theory's line to judge against.
+  // Without a step axis no theory bounds the spring map.
   std::string no_step = map;
   no_step.replace(no_step.find("parameter = \"dt\""), 16, "parameter = \"spring.1.damping\"");
   no_step.replace(no_step.find("values = [0.1, 0.04, 0.02, 0.01]"), 32, "values = [0.0, 0.1]");
-  refused(no_step, "needs two [[sweep]]s, one of them parameter = \"dt\"");
+  refused(no_step, "no theory bounds 'spring.1.stiffness' or 'spring.1.damping'");
+  // Without a map there is nothing to judge it over.
+  std::string one_sweep = map;
+  one_sweep.erase(one_sweep.find("[[sweep]]\nparameter = \"dt\""),
+                  one_sweep.find("[[claim]]") - one_sweep.find("[[sweep]]\nparameter = \"dt\""));
+  refused(one_sweep, "is judged over a map: the case needs two [[sweep]]s");
 }
 
 TEST(RegionClaims, WithoutTheMapTheClaimIsNotMeasured) {
