@@ -1,6 +1,6 @@
 // The CMake presets: warnings are errors in CI's build and the developers' preset, never in
-// the default a user builds (another compiler's new warning must not stop their build), and
-// every preset uses Ninja.
+// the default a user builds (another compiler's new warning must not stop their build), CI's
+// test programs at -O0 beside optimised code under test, and every preset uses Ninja.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -58,6 +58,23 @@ TEST(Presets, WarningsAreErrorsInCiAndTheDevPresetNotInTheDefault) {
   ASSERT_NE(option, std::string::npos);
   const std::size_t end = cmake.find(")\n", option);
   EXPECT_EQ(cmake.substr(end - 3, 3), "OFF") << cmake.substr(option, end - option);
+}
+
+// CI's build: the code under test optimised (-O1) under both sanitizers, the test programs
+// under the same sanitizers at -O0 (half their compile time; their own code is not what
+// runs the physics).
+TEST(Presets, CiOptimisesTheCodeUnderTestAndCompilesTheTestProgramsAtO0) {
+  const json vars = resolved(presets(), "asan").at("cacheVariables");
+  const std::string flags = vars.value("CMAKE_CXX_FLAGS", std::string());
+  EXPECT_NE(flags.find("-O1"), std::string::npos) << flags;
+  EXPECT_NE(flags.find("-fsanitize=address,undefined"), std::string::npos) << flags;
+  EXPECT_EQ(vars.value("BEACHBALL_TEST_COMPILE_OPTIONS", std::string()), "-O0");
+  // This test program is one of them: built with the asan preset's flags, it is not optimised.
+  if (std::string(BEACHBALL_CXX_FLAGS) == flags) {
+#ifdef __OPTIMIZE__
+    ADD_FAILURE() << "a test program of the asan build was compiled with optimisation";
+#endif
+  }
 }
 
 TEST(Presets, EveryPresetUsesNinja) {
