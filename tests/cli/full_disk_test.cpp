@@ -16,10 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A tmpfs of `bytes` mounted for the test's lifetime.
+/// A tmpfs of `bytes` mounted for the test's lifetime, at a folder named after the test
+/// (ctest runs the tests of this file at once: one's folder must not be another's).
 struct SmallDisk {
   std::string path;
-  explicit SmallDisk(std::size_t bytes) : path(test::fresh_dir("small_disk")) {
+  explicit SmallDisk(std::size_t bytes)
+      : path(test::fresh_dir(std::string("small_disk_") +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
     fs::create_directories(path);
     const std::string options = "size=" + std::to_string(bytes);
     mounted = mount("tmpfs", path.c_str(), "tmpfs", 0, options.c_str()) == 0;
