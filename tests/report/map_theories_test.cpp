@@ -10,6 +10,7 @@
 
 #include "report/map_cells.hpp"
 #include "report/map_picture.hpp"
+#include "support/block_on_ground_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -17,28 +18,7 @@ namespace {
 
 /// A unit cube at rest on a level ground (mu_k = 0.25), tilted by the first [[sweep]].
 Scene friction_map() {
-  return test::scene_from(R"(name = "friction"
-dims = 2
-duration = 1.0
-sample = 0.1
-dt = [0.1, 0.05]
-report_dt = 0.05
-[ground]
-restitution = 0.0
-friction_static = 0.6
-friction_kinetic = 0.25
-[[body]]
-name = "block"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [0.0, 0.5, 0.0]
-[course]
-integrators = ["semi-implicit-euler"]
-[[observe]]
-kind = "final_velocity"
-body = "block"
-[[sweep]]
+  return test::scene_from(test::block_on_ground_case("friction") + R"([[sweep]]
 parameter = "ground.normal"
 range = [12.0, 48.0, 7]
 [[sweep]]

@@ -14,6 +14,7 @@
 #include "run/map_theory.hpp"
 #include "run/region_claims.hpp"
 #include "study/case_error.hpp"
+#include "support/block_on_ground_case.hpp"
 #include "support/test_support.hpp"
 
 namespace bb {
@@ -36,30 +37,9 @@ parameter = "ground.friction_static"
 values = [0.3, 0.6]
 )";
   const std::string onset = "onset = \"final_velocity/block\"\nonset_above = 0.01\n";
-  return R"(name = "friction_claim"
-dims = 2
-duration = 1.0
-sample = 0.1
-dt = [0.1, 0.05]
-report_dt = 0.05
-[ground]
-restitution = 0.0
-friction_static = 0.6
-friction_kinetic = 0.25
-[[body]]
-name = "block"
-shape = "box"
-half_extents = [0.5, 0.5, 0.5]
-mass = 1.0
-position = [0.0, 0.5, 0.0]
-[course]
-integrators = ["semi-implicit-euler"]
-ground = ["clamp"]
-friction = ["clamp"]
-[[observe]]
-kind = "final_velocity"
-body = "block"
-)" + (tilt_first ? tilts + onset + frictions : frictions + onset + tilts) +
+  return test::block_on_ground_case("friction_claim",
+                                    "ground = [\"clamp\"]\nfriction = [\"clamp\"]\n") +
+         (tilt_first ? tilts + onset + frictions : frictions + onset + tilts) +
          R"([[claim]]
 text = "The block holds below atan(mu_s) and slides above it"
 own = true
