@@ -63,13 +63,13 @@ struct TwoTimings {
 };
 
 /// What the runs' own timing says beside their costs: a run's blocks of steps hold what
-/// observes every step (reading the state, the observers) and run in a process just started,
-/// where a cost times step() alone, repeated in a loop of its own.
+/// observes every step (reading the state, the observers) and run in a child process (new, or
+/// shared with a few other runs), where a cost times step() alone, repeated in a loop of its own.
 std::string own_timing_text(const TwoTimings& t) {
   if (t.from_costs <= 0.0 || t.own_blocks <= 0.0) return "";
   return fmt::format(
       "Timed in the runs themselves (their blocks of steps between samples, with whatever "
-      "observes every step and in a process just started), the runs with a cost stepped for "
+      "observes every step and in a child process), the runs with a cost stepped for "
       "{:.1f} s of one core, {:.2f} times the {:.1f} s their costs give (step() alone, repeated "
       "in a loop of its own).\n\n",
       t.own_blocks, t.own_blocks / t.from_costs, t.from_costs);
