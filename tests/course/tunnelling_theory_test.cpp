@@ -12,6 +12,7 @@
 #include "course/course_backend.hpp"
 #include "study/start_case.hpp"
 #include "support/test_support.hpp"
+#include "support/thin_panel_case.hpp"
 
 namespace bb {
 namespace {
@@ -27,24 +28,7 @@ sample = 0.5
 dt = [0.001]
 report_dt = 0.001
 gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "ball"
-radius = 0.05
-mass = 0.05
-position = [)" + std::to_string(-(kHalfThickness + kRadius + gap)) +
-                          R"(, 1.0, 0.0]
-velocity = [20.0, 0.0, 0.0]
-[[body]]
-name = "panel"
-shape = "box"
-half_extents = [0.01, 1.0, 1.0]
-mass = 1.0
-fixed = true
-position = [0.0, 1.0, 0.0]
-[[contact]]
-bodies = ["ball", "panel"]
-restitution = 0.5
-)");
+)" + test::ball_and_thin_panel(std::to_string(-(kHalfThickness + kRadius + gap)), "20.0"));
 }
 
 /// The ball's velocity along its flight after 0.2 s of the course at step `dt`: negative

@@ -13,6 +13,7 @@
 #include "reference/scene_model.hpp"
 #include "study/start_case.hpp"
 #include "support/test_support.hpp"
+#include "support/thin_panel_case.hpp"
 
 namespace bb {
 namespace {
@@ -88,23 +89,7 @@ sample = 0.0166666666666666667
 dt = [0.0166666666666666667, 0.00104166666666666667]
 report_dt = 0.0166666666666666667
 gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "ball"
-radius = 0.05
-mass = 0.05
-position = [-5.4, 1.0, 0.0]
-velocity = [50.0, 0.0, 0.0]
-[[body]]
-name = "panel"
-shape = "box"
-half_extents = [0.01, 1.0, 1.0]
-mass = 1.0
-fixed = true
-position = [0.0, 1.0, 0.0]
-[[contact]]
-bodies = ["ball", "panel"]
-restitution = 0.5
-)");
+)" + test::ball_and_thin_panel("-5.4", "50.0"));
   const BodyEvents truth = exact(scene).bodies[0];
   ASSERT_EQ(truth.contact_times.size(), 1u);
   EXPECT_NEAR(truth.contact_times[0], (5.4 - 0.05 - 0.01) / 50.0, 1e-9);

@@ -12,6 +12,7 @@
 #include "report/map_picture.hpp"
 #include "support/block_on_ground_case.hpp"
 #include "support/test_support.hpp"
+#include "support/thin_panel_case.hpp"
 
 namespace bb {
 namespace {
@@ -70,23 +71,8 @@ sample = 0.1
 dt = [0.1, 0.05]
 report_dt = 0.05
 gravity = [0.0, 0.0, 0.0]
-[[body]]
-name = "ball"
-radius = 0.05
-mass = 0.05
-position = [-1.0, 1.0, 0.0]
-velocity = [8.0, 0.0, 0.0]
-[[body]]
-name = "panel"
-shape = "box"
-half_extents = [0.01, 1.0, 1.0]
-mass = 1.0
-fixed = true
-position = [0.0, 1.0, 0.0]
-[[contact]]
-bodies = ["ball", "panel"]
-restitution = 0.5
-[course]
+)" + test::ball_and_thin_panel("-1.0", "8.0") +
+                          R"([course]
 integrators = ["semi-implicit-euler"]
 ground = [")" + ground_rule +
                           R"("]
