@@ -75,6 +75,18 @@ long address_space_bytes() {
 }
 #endif
 
+}  // namespace
+
+bool children_memory_capped() {
+#ifdef BB_UNDER_ASAN
+  return false;
+#else
+  return true;
+#endif
+}
+
+namespace {
+
 /// Runs first in every child: default signal handlers, its output to `console_fd`, and its
 /// memory cap.
 void child_setup(int console_fd) {

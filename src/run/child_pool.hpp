@@ -26,6 +26,10 @@ struct ChildOutcome {
 /// applied under AddressSanitizer).
 inline constexpr long kChildMemoryBytes = 4L << 30;
 
+/// Whether children get that cap: not in a build of this library under AddressSanitizer (its
+/// shadow memory takes terabytes of address space), whatever the caller was compiled with.
+bool children_memory_capped();
+
 class ChildPool {
  public:
   /// `isolated` false runs every piece in this process, one after another (for debugging).
