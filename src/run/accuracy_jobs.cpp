@@ -136,8 +136,9 @@ class AccuracySchedule {
     submit(
         reference, scene_.sample, out_.reference, std::nullopt, nullptr,
         [this] { after_reference(); }, key_of(reference, std::nullopt, "reference"), true, true);
-    submit(tighter, scene_.sample, out_.tight, std::nullopt, nullptr, nullptr,
-           key_of(tighter, std::nullopt, "self-check"), true, false);
+    if (options_.reference_self_check)
+      submit(tighter, scene_.sample, out_.tight, std::nullopt, nullptr, nullptr,
+             key_of(tighter, std::nullopt, "self-check"), true, false);
     pool_.run();
     out_.reference.dt.reset();
     out_.tight.dt.reset();

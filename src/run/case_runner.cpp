@@ -126,30 +126,35 @@ int progress_units(const Scene& scene, const Registry& registry, const RunOption
   int imported = 0;
   for (const auto& imported_backend : options.imports)
     imported += static_cast<int>(imported_backend->dts().size());
-  return backends * dts + imported + 2 + (options.cost ? backends * dts + 1 : 0) + sweep;
+  const int reference_runs = options.reference_self_check ? 2 : 1;
+  return backends * dts + imported + reference_runs + (options.cost ? backends * dts + 1 : 0) +
+         sweep;
 }
 
-/// The reference's method and self-check (a second solve, `tight`), the floors below
-/// which differences from it are noise, and its own observables and series.
-void record_reference(const Scene& scene, const ReferenceBackend& reference, const RunRecord& tight,
+/// The reference's method and self-check (a second solve, `tight`; null when not solved), the
+/// floors below which differences from it are noise, and its own observables and series.
+void record_reference(const Scene& scene, const ReferenceBackend& reference, const RunRecord* tight,
                       CaseResults& out) {
   out.reference.method = reference_method(out.reference_run);
   out.reference.tolerance = reference.tolerance();
-  out.reference.self_check_method = reference_method(tight);
+  if (tight) out.reference.self_check_method = reference_method(*tight);
   if (out.reference_run.status != RunStatus::Ok)
     out.reference.self_check_note = "no reference to check";
-  else if (tight.status != RunStatus::Ok)
+  else if (!tight)
+    out.reference.self_check_note = "not solved (a check of gates needs none)";
+  else if (tight->status != RunStatus::Ok)
     out.reference.self_check_note =
-        "the second solve is " + status_name(tight.status) + ": " + tight.reason;
+        "the second solve is " + status_name(tight->status) + ": " + tight->reason;
   else
-    out.reference.self_check = max_state_difference(out.reference_run.trajectory, tight.trajectory);
-  if (out.reference_run.status == RunStatus::Ok && tight.status == RunStatus::Ok) {
-    out.reference_floor = compare(scene, out.reference_run.trajectory, tight.trajectory);
+    out.reference.self_check =
+        max_state_difference(out.reference_run.trajectory, tight->trajectory);
+  if (out.reference.self_check) {
+    out.reference_floor = compare(scene, out.reference_run.trajectory, tight->trajectory);
     for (const Observe& o : scene.observes) {
       const auto a =
           measure(scene, o, out.reference_run.trajectory, &out.reference_run.trajectory.events)
               .value;
-      const auto b = measure(scene, o, tight.trajectory, &tight.trajectory.events).value;
+      const auto b = measure(scene, o, tight->trajectory, &tight->trajectory.events).value;
       if (a && b) out.observable_floor[o.name] = std::abs(*a - *b);
     }
   }
@@ -277,7 +282,7 @@ CaseResults run_case(const Scene& scene, const Registry& registry, const RunOpti
   const RunRecord& tight = accuracy.tight;
   if (!tight.reused) out.time_spent.self_check_steps = tight.step_seconds;
 
-  record_reference(scene, reference, tight, out);
+  record_reference(scene, reference, options.reference_self_check ? &tight : nullptr, out);
   add_missing_engines(scene, registry, options, dts, out);
   measure_runs(scene, dts, out);
   out.time_spent.accuracy = clock.lap();
@@ -316,6 +321,8 @@ CaseResults run_gates(const Scene& scene, const Registry& registry, const RunOpt
   if (!scene.gates.empty() || also.dts.empty()) options.dts.push_back(scene.report_dt);
   options.cost = false;
   options.sweep = false;
+  // Neither a gate nor a comparison with a baseline uses the reference's own error.
+  options.reference_self_check = false;
   if (options.backends.empty()) options.backends.push_back(kReferenceName);
   CaseResults results = run_case(scene, registry, options);
   // Without a reference, errors are against the finest dt: run it too.

@@ -22,6 +22,9 @@ struct RunOptions {
   int jobs = 1;                       ///< accuracy runs in parallel
   bool cost = true;                   ///< run the cost pass
   bool sweep = true;                  ///< run the case's [[sweep]], if it has one
+  /// Solve the reference a second time, tighter, for its own error (the floors of the order
+  /// fits and the report's plots); a check of gates, which uses neither, does without.
+  bool reference_self_check = true;
   CostOptions cost_options;
   /// Each run in its own child process with a time limit; false runs in this process.
   bool isolation = true;

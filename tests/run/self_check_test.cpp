@@ -73,5 +73,38 @@ TEST(SelfCheck, SolvesWithAnotherMethodAndStepControl) {
       << r.reference.self_check_method;
 }
 
+// A check of gates solves the reference once: gates and baselines use none of the
+// self-check's floors, so every gate comes out as with it, and no second solve is run.
+TEST(SelfCheck, AGatesCheckSolvesTheReferenceOnce) {
+  const Scene scene = load_case(test::source_path("cases/drag_fall.toml"));
+  ASSERT_FALSE(scene.gates.empty());
+  const Registry registry = Registry::load();
+  RunOptions options;
+  options.jobs = 2;
+  const CaseResults checked = run_gates(scene, registry, options, {});
+  EXPECT_FALSE(checked.reference.self_check.has_value());
+  EXPECT_NE(checked.reference.self_check_note.find("not solved"), std::string::npos)
+      << checked.reference.self_check_note;
+  EXPECT_EQ(checked.time_spent.self_check_steps, 0.0);
+  // The same gates, run with the self-check, give the same values.
+  RunOptions with_check = options;
+  with_check.cost = false;
+  with_check.sweep = false;
+  with_check.dts = {scene.report_dt};
+  for (const Gate& g : scene.gates) with_check.backends.push_back(g.backend);
+  const CaseResults full = run_case(scene, registry, with_check);
+  ASSERT_TRUE(full.reference.self_check.has_value()) << full.reference.self_check_note;
+  ASSERT_EQ(checked.gates.size(), full.gates.size());
+  for (std::size_t i = 0; i < full.gates.size(); ++i) {
+    EXPECT_EQ(checked.gates[i].passed, full.gates[i].passed) << full.gates[i].gate.backend;
+    EXPECT_EQ(checked.gates[i].value, full.gates[i].value) << full.gates[i].gate.backend;
+  }
+  // And one run fewer to count.
+  RunOptions checking = options;
+  checking.reference_self_check = false;
+  EXPECT_EQ(progress_units(scene, registry, checking) + 1,
+            progress_units(scene, registry, options));
+}
+
 }  // namespace
 }  // namespace bb
