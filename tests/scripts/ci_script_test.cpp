@@ -1,5 +1,6 @@
 // .ci/run: the gates of the bundled suite run beside the tests, from the same build, with leak
-// detection; CI fails when either fails and prints what the gates said.
+// detection, starting once the program is built (beside the test programs' build too); CI
+// fails when either fails and prints what the gates said.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,6 +21,15 @@ test::ScriptSandbox ci_sandbox(const std::string& name) {
       "i=0; while [ ! -f \"$1\" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i+1)); done\n"
       "if [ -f \"$1\" ]; then echo beside; else echo alone; fi\n";
   box.executable("stand-ins/wait-for", wait_for);
+  // A build of everything says whether the gates were running by then; the program's own
+  // build, which they need, says nothing.
+  box.executable("stand-ins/cmake",
+                 "if [ \"$1\" = --preset ]; then\n"
+                 "  echo \"cmake $*\" >> \"$CALLS\"\n"
+                 "  mkdir -p build-asan; echo CMAKE_GENERATOR:INTERNAL=Ninja > "
+                 "build-asan/CMakeCache.txt\n"
+                 "elif [ \"$4\" = --target ]; then echo \"cmake $*\" >> \"$CALLS\"\n"
+                 "else echo \"cmake $* $(wait-for gates-running)\" >> \"$CALLS\"; fi");
   box.executable("stand-ins/ctest",
                  "touch tests-running\n"
                  "echo \"ctest $* $(wait-for gates-running)\" >> \"$CALLS\"\n"
@@ -48,6 +58,15 @@ TEST(CiScript, RunsTheGatesBesideTheTestsOnTheSanitizerBuild) {
                      "ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 beside"))
       << o.out;
   EXPECT_NE(o.out.find("what the gates said"), std::string::npos) << o.out;
+  // The program first, alone; the rest of the build beside the gates.
+  const auto program =
+      std::find(calls.begin(), calls.end(), "cmake --build --preset asan --target program");
+  const auto gates = std::find_if(calls.begin(), calls.end(), [](const std::string& c) {
+    return c.rfind("beachball check", 0) == 0;
+  });
+  ASSERT_NE(program, calls.end()) << o.out;
+  EXPECT_LT(program - calls.begin(), gates - calls.begin()) << o.out;
+  EXPECT_TRUE(called(calls, "cmake --build --preset asan beside")) << o.out;
 }
 
 TEST(CiScript, FailsWhenTheTestsOrTheGatesFail) {
