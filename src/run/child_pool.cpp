@@ -75,18 +75,6 @@ long address_space_bytes() {
 }
 #endif
 
-}  // namespace
-
-bool children_memory_capped() {
-#ifdef BB_UNDER_ASAN
-  return false;
-#else
-  return true;
-#endif
-}
-
-namespace {
-
 /// Runs first in every child: default signal handlers, its output to `console_fd`, and its
 /// memory cap.
 void child_setup(int console_fd) {
@@ -121,6 +109,14 @@ void child_setup(int console_fd) {
 }
 
 }  // namespace
+
+bool children_memory_capped() {
+#ifdef BB_UNDER_ASAN
+  return false;
+#else
+  return true;
+#endif
+}
 
 struct ChildPool::Active {
   std::vector<Job> jobs;   ///< one, or a group's in the order they run
