@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "contact/contact_geometry.hpp"
@@ -138,7 +139,7 @@ std::vector<double> SceneModel::initial_state() const {
     const double values[kPerBody - 3] = {
         s.position.x(), s.position.y(),    s.position.z(),    s.velocity.x(),    s.velocity.y(),
         s.velocity.z(), s.orientation.w(), s.orientation.x(), s.orientation.y(), s.orientation.z()};
-    std::copy(values, values + kPerBody - 3, p);
+    std::copy(std::begin(values), std::end(values), p);
     set_spin(y.data(), static_cast<int>(i), s.angular_velocity);
   }
   return y;
