@@ -336,7 +336,9 @@ void set_sweep_parameter(Scene& scene, const std::string& path, double value) {
     return;
   }
   Ground& g = *scene.ground;
-  const auto [up, across] = tilt_frame(g);
+  // Named, not bound: the lambdas below use them (clang 14 cannot capture a structured binding).
+  const std::pair<Vec3, Vec3> frame = tilt_frame(g);
+  const Vec3 &up = frame.first, &across = frame.second;
   // The turn from the case's tilt to the swept one, written as a case is by hand: the
   // ground's normal from the angle's cosine and sine (unit length as the loader makes it),
   // each body's parts along `up` and `across` turned by the angle's difference, the part
