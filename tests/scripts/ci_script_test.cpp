@@ -52,6 +52,9 @@ TEST(CiScript, RunsTheGatesBesideTheTestsOnTheSanitizerBuild) {
   const test::Outcome o = box.run(".ci/run");
   ASSERT_EQ(o.exit_code, 0) << o.out;
   const std::vector<std::string> calls = box.calls();
+  // The tests' packages and the sanitizer build's compiler (clang), before anything is built.
+  ASSERT_FALSE(calls.empty()) << o.out;
+  EXPECT_EQ(calls.front(), "setup --tests --sanitizers") << o.out;
   EXPECT_TRUE(called(calls, "ctest --preset asan beside")) << o.out;
   EXPECT_TRUE(called(calls,
                      "beachball check --timeout 600 --junit build-asan/gates.xml "

@@ -24,7 +24,7 @@ class ScriptSandbox {
     fs::create_directories(root_ + "/stand-ins");
     for (const char* script : {"build", "preset.sh", "report", "test"})
       fs::copy_file(source_path(std::string("scripts/") + script), root_ + "/scripts/" + script);
-    executable("scripts/setup", "exit 0");
+    executable("scripts/setup", "echo \"setup${*:+ $*}\" >> \"$CALLS\"");
     // A configure (cmake --preset P) leaves the cache Ninja's would, in the preset's folder.
     executable(
         "stand-ins/cmake",
