@@ -12,13 +12,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <vector>
 
 #include "files/atomic_file.hpp"
 #include "files/file_digest.hpp"
 #include "files/owned_temporary.hpp"
+#include "files/whole_file.hpp"
 
 namespace bb {
 
@@ -121,12 +121,6 @@ std::optional<std::string> payload_of(const std::string& bytes, const std::strin
   return payload;
 }
 
-std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
-
 }  // namespace
 
 std::string default_cache_folder() {
@@ -151,7 +145,7 @@ std::string ResultCache::path_of(const std::string& key) const {
 std::optional<std::string> ResultCache::load(const std::string& key) const {
   if (folder_.empty() || !is_key(key)) return std::nullopt;
   const std::string path = path_of(key);
-  const std::optional<std::string> bytes = read_file(path);
+  const std::optional<std::string> bytes = read_whole_file(path);
   if (!bytes) return std::nullopt;
   std::optional<std::string> payload = payload_of(*bytes, key);
   // Used now: the last to be pruned.
@@ -197,7 +191,7 @@ std::vector<std::string> ResultCache::damaged_entries() const {
   for (const auto& file : fs::directory_iterator(folder_, ec)) {
     const std::string name = file.path().filename().string();
     if (!name.ends_with(kSuffix) || !is_key(name.substr(0, name.size() - kSuffixSize))) continue;
-    const std::optional<std::string> bytes = read_file(file.path().string());
+    const std::optional<std::string> bytes = read_whole_file(file.path().string());
     if (!bytes || !payload_of(*bytes, name.substr(0, 32))) damaged.push_back(name);
   }
   std::sort(damaged.begin(), damaged.end());

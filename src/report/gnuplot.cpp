@@ -17,6 +17,7 @@
 #include <fstream>
 #include <optional>
 
+#include "files/whole_file.hpp"
 #include "report/backend_style.hpp"
 #include "report/plot_layout.hpp"
 #include "run/interrupt.hpp"
@@ -217,18 +218,14 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
   const std::string ended = run_gnuplot((temp / "plot.gp").string(), (temp / "log.txt").string());
   stop_if_interrupted(name);
   if (!ended.empty() || !complete_svg(output)) {
-    std::ifstream log(temp / "log.txt");
-    const std::string said = trimmed(std::string(std::istreambuf_iterator<char>(log), {}));
+    const std::string said = trimmed(read_whole_file((temp / "log.txt").string()).value_or(""));
     std::remove(output.c_str());
     throw WriteError(batch.folder() + "/" + name,
                      !ended.empty()
                          ? "gnuplot failed (" + ended + ")" + (said.empty() ? "" : ": " + said)
                          : "gnuplot left an incomplete SVG (is the disk full?)");
   }
-  if (drawings_cache) {
-    std::ifstream svg(output, std::ios::binary);
-    drawings_cache->store(key, std::string(std::istreambuf_iterator<char>(svg), {}));
-  }
+  if (drawings_cache) drawings_cache->store(key, read_whole_file(output).value_or(""));
   return "";
 }
 

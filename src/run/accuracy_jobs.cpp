@@ -4,15 +4,15 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <system_error>
 
 #include "files/atomic_file.hpp"
 #include "files/owned_temporary.hpp"
+#include "files/whole_file.hpp"
 #include "model/text.hpp"
 #include "run/accuracy_run.hpp"
 #include "run/child_pool.hpp"
@@ -65,10 +65,9 @@ bool write_run(const std::string& path, const RunRecord& run) {
 }
 
 RunRecord read_run(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw std::runtime_error("cannot read the finest run " + path);
-  return wire::decode_run(bytes);
+  const std::optional<std::string> bytes = read_whole_file(path);
+  if (!bytes) throw std::runtime_error("cannot read the finest run " + path);
+  return wire::decode_run(*bytes);
 }
 
 /// A run record from what its child process reported.

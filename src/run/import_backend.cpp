@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 #include "files/result_cache.hpp"
+#include "files/whole_file.hpp"
 #include "model/text.hpp"
 #include "observe/observable_registry.hpp"
 #include "study/case_error.hpp"
@@ -41,8 +40,7 @@ class ReplaySimulation : public Simulation {
 
 /// The bytes of `file` (read and checked already).
 std::string file_bytes(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return read_whole_file(file).value_or("");
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <iterator>
 #include <map>
+#include <optional>
+#include <string>
 
+#include "files/whole_file.hpp"
 #include "model/text.hpp"
 #include "run/trajectory_writer.hpp"
 #include "study/case_error.hpp"
@@ -206,10 +208,12 @@ class RowReader {
 }  // namespace
 
 ImportedTrajectory read_trajectory(const Scene& scene, double dt, const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw CaseError(file, 0, "cannot be read (no such file, or not readable)");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw CaseError(file, 0, "cannot be read");
+  const std::optional<std::string> read = read_whole_file(file);
+  if (!read)
+    throw CaseError(
+        file, 0,
+        std::ifstream(file) ? "cannot be read" : "cannot be read (no such file, or not readable)");
+  const std::string& text = *read;
   RowReader reader(scene, dt, file);
   int line = 0;
   std::size_t start = 0;

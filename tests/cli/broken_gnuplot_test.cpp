@@ -74,7 +74,7 @@ std::string plots_note_with_path(const std::string& name, const std::string& pat
       "run " + kept + " --no-cost --cache off --backends reference --out " + dir + "/out",
       "export PATH=" + path + ";");
   EXPECT_EQ(o.exit_code, 0) << o.out;
-  const std::string page = test::file_bytes(dir + "/out/kept.md");
+  const std::string page = test::bytes(dir + "/out/kept.md");
   const std::size_t at = page.find("plots skipped");
   return at == std::string::npos ? "" : page.substr(at, page.find('\n', at) - at);
 }

@@ -50,7 +50,7 @@ Ended with_closed_reader(const std::vector<std::string>& args, bool both) {
   close(ends[1]);
   Ended ended;
   ended.code = test::wait_for(pid);
-  if (!both) ended.said = test::file_bytes(log);
+  if (!both) ended.said = test::bytes(log);
   return ended;
 }
 

@@ -23,11 +23,11 @@ TEST(GateLines, AGateOnTheFallbackSaysSoInCheckJUnitAndThePage) {
   const test::Outcome o = beachball("check " + file + " --junit " + dir + "/junit.xml --cache off");
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_NE(o.out.find(kAgainst), std::string::npos) << o.out;
-  EXPECT_NE(test::file_bytes(dir + "/junit.xml").find(kAgainst), std::string::npos);
+  EXPECT_NE(test::bytes(dir + "/junit.xml").find(kAgainst), std::string::npos);
   const test::Outcome run =
       beachball("run " + file + " --out " + dir + "/out --no-cost --cache off");
   ASSERT_EQ(run.exit_code, 0) << run.out;
-  const std::string page = test::file_bytes(dir + "/out/stack.md");
+  const std::string page = test::bytes(dir + "/out/stack.md");
   EXPECT_NE(page.substr(page.find("## Gates")).find(kAgainst), std::string::npos) << page;
 }
 

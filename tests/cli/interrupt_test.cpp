@@ -90,9 +90,9 @@ TEST(Interrupt, SigtermWhileRunsWriteTrajectoriesLeavesNoneAndTheEarlierSetUntou
                                           dir + "/slow.log");
   int status = 0;
   while (!writing_trajectories(out) && waitpid(pid, &status, WNOHANG) == 0) usleep(1000);
-  ASSERT_TRUE(writing_trajectories(out)) << test::file_bytes(dir + "/slow.log");
+  ASSERT_TRUE(writing_trajectories(out)) << test::bytes(dir + "/slow.log");
   kill(pid, SIGTERM);
-  EXPECT_EQ(test::wait_for(pid), 128 + SIGTERM) << test::file_bytes(dir + "/slow.log");
+  EXPECT_EQ(test::wait_for(pid), 128 + SIGTERM) << test::bytes(dir + "/slow.log");
   EXPECT_EQ(test::snapshot(out), before) << "a trajectory file, or a change to the earlier set";
   EXPECT_EQ(test::temporaries_in(out), "");
 }

@@ -47,12 +47,12 @@ TEST(KeptResults, OnlyTheCaseThatChangedRunsAgain) {
   const test::Outcome edited = run("edited");
   ASSERT_EQ(edited.exit_code, 0) << edited.out;
   EXPECT_EQ(test::kept_counts(edited.out), std::make_pair(all / 2, all / 2)) << edited.out;
-  EXPECT_EQ(test::file_bytes(dir + "/edited/b.json"), test::file_bytes(dir + "/first/b.json"));
-  EXPECT_NE(test::file_bytes(dir + "/edited/a.json"), test::file_bytes(dir + "/first/a.json"));
+  EXPECT_EQ(test::bytes(dir + "/edited/b.json"), test::bytes(dir + "/first/b.json"));
+  EXPECT_NE(test::bytes(dir + "/edited/a.json"), test::bytes(dir + "/first/a.json"));
 
   const test::Outcome fresh = run("fresh", " --fresh");
   EXPECT_EQ(test::kept_counts(fresh.out), std::make_pair(0, all)) << fresh.out;
-  EXPECT_EQ(test::file_bytes(dir + "/fresh/b.json"), test::file_bytes(dir + "/first/b.json"));
+  EXPECT_EQ(test::bytes(dir + "/fresh/b.json"), test::bytes(dir + "/first/b.json"));
 
   // Without a folder of kept results (the tests' environment says off), nothing is said.
   const test::Outcome off = test::beachball("run " + b + " --no-cost --out " + dir + "/off");
@@ -101,8 +101,7 @@ TEST(KeptResults, SomeOfTheStepsGiveTheBytesOfAFreshRunOfThem) {
   EXPECT_GE(test::kept_counts(kept_subset.out).first, 2) << kept_subset.out;
   const test::Outcome fresh_subset = run("fresh", " --dt 1/60,1/120");
   ASSERT_EQ(fresh_subset.exit_code, 0) << fresh_subset.out;
-  EXPECT_EQ(test::file_bytes(dir + "/kept/stack.json"),
-            test::file_bytes(dir + "/fresh/stack.json"));
+  EXPECT_EQ(test::bytes(dir + "/kept/stack.json"), test::bytes(dir + "/fresh/stack.json"));
   EXPECT_EQ(test::snapshot(dir + "/kept"), test::snapshot(dir + "/fresh"));
 }
 
@@ -117,7 +116,7 @@ TEST(KeptResults, AFolderThatCannotBeUsedIsSaid) {
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_NE(o.out.find("cannot be used: it is not a folder"), std::string::npos) << o.out;
   EXPECT_EQ(test::kept_counts(o.out), std::make_pair(-1, -1)) << o.out;
-  EXPECT_EQ(test::file_bytes(dir + "/a file"), "not a folder");
+  EXPECT_EQ(test::bytes(dir + "/a file"), "not a folder");
 }
 
 // Costs are kept too, but never passed off as fresh: a reused cost says when it was timed
@@ -130,24 +129,23 @@ TEST(KeptResults, AKeptCostSaysWhenItWasTimed) {
                            " --cache " + dir + "/cache" + more);
   };
   ASSERT_EQ(report("first").exit_code, 0);
-  const std::string first = test::file_bytes(dir + "/first/a.json");
+  const std::string first = test::bytes(dir + "/first/a.json");
   EXPECT_EQ(first.find("measured_at"), std::string::npos);
   const test::Outcome second = report("second");
   ASSERT_EQ(second.exit_code, 0) << second.out;
   EXPECT_EQ(test::kept_counts(second.out).second, 0) << second.out;
-  const std::string json = test::file_bytes(dir + "/second/a.json");
+  const std::string json = test::bytes(dir + "/second/a.json");
   // "measured_at": "YYYY-MM-DDTHH:MM:SSZ"
   const auto at = json.find("\"measured_at\": \"");
   ASSERT_NE(at, std::string::npos) << json;
   const std::string when = json.substr(at + 16, 20);
   EXPECT_TRUE(when.size() == 20 && when[4] == '-' && when[10] == 'T' && when[19] == 'Z') << when;
-  EXPECT_NE(test::file_bytes(dir + "/second/a.md").find("Kept costs: the costs of"),
-            std::string::npos);
-  EXPECT_NE(test::file_bytes(dir + "/second/README.md").find("**Kept costs**:"), std::string::npos);
+  EXPECT_NE(test::bytes(dir + "/second/a.md").find("Kept costs: the costs of"), std::string::npos);
+  EXPECT_NE(test::bytes(dir + "/second/README.md").find("**Kept costs**:"), std::string::npos);
   const test::Outcome fresh = report("fresh", " --fresh");
   ASSERT_EQ(fresh.exit_code, 0) << fresh.out;
-  EXPECT_EQ(test::file_bytes(dir + "/fresh/a.json").find("measured_at"), std::string::npos);
-  EXPECT_EQ(test::file_bytes(dir + "/fresh/README.md").find("Kept costs"), std::string::npos);
+  EXPECT_EQ(test::bytes(dir + "/fresh/a.json").find("measured_at"), std::string::npos);
+  EXPECT_EQ(test::bytes(dir + "/fresh/README.md").find("Kept costs"), std::string::npos);
 }
 
 }  // namespace

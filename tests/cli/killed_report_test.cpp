@@ -77,9 +77,9 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
   };
   // One report unkilled: the new report, and how long its write phase takes.
   const pid_t first = report(dir / "new");
-  ASSERT_TRUE(wait_for_writing(first, dir)) << test::file_bytes(log);
+  ASSERT_TRUE(wait_for_writing(first, dir)) << test::bytes(log);
   const Clock::time_point writing = Clock::now();
-  ASSERT_EQ(test::wait_for(first), 0) << test::file_bytes(log);
+  ASSERT_EQ(test::wait_for(first), 0) << test::bytes(log);
   const Clock::duration write_phase = Clock::now() - writing;
   const auto new_report = test::snapshot(dir / "new");
   write_old_report(dir / "old", new_report);
@@ -135,7 +135,7 @@ TEST(KilledReport, SigkillAtAnyMomentLeavesTheOldOrTheNewReportAndTheNextRunClea
   ASSERT_TRUE(fs::exists(dead_staging) && fs::exists(dead_beside));
   fs::create_directories(dir / "out.tmp.999999999");
   std::ofstream(dir / "out.tmp.999999999" / "kept.md") << "the user's own folder";
-  ASSERT_EQ(test::wait_for(report(out)), 0) << test::file_bytes(log);
+  ASSERT_EQ(test::wait_for(report(out)), 0) << test::bytes(log);
   EXPECT_EQ(test::snapshot(out), new_report);
   EXPECT_EQ(test::temporaries_in(dir), "");
   EXPECT_EQ(test::temporaries_in(out), "");
@@ -159,9 +159,9 @@ TEST(KilledReport, TheNextRunKeepsTheTemporariesOfLivingProcessesAndTheUsersFile
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_TRUE(fs::exists(living.path()));
   EXPECT_FALSE(fs::exists(dead));
-  EXPECT_EQ(test::file_bytes(out / "mydata.tmp.3999999" / "file.txt"), "the user's data");
-  EXPECT_EQ(test::file_bytes(out / "notes.tmp.77777"), "the user's notes");
-  EXPECT_EQ(test::file_bytes(out / "kept.md.tmp.999999999"), "the user's file");
+  EXPECT_EQ(test::bytes(out / "mydata.tmp.3999999" / "file.txt"), "the user's data");
+  EXPECT_EQ(test::bytes(out / "notes.tmp.77777"), "the user's notes");
+  EXPECT_EQ(test::bytes(out / "kept.md.tmp.999999999"), "the user's file");
   EXPECT_TRUE(fs::exists(out / "kept.md"));
 }
 

@@ -38,7 +38,7 @@ TEST(PageText, EveryPageRendersHostileTextOnceEscaped) {
   int pages_with_title = 0;
   for (const auto& entry : fs::directory_iterator(out)) {
     if (entry.path().extension() != ".md") continue;
-    const std::string page = test::file_bytes(entry.path());
+    const std::string page = test::bytes(entry.path());
     const std::string name = entry.path().filename().string();
     // Escaped twice would read "&amp;lt;" or four backslashes; a bare '$' would start math.
     for (const char* twice : {"&amp;lt;", "&amp;gt;", "&amp;amp;", "\\\\\\\\", "\\\\$"})

@@ -127,7 +127,7 @@ TEST(ParentDeath, TheRunsOfAKilledBeachballStop) {
     return !children.empty();
   });
   if (!settled) kill(beachball, SIGKILL);
-  ASSERT_TRUE(settled) << test::file_bytes(dir + "/log.txt");
+  ASSERT_TRUE(settled) << test::bytes(dir + "/log.txt");
   kill_and_expect_children_gone(beachball, children);
 }
 

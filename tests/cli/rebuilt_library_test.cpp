@@ -41,7 +41,7 @@ TEST(RebuiltLibrary, ARebuiltPhysicsLibraryRerunsEveryRun) {
   const test::Outcome rebuilt = run("rebuilt", kRebuilt);
   ASSERT_EQ(rebuilt.exit_code, 0) << rebuilt.out;
   EXPECT_EQ(test::kept_counts(rebuilt.out), std::make_pair(0, all)) << rebuilt.out;
-  EXPECT_EQ(test::file_bytes(dir + "/rebuilt/a.json"), test::file_bytes(dir + "/first/a.json"));
+  EXPECT_EQ(test::bytes(dir + "/rebuilt/a.json"), test::bytes(dir + "/first/a.json"));
   // Back to the build's own library: its results are still kept.
   EXPECT_EQ(test::kept_counts(run("back").out), std::make_pair(all, 0));
 }

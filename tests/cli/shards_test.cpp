@@ -158,7 +158,7 @@ TEST(Shards, AMergeKeepsARunThatTimedOut) {
   const test::Outcome whole =
       test::beachball("run " + slow + selection + " --out " + dir + "/whole");
   ASSERT_EQ(whole.exit_code, 0) << whole.out;
-  const std::string json = test::file_bytes(dir + "/whole/slow.json");
+  const std::string json = test::bytes(dir + "/whole/slow.json");
   EXPECT_NE(json.find("\"status\": \"timeout\""), std::string::npos) << json;
   EXPECT_EQ(test::snapshot(dir + "/merged"), test::snapshot(dir + "/whole"));
 }

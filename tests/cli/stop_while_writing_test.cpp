@@ -89,11 +89,11 @@ TEST(StopWhileWriting, ACachedReportStopsAtOnceAndWritesNothing) {
   const std::string log = dir + "/second.log";
   const Stopped s = stop_while_writing(test::start_beachball(args, log), dir, SIGTERM);
   ASSERT_GE(s.seconds, 0.0) << "the report ended before its pages were written: "
-                            << test::file_bytes(log);
-  EXPECT_EQ(s.exit_code, 128 + SIGTERM) << test::file_bytes(log);
+                            << test::bytes(log);
+  EXPECT_EQ(s.exit_code, 128 + SIGTERM) << test::bytes(log);
   EXPECT_LT(s.seconds, 5.0);
-  EXPECT_NE(test::file_bytes(log).find("interrupted by signal 15"), std::string::npos)
-      << test::file_bytes(log);
+  EXPECT_NE(test::bytes(log).find("interrupted by signal 15"), std::string::npos)
+      << test::bytes(log);
   EXPECT_FALSE(fs::exists(dir + "/second")) << "a report, or an empty --out, was left";
   EXPECT_EQ(test::temporaries_in(dir), "");
 }
@@ -119,21 +119,21 @@ TEST(StopWhileWriting, AMergeStopsAtOnceAndLeavesNothingBehind) {
     return test::start_beachball(args, dir + "/" + out + ".log");
   };
   const Stopped term = stop_while_writing(merge("merged"), dir, SIGTERM);
-  ASSERT_GE(term.seconds, 0.0) << test::file_bytes(dir + "/merged.log");
-  EXPECT_EQ(term.exit_code, 128 + SIGTERM) << test::file_bytes(dir + "/merged.log");
+  ASSERT_GE(term.seconds, 0.0) << test::bytes(dir + "/merged.log");
+  EXPECT_EQ(term.exit_code, 128 + SIGTERM) << test::bytes(dir + "/merged.log");
   EXPECT_LT(term.seconds, 5.0);
   EXPECT_FALSE(fs::exists(dir + "/merged"));
   EXPECT_EQ(test::temporaries_in(dir), "");
   // Killed outright, it leaves nothing in $TMPDIR either (the next merge would clear what
   // it leaves beside its --out).
   const Stopped killed = stop_while_writing(merge("killed"), dir, SIGKILL);
-  ASSERT_GE(killed.seconds, 0.0) << test::file_bytes(dir + "/killed.log");
+  ASSERT_GE(killed.seconds, 0.0) << test::bytes(dir + "/killed.log");
   EXPECT_EQ(killed.exit_code, 128 + SIGKILL);
   EXPECT_TRUE(fs::is_empty(tmp)) << test::temporaries_in(tmp);
   // Without a usable $TMPDIR a merge works all the same.
   tmpdir.emplace(dir + "/no such folder");
   const pid_t whole = merge("whole");
-  EXPECT_EQ(test::wait_for(whole), 0) << test::file_bytes(dir + "/whole.log");
+  EXPECT_EQ(test::wait_for(whole), 0) << test::bytes(dir + "/whole.log");
   EXPECT_TRUE(fs::exists(dir + "/whole/README.md"));
 }
 

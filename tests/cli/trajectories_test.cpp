@@ -43,7 +43,7 @@ std::string written_here(const Scene& scene, const std::string& backend, double 
   TrajectoryWriter writer(path, scene);
   run_accuracy(*chosen, scene, dt, false, &writer);
   EXPECT_EQ(writer.close(), "");
-  return test::file_bytes(path);
+  return test::bytes(path);
 }
 
 /// A folder with the minimal case (one ball falling in air, dt 0.1 s and 0.05 s) as
@@ -71,9 +71,9 @@ TEST(Trajectories, AFilePerRunNamedByBackendAndDtHoldsTheRunItself) {
   EXPECT_NE(o.out.find("traj-trajectories/: 3 files"), std::string::npos) << o.out;
   // Each file is the run of the same backend made here, to the byte.
   const Scene scene = load_case(dir + "/traj.toml");
-  EXPECT_EQ(test::file_bytes(folder + "/course-explicit-euler@1-20.csv"),
+  EXPECT_EQ(test::bytes(folder + "/course-explicit-euler@1-20.csv"),
             written_here(scene, "course/explicit-euler", 0.05, dir + "/here-euler.csv"));
-  EXPECT_EQ(test::file_bytes(folder + "/reference.csv"),
+  EXPECT_EQ(test::bytes(folder + "/reference.csv"),
             written_here(scene, "reference", scene.sample, dir + "/here-reference.csv"));
 }
 
@@ -121,7 +121,7 @@ TEST(Trajectories, AUsersFileInTheFolderStopsTheRunBeforeAnyWork) {
   EXPECT_EQ(refused.exit_code, 2) << refused.out;
   EXPECT_FALSE(fs::exists(other + "/traj.json")) << "the runs went ahead";
   ASSERT_EQ(beachball(run_other).exit_code, 0);
-  EXPECT_EQ(test::file_bytes(other + "/traj-trajectories/mine.csv"), "the user's");
+  EXPECT_EQ(test::bytes(other + "/traj-trajectories/mine.csv"), "the user's");
 }
 
 TEST(Trajectories, KeptResultsRunAgainToWriteTheirSteps) {

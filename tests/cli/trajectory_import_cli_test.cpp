@@ -110,7 +110,7 @@ TEST(TrajectoryImportCli, ABadFileIsRefusedBeforeAnyWorkWithNothingWritten) {
   const auto [dir, options] = minimal_with_example("import_refused");
   const std::string file = dir + "/euler/euler@1-20.csv";
   // A row of a body the case does not have, as line 4.
-  std::string text = test::file_bytes(file);
+  std::string text = test::bytes(file);
   const std::size_t third = text.find('\n', text.find('\n', text.find('\n') + 1) + 1);
   text.insert(third + 1, "0.05,ghost,0,0,0,0,0,0,1,0,0,0,0,0,0,0\n");
   std::ofstream(file, std::ios::binary) << text;
@@ -142,7 +142,7 @@ TEST(TrajectoryImportCli, AFileThatEndsEarlyIsARowWithItsReason) {
   // The program stopped at t = 0.5 s, in the middle of a line.
   const std::string file = dir + "/euler/euler@1-20.csv";
   const test::TrajectoryCsv whole = test::read_trajectory(file);
-  std::string text = test::file_bytes(file);
+  std::string text = test::bytes(file);
   std::size_t cut = 0;
   for (int line = 0; line < 1 + 11; ++line) cut = text.find('\n', cut) + 1;
   std::ofstream(file, std::ios::binary | std::ios::trunc) << text.substr(0, cut + 10);

@@ -22,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::beachball;
-using test::file_bytes;
 using test::Outcome;
 
 /// A folder with the minimal case in it; returns the folder, the case at `<dir>/<name>.toml`.
@@ -55,7 +54,7 @@ TEST(UserFiles, ARunRefusesToReplaceAFileItDidNotWrite) {
   EXPECT_EQ(o.exit_code, 2) << o.out;
   EXPECT_NE(o.out.find("kept.md: exists and beachball did not write it"), std::string::npos)
       << o.out;
-  EXPECT_EQ(file_bytes(out + "/kept.md"), "the user's notes on this case");
+  EXPECT_EQ(test::bytes(out + "/kept.md"), "the user's notes on this case");
   EXPECT_FALSE(fs::exists(out + "/kept.json")) << "the runs went ahead";
 }
 
@@ -101,7 +100,7 @@ TEST(UserFiles, JunitIntoAFifoIsWrittenIntoItAndTheFifoStays) {
   const std::string fifo = dir + "/gates.fifo";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
   std::string read_back;
-  std::thread reader([&] { read_back = file_bytes(fifo); });
+  std::thread reader([&] { read_back = test::bytes(fifo); });
   const Outcome o = beachball("check " + dir + "/kept.toml --junit " + fifo);
   reader.join();
   EXPECT_EQ(o.exit_code, 0) << o.out;
@@ -134,7 +133,7 @@ TEST(UserFiles, JunitThroughALinkReplacesTheFileAtItsEndAndTheLinkStays) {
   fs::create_symlink("gates.xml", dir + "/link.xml");
   ASSERT_EQ(beachball("check " + dir + "/kept.toml --junit " + dir + "/link.xml").exit_code, 0);
   EXPECT_TRUE(fs::is_symlink(dir + "/link.xml"));
-  EXPECT_NE(file_bytes(dir + "/gates.xml").find("<testsuites"), std::string::npos);
+  EXPECT_NE(test::bytes(dir + "/gates.xml").find("<testsuites"), std::string::npos);
   EXPECT_EQ(test::temporaries_in(dir), "");
 }
 
@@ -146,7 +145,7 @@ TEST(UserFiles, AReportIntoTheCurrentFolderIsSwitchedInFileByFile) {
   const Outcome o = beachball("report ../kept.toml --no-cost --out .", "cd " + rep + " &&");
   ASSERT_EQ(o.exit_code, 0) << o.out;
   EXPECT_NE(o.out.find("it is the current folder"), std::string::npos) << o.out;
-  EXPECT_NE(file_bytes(rep + "/kept.md"), "changed");
+  EXPECT_NE(test::bytes(rep + "/kept.md"), "changed");
   EXPECT_EQ(test::temporaries_in(rep), "");
   EXPECT_EQ(test::temporaries_in(dir), "");
 }
@@ -164,9 +163,9 @@ TEST(UserFiles, AReportIntoAMountPointIsSwitchedInFileByFile) {
                              " && test -f " + vol + "/kept.md && test -z \"$(ls -A " + vol +
                              " | grep -v manifest | grep beachball-)\"";
   EXPECT_EQ(std::system(("unshare -m sh -c '" + script + "'").c_str()), 0)
-      << file_bytes(dir + "/log.txt");
-  EXPECT_NE(file_bytes(dir + "/log.txt").find("it is a mount point"), std::string::npos)
-      << file_bytes(dir + "/log.txt");
+      << test::bytes(dir + "/log.txt");
+  EXPECT_NE(test::bytes(dir + "/log.txt").find("it is a mount point"), std::string::npos)
+      << test::bytes(dir + "/log.txt");
 }
 
 TEST(UserFiles, APlotWithNothingFiniteToDrawIsANoteNotAnAbort) {
@@ -175,7 +174,7 @@ TEST(UserFiles, APlotWithNothingFiniteToDrawIsANoteNotAnAbort) {
   Outcome o = beachball("run " + test::source_path("cases/many_beachballs.toml") +
                         " --backends reference --no-cost --out " + dir + "/crowd");
   EXPECT_EQ(o.exit_code, 0) << o.out;
-  EXPECT_NE(file_bytes(dir + "/crowd/many_beachballs.md").find("finite"), std::string::npos);
+  EXPECT_NE(test::bytes(dir + "/crowd/many_beachballs.md").find("finite"), std::string::npos);
   // A start so large its energy would overflow is refused at load, before any file is written.
   std::string huge = test::minimal_case("huge");
   huge.replace(huge.find("drag_coefficient"), 0, "velocity = [1e300, 0.0, 0.0]\n");
@@ -189,7 +188,7 @@ TEST(UserFiles, APlotWithNothingFiniteToDrawIsANoteNotAnAbort) {
   o = beachball("run " + dir + "/slow.toml --backends course/rk4 --timeout 0.001 --no-cost --out " +
                 dir + "/slow");
   EXPECT_EQ(o.exit_code, 0) << o.out;
-  EXPECT_NE(file_bytes(dir + "/slow/slow.json").find("timeout"), std::string::npos);
+  EXPECT_NE(test::bytes(dir + "/slow/slow.json").find("timeout"), std::string::npos);
 }
 
 /// The JSON runs of `beachball run` of the stacked balls with the environment `env`.
@@ -244,7 +243,7 @@ TEST(UserFiles, ASecondReportInAnotherPidNamespaceLeavesTheFirstsWorkAlone) {
       if (entry.path().filename().string().rfind(".beachball-report-", 0) == 0)
         beside = entry.path().string();
   }
-  ASSERT_FALSE(beside.empty()) << file_bytes(dir + "/first.log");
+  ASSERT_FALSE(beside.empty()) << test::bytes(dir + "/first.log");
   // The second report runs in a PID namespace of its own where one can be made: there the
   // first report's process id means nothing.
   const bool namespaces = std::system("unshare --pid --fork --mount-proc true 2>/dev/null") == 0;
@@ -253,13 +252,13 @@ TEST(UserFiles, ASecondReportInAnotherPidNamespaceLeavesTheFirstsWorkAlone) {
                                   std::string(BEACHBALL_PROGRAM) + " report " + slow +
                                   " --no-cost --out " + out + " > " + second_log + " 2>&1")
                                      .c_str());
-  EXPECT_EQ(WEXITSTATUS(status), 2) << file_bytes(second_log);
-  EXPECT_NE(file_bytes(second_log).find("another beachball is writing this folder"),
+  EXPECT_EQ(WEXITSTATUS(status), 2) << test::bytes(second_log);
+  EXPECT_NE(test::bytes(second_log).find("another beachball is writing this folder"),
             std::string::npos)
-      << file_bytes(second_log);
+      << test::bytes(second_log);
   EXPECT_TRUE(fs::exists(beside)) << "the second report removed the first's live work";
   kill(first, SIGTERM);
-  EXPECT_EQ(test::wait_for(first), 128 + SIGTERM) << file_bytes(dir + "/first.log");
+  EXPECT_EQ(test::wait_for(first), 128 + SIGTERM) << test::bytes(dir + "/first.log");
 }
 
 TEST(UserFiles, SighupAndSigpipeStopLikeSigterm) {
@@ -269,8 +268,8 @@ TEST(UserFiles, SighupAndSigpipeStopLikeSigterm) {
       {"report", dir + "/slow.toml", "--no-cost", "--out", dir + "/rep"}, dir + "/log.txt");
   std::this_thread::sleep_for(std::chrono::milliseconds(700));
   kill(pid, SIGHUP);
-  EXPECT_EQ(test::wait_for(pid), 128 + SIGHUP) << file_bytes(dir + "/log.txt");
-  EXPECT_NE(file_bytes(dir + "/log.txt").find("interrupted by signal 1"), std::string::npos);
+  EXPECT_EQ(test::wait_for(pid), 128 + SIGHUP) << test::bytes(dir + "/log.txt");
+  EXPECT_NE(test::bytes(dir + "/log.txt").find("interrupted by signal 1"), std::string::npos);
   EXPECT_EQ(test::temporaries_in(dir), "");
   // A reader that goes away: the second case's table cannot be printed.
   test::write_case(dir, "other.toml", test::minimal_case("other"));
@@ -279,8 +278,8 @@ TEST(UserFiles, SighupAndSigpipeStopLikeSigterm) {
                               "/out 2> " + dir + "/err.txt | head -1 > /dev/null; exit " +
                               "${PIPESTATUS[0]}'";
   const int status = std::system(command.c_str());
-  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGPIPE) << file_bytes(dir + "/err.txt");
-  EXPECT_NE(file_bytes(dir + "/err.txt").find("interrupted by signal 13"), std::string::npos);
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGPIPE) << test::bytes(dir + "/err.txt");
+  EXPECT_NE(test::bytes(dir + "/err.txt").find("interrupted by signal 13"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir + "/out/other.json")) << "the write it had begun was not finished";
 }
 
@@ -290,7 +289,7 @@ TEST(UserFiles, TheIndexLinksARotationPlotOnlyWhenOneWasDrawn) {
       "report " + test::source_path("cases/plank_free.toml") + " --no-cost --out " + dir + "/rep",
       "export PATH=/nonexistent;");
   ASSERT_EQ(o.exit_code, 0) << o.out;
-  const std::string index = file_bytes(dir + "/rep/README.md");
+  const std::string index = test::bytes(dir + "/rep/README.md");
   EXPECT_EQ(index.find("-rotation.svg"), std::string::npos) << index;
   EXPECT_NE(index.find("No rotation plot was drawn"), std::string::npos) << index;
 }
@@ -299,9 +298,9 @@ TEST(UserFiles, AStabilitySearchAndARunShareAFolder) {
   const std::string dir = folder_with_case("run_and_stability");
   const std::string out = dir + "/out";
   ASSERT_EQ(beachball("run " + dir + "/kept.toml --no-cost --out " + out).exit_code, 0);
-  const std::string run_json = file_bytes(out + "/kept.json");
+  const std::string run_json = test::bytes(out + "/kept.json");
   ASSERT_EQ(beachball("stability " + dir + "/kept.toml --out " + out).exit_code, 0);
-  EXPECT_EQ(file_bytes(out + "/kept.json"), run_json);
+  EXPECT_EQ(test::bytes(out + "/kept.json"), run_json);
   EXPECT_TRUE(fs::exists(out + "/kept-stability.json"));
   EXPECT_TRUE(fs::exists(out + "/kept-stability.md"));
 }

@@ -38,7 +38,7 @@ TEST(FileBatchFolder, AFolderIsPutWholeWithItsOwnRecordReplacingTheEarlierOne) {
     EXPECT_FALSE(fs::exists(out + "/c.json")) << "switched in before commit";
     batch.commit();
   }
-  EXPECT_EQ(test::file_bytes(out + "/c-steps/a.csv"), "new a");
+  EXPECT_EQ(test::bytes(out + "/c-steps/a.csv"), "new a");
   EXPECT_FALSE(fs::exists(out + "/c-steps/b.csv")) << "a file of the earlier folder stayed";
   EXPECT_EQ(read_manifest(out + "/c-steps"), std::set<std::string>{"a.csv"});
   EXPECT_EQ(read_manifest(out), (std::set<std::string>{"c-steps", "c.json"}));

@@ -38,10 +38,10 @@ TEST(FileBatch, ACommitReplacesTheSetAndRecordsIt) {
     batch.drop("notes.txt");  // not in the record: never removed
     batch.commit();
   }
-  EXPECT_EQ(test::file_bytes(folder + "/a.json"), "new json");
-  EXPECT_EQ(test::file_bytes(folder + "/a.csv"), "new csv");
+  EXPECT_EQ(test::bytes(folder + "/a.json"), "new json");
+  EXPECT_EQ(test::bytes(folder + "/a.csv"), "new csv");
   EXPECT_FALSE(fs::exists(folder + "/a.md"));
-  EXPECT_EQ(test::file_bytes(folder + "/notes.txt"), "the user's");
+  EXPECT_EQ(test::bytes(folder + "/notes.txt"), "the user's");
   EXPECT_EQ(read_manifest(folder), (std::set<std::string>{"a.csv", "a.json"}));
   EXPECT_EQ(test::temporaries_in(folder), "");
 }
@@ -92,8 +92,8 @@ TEST(FileBatch, ASwitchCutShortByAKillIsFinishedByTheNextWriter) {
   std::ofstream(staging + "/new/" + kManifestName) << manifest_text({"a.json", "a.md"});
   std::ofstream(staging + "/switch.list") << "put a.json\nput a.md\nput " << kManifestName << "\n";
   EXPECT_EQ(finish_interrupted_switches(folder), 1);
-  EXPECT_EQ(test::file_bytes(folder + "/a.json"), "new json");
-  EXPECT_EQ(test::file_bytes(folder + "/a.md"), "new md");
+  EXPECT_EQ(test::bytes(folder + "/a.json"), "new json");
+  EXPECT_EQ(test::bytes(folder + "/a.md"), "new md");
   EXPECT_FALSE(fs::exists(staging));
 }
 

@@ -36,7 +36,7 @@ TEST(ResultCache, AnEntryReadsBackAndADamagedOneIsAMissThatTheNextStoreReplaces)
   const std::string bytes = std::string("payload\0with a zero", 19);
   ASSERT_TRUE(cache.store(kKey, bytes));
   EXPECT_EQ(cache.load(kKey), bytes);
-  const std::string whole = test::file_bytes(entry_path(folder, kKey));
+  const std::string whole = test::bytes(entry_path(folder, kKey));
   // Cut short, one byte changed, another program's file under the name: each a miss.
   for (const std::string& damaged :
        {whole.substr(0, whole.size() - 3), whole.substr(0, whole.size() - 1) + "X",
@@ -61,7 +61,7 @@ TEST(ResultCache, AnEntryWhoseKeyLineWasRewrittenIsAMiss) {
   const ResultCache cache(folder, 1 << 20);
   ASSERT_TRUE(cache.store(kKey, "the results of one run"));
   const std::string other = digest("another run");
-  std::string rewritten = test::file_bytes(entry_path(folder, kKey));
+  std::string rewritten = test::bytes(entry_path(folder, kKey));
   rewritten.replace(rewritten.find(kKey), kKey.size(), other);
   std::ofstream(entry_path(folder, other), std::ios::binary) << rewritten;
   EXPECT_FALSE(cache.load(other));
@@ -76,7 +76,7 @@ TEST(ResultCache, PruneRemovesWhatAKilledStoreLeft) {
   const std::string folder = test::fresh_dir("result_cache_killed_store");
   const ResultCache cache(folder, 1 << 20);
   ASSERT_TRUE(cache.store(kKey, "bytes"));
-  const std::string whole = test::file_bytes(entry_path(folder, kKey));
+  const std::string whole = test::bytes(entry_path(folder, kKey));
   const std::string left = entry_path(folder, digest("killed")) + ".0123456789abcdef";
   const std::string live = entry_path(folder, digest("storing")) + ".fedcba9876543210";
   const std::string users = entry_path(folder, digest("user")) + ".0000000000000000";

@@ -50,7 +50,7 @@ Image screenshot(const std::string& browser, const std::string& svg, int ms,
       "--hide-scrollbars --window-size=1090,560 --user-data-dir=" +
       profile + " --virtual-time-budget=" + std::to_string(ms) + " --screenshot=" + png +
       " file://" + svg + " > " + png + ".log 2>&1";
-  EXPECT_EQ(std::system(command.c_str()), 0) << test::file_bytes(png + ".log");
+  EXPECT_EQ(std::system(command.c_str()), 0) << test::bytes(png + ".log");
   return read_png(png);
 }
 

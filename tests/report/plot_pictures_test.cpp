@@ -31,7 +31,7 @@ void run_bundled(const std::string& dir, const std::string& name, const std::str
 }
 
 std::string text_of(const fs::path& path) {
-  return test::file_bytes(path.string());
+  return test::bytes(path.string());
 }
 
 TEST(PlotEdges, NoPlotDrawsAtTheEdgeOfItsPicture) {

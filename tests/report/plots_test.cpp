@@ -306,7 +306,7 @@ TEST(KeptDrawings, TheSameScriptAndDataAreNotDrawnAgain) {
     FileBatch batch(folder);
     draw(script, rows, batch, "p.svg");
     batch.commit();
-    return test::file_bytes(folder + "/p.svg");
+    return test::bytes(folder + "/p.svg");
   };
   std::string first;
   {

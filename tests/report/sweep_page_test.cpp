@@ -127,7 +127,7 @@ values = [1.0, 2.0, 3.0, 4.0, 5.0]
     ASSERT_EQ(sweep_plot(results, batch, "s.svg"), "");
     batch.commit();
   }
-  const std::string svg = test::file_bytes(dir + "/s.svg");
+  const std::string svg = test::bytes(dir + "/s.svg");
   const test::GnuplotLayout layout = test::gnuplot_layout(svg);
   ASSERT_GE(layout.panels.size(), 2u);
   // The first row's two panels: the values left, the differences right.

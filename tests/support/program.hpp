@@ -88,18 +88,12 @@ inline int wait_for(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-/// The whole content of a file.
-inline std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 /// Every file under `folder` (path relative to it) with its bytes.
 inline std::map<std::string, std::string> snapshot(const std::filesystem::path& folder) {
   std::map<std::string, std::string> out;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
     if (entry.is_regular_file())
-      out[std::filesystem::relative(entry.path(), folder).string()] = file_bytes(entry.path());
+      out[std::filesystem::relative(entry.path(), folder).string()] = bytes(entry.path());
   return out;
 }
 

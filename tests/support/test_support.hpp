@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "files/whole_file.hpp"
 #include "run/case_loading.hpp"
 
 namespace bb::test {
@@ -24,10 +25,7 @@ inline std::string source_path(const std::string& relative) {
 
 /// A file's whole content.
 inline std::string bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return read_whole_file(path.string()).value_or("");
 }
 
 /// A scene parsed from inline case text, named "inline.toml" in messages.

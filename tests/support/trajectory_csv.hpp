@@ -3,10 +3,11 @@
 #pragma once
 
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "files/whole_file.hpp"
 
 namespace bb::test {
 
@@ -24,8 +25,7 @@ struct TrajectoryCsv {
 
 /// The file at `path`, split at commas, each number read with strtod.
 inline TrajectoryCsv read_trajectory(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = read_whole_file(path).value_or("");
   TrajectoryCsv out;
   std::istringstream lines(text);
   std::getline(lines, out.header);
