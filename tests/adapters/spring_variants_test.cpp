@@ -46,8 +46,10 @@ INSTANTIATE_TEST_SUITE_P(Engines, SpringVariants,
                          ::testing::ValuesIn(test::engines_with_force_build()),
                          [](const auto& info) { return test::test_name(info.param); });
 
-// Every spring backend at the stiff cloth's finest step: the anchors do not move (a float
-// engine stores the start rounded to float).
+// Every spring backend on the stiff cloth, at the coarsest of the case's steps at which its
+// run goes to the end (the springs applied by hand blow up at the report's 1/60 s: the case's
+// lesson; the finest step costs 16 times the steps of 1/60 s): the anchors do not move (a
+// float engine stores the start rounded to float).
 TEST(SpringBackends, AnchoredClothParticlesDoNotMove) {
   const Scene scene = spring_case("cloth_stiff");
   const std::size_t anchor = static_cast<std::size_t>(scene.body_index("p3_0"));
@@ -57,8 +59,11 @@ TEST(SpringBackends, AnchoredClothParticlesDoNotMove) {
   for (const char* name : {"bullet", "bullet-float", "bullet/force", "bullet-softbody", "box2d",
                            "box2d/force", "ode", "ode/force"}) {
     if (engine(name) == nullptr) continue;
-    const RunRecord run = run_accuracy(*engine(name), scene, scene.dt.back());
-    ASSERT_EQ(run.status, RunStatus::Ok) << name << ": " << run.reason;
+    RunRecord run;
+    for (const double dt : scene.dt)
+      if ((run = run_accuracy(*engine(name), scene, dt)).status == RunStatus::Ok) break;
+    ASSERT_EQ(run.status, RunStatus::Ok) << name << " at every step: " << run.reason;
+    ASSERT_FALSE(run.trajectory.states.empty()) << name;
     double moved = 0.0;
     for (const State& s : run.trajectory.states)
       moved = std::max(moved, (s[anchor].position - start).norm());
