@@ -166,8 +166,10 @@ class Cluster {
 
 /// The slurm.conf of a one-node cluster in `dir`: no cgroups, no accounting, no MPI, the
 /// current user as SlurmUser and SlurmdUser (root or not), munge on its own socket.
-///  - config_overrides: report.sbatch asks 2 CPUs a task; a machine with fewer is configured
-///    with 2 anyway (slurmd believes slurm.conf, not the hardware).
+///  - config_overrides: slurmd believes slurm.conf, not the hardware. report.sbatch asks 2
+///    CPUs a task and the tests submit arrays of 3 tasks: the node has at least 6, so that the
+///    tasks run at once, as on a cluster, rather than one after another (on a 2-core machine
+///    they share its cores: the test ends sooner for the same work).
 ///  - MinJobAge=5: a finished job's record is kept 5 s (not 300), so `sbatch --wait` asks
 ///    every 2 s instead of after 2, 10 and 42 s.
 ///  - batch_sched_delay=0: a batch job is scheduled at once, not up to 3 s later, so a task
@@ -209,7 +211,7 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
       {"@user@", Cluster::user()},
       {"@socket@", socket},
       {"@dir@", dir},
-      {"@cpus@", std::to_string(std::max(2u, std::thread::hardware_concurrency()))}};
+      {"@cpus@", std::to_string(std::max(6u, std::thread::hardware_concurrency()))}};
   for (const auto& [key, value] : values)
     for (std::size_t at; (at = conf.find(key)) != std::string::npos;)
       conf.replace(at, key.size(), value);
