@@ -1,10 +1,14 @@
 // The CMake presets: warnings are errors in CI's build and the developers' preset, never in
 // the default a user builds (another compiler's new warning must not stop their build), CI's
-// test programs at -O0 beside optimised code under test, and every preset uses Ninja.
+// test programs at -O0 beside optimised code under test, its quick test folders run as shards,
+// and every preset uses Ninja.
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <string>
 
 #include "run/child_pool.hpp"
 #include "support/program.hpp"
@@ -85,6 +89,54 @@ TEST(Presets, CiOptimisesTheCodeUnderTestAndCompilesTheTestProgramsAtO0) {
 #endif
 #endif
     EXPECT_FALSE(children_memory_capped()) << "the library under test is not instrumented";
+  }
+}
+
+// CI's build runs the folders of quick tests as GoogleTest shards, the developers' builds one
+// ctest entry per test; in this build, a folder's shards run its program with every shard
+// index once, and a sharded folder has no entry of a single test beside them.
+TEST(Presets, CiRunsTheQuickFoldersAsShardsThatTogetherRunEveryTest) {
+  const json all = presets();
+  EXPECT_EQ(resolved(all, "asan").at("cacheVariables").value("BEACHBALL_TEST_SHARDS", ""), "2");
+  EXPECT_FALSE(resolved(all, "default").at("cacheVariables").contains("BEACHBALL_TEST_SHARDS"));
+  const test::Outcome listed = test::shell("ctest --test-dir " + std::string(BEACHBALL_BUILD_DIR) +
+                                           " --show-only=json-v1 2>&1");
+  ASSERT_EQ(listed.exit_code, 0) << listed.out;
+  std::map<std::string, std::set<int>> shard_indices;  // by program
+  std::map<std::string, int> shard_totals;
+  std::map<std::string, std::set<std::string>> kinds;  // by label: "shard" or "test"
+  const json registered = json::parse(listed.out);
+  for (const json& t : registered.at("tests")) {
+    const std::string name = t.at("name").get<std::string>();
+    std::string label, environment;
+    for (const json& property : t.value("properties", json::array())) {
+      if (property.at("name") == "LABELS") label = property.at("value").at(0).get<std::string>();
+      if (property.at("name") == "ENVIRONMENT")
+        for (const json& v : property.at("value")) environment += v.get<std::string>() + ";";
+    }
+    const std::size_t at = name.find(".shard");
+    kinds[label].insert(at == std::string::npos ? "test" : "shard");
+    if (at == std::string::npos) continue;
+    const std::string program = name.substr(0, at);
+    const std::string command = t.at("command").at(0).get<std::string>();
+    EXPECT_EQ(command.substr(command.size() - program.size() - 1), "/" + program) << name;
+    const auto value = [&](const std::string& key) {
+      const std::size_t k = environment.find(key + "=");
+      return k == std::string::npos ? -1 : std::stoi(environment.substr(k + key.size() + 1));
+    };
+    EXPECT_TRUE(shard_indices[program].insert(value("GTEST_SHARD_INDEX")).second) << name;
+    shard_totals[program] = value("GTEST_TOTAL_SHARDS");
+  }
+  // This build is the asan preset's: it has shards.
+  if (std::string(BEACHBALL_CXX_FLAGS) ==
+      resolved(all, "asan").at("cacheVariables").value("CMAKE_CXX_FLAGS", ""))
+    EXPECT_FALSE(shard_indices.empty());
+  for (const auto& [label, seen] : kinds) EXPECT_EQ(seen.size(), 1u) << label;
+  EXPECT_FALSE(kinds["cli"].count("shard")) << "the program-starting tests stay one per entry";
+  for (const auto& [program, indices] : shard_indices) {
+    std::set<int> every;
+    for (int i = 0; i < shard_totals[program]; ++i) every.insert(i);
+    EXPECT_EQ(indices, every) << program;
   }
 }
 
