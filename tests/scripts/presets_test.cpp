@@ -129,8 +129,9 @@ TEST(Presets, CiRunsTheQuickFoldersAsShardsThatTogetherRunEveryTest) {
   }
   // This build is the asan preset's: it has shards.
   if (std::string(BEACHBALL_CXX_FLAGS) ==
-      resolved(all, "asan").at("cacheVariables").value("CMAKE_CXX_FLAGS", ""))
+      resolved(all, "asan").at("cacheVariables").value("CMAKE_CXX_FLAGS", "")) {
     EXPECT_FALSE(shard_indices.empty());
+  }
   for (const auto& [label, seen] : kinds) EXPECT_EQ(seen.size(), 1u) << label;
   EXPECT_FALSE(kinds["cli"].count("shard")) << "the program-starting tests stay one per entry";
   for (const auto& [program, indices] : shard_indices) {
