@@ -17,7 +17,7 @@
 namespace bb {
 namespace {
 
-constexpr auto setting = test::setting_text;
+using test::setting_text;
 
 const Backend* box2d() {
   return test::engine("box2d");
@@ -73,13 +73,13 @@ TEST(Box2dContacts, AnImpulseChangesVelocityByJOverM) {
 
 // The drop: a ball of r = 0.5 m from 10 m onto a ground with e = 0.8, long enough
 // for three apexes (drop_height_sensitivity's h1000 stops after one).
-const std::string kDrop =
+const std::string kBox2dDrop =
     test::dropped_ball("8.0", "0.0166666666666666667",
                        "0.0166666666666666667, 0.00416666666666666667", "0.0166666666666666667");
 
 TEST(Box2dContacts, ADroppedBallBouncesNearTheClosedForm) {
   REQUIRE_BOX2D();
-  const Scene scene = test::scene_from(kDrop);
+  const Scene scene = test::scene_from(kBox2dDrop);
   const Body& ball = scene.bodies[0];
   const double g = -scene.gravity.y(), e = scene.ground->restitution;
   const double drop = ball.position.y() - ball.radius;
@@ -157,24 +157,25 @@ TEST(Box2dContacts, SettingsNameTheRulesThatChangeBounces) {
   REQUIRE_BOX2D();
   const Scene bounce = load_case(test::source_path("cases/double_bounce.toml"));
   const Settings s = run_ok(bounce, bounce.report_dt).engine_settings;
-  EXPECT_NE(setting(s, "restitution_rule").find("b2MixRestitution"), std::string::npos);
-  EXPECT_NE(setting(s, "restitution_rule").find("PreSolve"), std::string::npos);
-  EXPECT_EQ(setting(s, "restitution_threshold"), "1");
-  EXPECT_NE(setting(s, "restitution_threshold_rule").find("does not bounce"), std::string::npos);
+  EXPECT_NE(setting_text(s, "restitution_rule").find("b2MixRestitution"), std::string::npos);
+  EXPECT_NE(setting_text(s, "restitution_rule").find("PreSolve"), std::string::npos);
+  EXPECT_EQ(setting_text(s, "restitution_threshold"), "1");
+  EXPECT_NE(setting_text(s, "restitution_threshold_rule").find("does not bounce"),
+            std::string::npos);
   // Every bounce of this case is faster than 1 m/s.
-  EXPECT_EQ(setting(s, "bounces_below_threshold"), "0");
-  EXPECT_NE(setting(s, "linear_slop").find("0.005 m"), std::string::npos);
-  EXPECT_EQ(setting(s, "bullet"), "false");
-  EXPECT_NE(setting(s, "continuous_collision").find("bullet"), std::string::npos);
-  EXPECT_EQ(setting(s, "velocity_iterations"), "8");
-  EXPECT_EQ(setting(s, "position_iterations"), "3");
-  EXPECT_NE(setting(s, "max_translation").find("2 m"), std::string::npos);
+  EXPECT_EQ(setting_text(s, "bounces_below_threshold"), "0");
+  EXPECT_NE(setting_text(s, "linear_slop").find("0.005 m"), std::string::npos);
+  EXPECT_EQ(setting_text(s, "bullet"), "false");
+  EXPECT_NE(setting_text(s, "continuous_collision").find("bullet"), std::string::npos);
+  EXPECT_EQ(setting_text(s, "velocity_iterations"), "8");
+  EXPECT_EQ(setting_text(s, "position_iterations"), "3");
+  EXPECT_NE(setting_text(s, "max_translation").find("2 m"), std::string::npos);
   const Scene push = load_case(test::source_path("cases/push.toml"));
   const Settings p = run_ok(push, push.report_dt).engine_settings;
-  EXPECT_NE(setting(p, "impulse").find("ApplyLinearImpulse"), std::string::npos);
+  EXPECT_NE(setting_text(p, "impulse").find("ApplyLinearImpulse"), std::string::npos);
   // No contacts: no shapes, and no contact rules to report.
-  EXPECT_NE(setting(p, "collision").find("none"), std::string::npos);
-  EXPECT_EQ(setting(p, "restitution_rule"), "");
+  EXPECT_NE(setting_text(p, "collision").find("none"), std::string::npos);
+  EXPECT_EQ(setting_text(p, "restitution_rule"), "");
 }
 
 // Three balls on a line without gravity: "a" runs through "c", which the case does not
@@ -262,15 +263,16 @@ TEST(Box2dContacts, BelowTheRestitutionThresholdTheBallDoesNotBounce) {
     highest_after_contact =
         std::max(highest_after_contact, kept.trajectory.states[j][0].position.y());
   EXPECT_LT(highest_after_contact, 0.51);
-  EXPECT_NE(setting(kept.engine_settings, "restitution_threshold_rule").find("does not bounce"),
-            std::string::npos);
-  EXPECT_EQ(setting(kept.engine_settings, "bounces_below_threshold"), "1");
+  EXPECT_NE(
+      setting_text(kept.engine_settings, "restitution_threshold_rule").find("does not bounce"),
+      std::string::npos);
+  EXPECT_EQ(setting_text(kept.engine_settings, "bounces_below_threshold"), "1");
   // With the threshold set to zero in the case, the same drop bounces.
   const Scene no_threshold =
       test::scene_from(slow_drop("\n[engines.box2d]\nrestitution_threshold = 0.0\n"));
   const RunRecord bounced = run_ok(no_threshold, no_threshold.report_dt);
-  EXPECT_EQ(setting(bounced.engine_settings, "restitution_threshold"), "0");
-  EXPECT_EQ(setting(bounced.engine_settings, "bounces_below_threshold"), "0");
+  EXPECT_EQ(setting_text(bounced.engine_settings, "restitution_threshold"), "0");
+  EXPECT_EQ(setting_text(bounced.engine_settings, "bounces_below_threshold"), "0");
   ASSERT_FALSE(bounced.trajectory.events.bodies[0].apex_heights.empty());
   EXPECT_GT(bounced.trajectory.events.bodies[0].apex_heights[0], 0.51);
 }

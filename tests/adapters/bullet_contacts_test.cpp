@@ -82,14 +82,14 @@ TEST_P(BulletContacts, PushChangesEachVelocityByImpulseOverMass) {
 }
 
 // A ball of radius 0.5 m dropped from 10 m onto a ground with restitution 0.8, at 1/240 s.
-const std::string kDrop = test::dropped_ball("9.0", "0.0333333333333333333",
-                                             "0.00416666666666666667", "0.00416666666666666667");
+const std::string kBulletDrop = test::dropped_ball(
+    "9.0", "0.0333333333333333333", "0.00416666666666666667", "0.00416666666666666667");
 
 // (c) The first contact comes when the closed form says, and the ball bounces with the
 // case's restitution, give or take what Bullet's penetration recovery adds.
 TEST_P(BulletContacts, ADroppedBallBouncesWithTheCasesRestitution) {
   BB_SKIP_IF_MISSING(test::not_built({GetParam()}));
-  const Scene scene = test::scene_from(kDrop);
+  const Scene scene = test::scene_from(kBulletDrop);
   const double dt = scene.report_dt, g = 9.81, r = 0.5, h = 10.0, e = 0.8;
   auto sim = start_case(*backend(), scene, dt);
   State state(1);

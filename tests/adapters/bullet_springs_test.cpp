@@ -26,10 +26,6 @@ using test::registry;
 using test::setting;
 using test::text_setting;
 
-Scene spring_case(const std::string& name) {
-  return load_case(test::source_path("cases/" + name + ".toml"));
-}
-
 /// The case's observable of `kind` (period/left, max_stretch) measured on `run`.
 std::optional<double> observable(const Scene& scene, const RunRecord& run,
                                  const std::string& kind) {
@@ -66,7 +62,7 @@ double semi_implicit_euler_period(double w, double dt) {
 // spring is the case's: both ways swing with the closed-form period, semi-implicit Euler's
 // 0.1% short of it, and the hand force is the course's semi-implicit Euler to rounding.
 TEST(BulletSprings, SpringPairOscillatesWithTheClosedFormPeriod) {
-  const Scene scene = spring_case("spring_pair");
+  const Scene scene = test::bundled_case("spring_pair");
   const double exact = two_mass_period(100.0);
   for (const char* name : {"bullet", "bullet-float", "bullet/force"}) {
     const Backend* b = engine(name);
@@ -104,7 +100,7 @@ TEST(BulletSprings, SpringPairOscillatesWithTheClosedFormPeriod) {
 // 1800 N/m, so the constraint swings sqrt(1e5 / 1800) = 7.45 times slower than the case;
 // the hand force keeps k and semi-implicit Euler's period at w dt = 1.86, 0.777 of exact.
 TEST(BulletSprings, TheStiffSpringIsLimitedInTheJointNotByHand) {
-  const Scene scene = spring_case("spring_pair_stiff");
+  const Scene scene = test::bundled_case("spring_pair_stiff");
   const double dt = scene.report_dt, exact = two_mass_period(1e5);
   const double limited_k = 0.5 / (16.0 * dt * dt);
   for (const char* name : {"bullet", "bullet-float"}) {
@@ -178,7 +174,7 @@ TEST(BulletSprings, AtTenThousandTheLimitHoldsWhatWouldExplode) {
 TEST(BulletSprings, TheFirstStepShowsTheStiffnessTheSettingsName) {
   const Backend* b = engine("bullet");
   BB_SKIP_IF_MISSING(test::not_built({"bullet"}));
-  const Scene scene = spring_case("spring_pair_stiff");
+  const Scene scene = test::bundled_case("spring_pair_stiff");
   const double dt = scene.report_dt;
   auto sim = start_case(*b, scene, dt);
   sim->step();
@@ -194,7 +190,7 @@ TEST(BulletSprings, TheFirstStepShowsTheStiffnessTheSettingsName) {
 
 // (c) The run says how the springs are built, that sleeping is off and what the limit did.
 TEST(BulletSprings, SettingsNameTheConstructionSleepingAndTheLimit) {
-  const Scene scene = spring_case("spring_pair");
+  const Scene scene = test::bundled_case("spring_pair");
   if (const Backend* b = engine("bullet")) {
     const Settings s = run_accuracy(*b, scene, scene.report_dt).engine_settings;
     EXPECT_NE(text_setting(s, "springs").find("btGeneric6DofSpring2Constraint"), std::string::npos);
@@ -301,7 +297,7 @@ bool has_backend(const BackendSet& set, const std::string& name) {
 // knows so even for plugins that were not built.
 TEST(BulletSprings, SpringVariantsJoinOnlySpringScenes) {
   const Scene without = load_case(test::source_path("cases/drag_fall.toml"));
-  const Scene with = spring_case("spring_pair");
+  const Scene with = test::bundled_case("spring_pair");
   const BackendSet plain = backends_for(without, registry());
   const BackendSet springs = backends_for(with, registry());
   for (const char* name : {"bullet/force", "bullet-softbody"}) {
@@ -329,7 +325,7 @@ TEST(BulletSprings, TheSoftBodyRunsTheSheets) {
   const Backend* b = engine("bullet-softbody");
   BB_SKIP_IF_MISSING(test::not_built({"bullet-softbody"}));
   for (const char* name : {"sproing_2d", "cloth"}) {
-    const Scene scene = spring_case(name);
+    const Scene scene = test::bundled_case(name);
     const RunRecord run = run_accuracy(*b, scene, scene.report_dt);
     EXPECT_NE(run.status, RunStatus::Error) << name << ": " << run.reason;
     EXPECT_NE(run.status, RunStatus::Unsupported) << name << ": " << run.reason;
@@ -346,7 +342,7 @@ TEST(BulletSprings, TheSoftBodyRunsTheSheets) {
 TEST(BulletSprings, TheSoftBodyLinkIsBackwardEulerOfTheCasesSpring) {
   const Backend* b = engine("bullet-softbody");
   BB_SKIP_IF_MISSING(test::not_built({"bullet-softbody"}));
-  const Scene scene = spring_case("spring_pair");
+  const Scene scene = test::bundled_case("spring_pair");
   const double dt = scene.report_dt, w = std::sqrt(100.0 / 0.5);
   const RunRecord run = run_accuracy(*b, scene, dt);
   ASSERT_EQ(run.status, RunStatus::Ok) << run.reason;

@@ -18,22 +18,18 @@ using test::engine;
 using test::takes_part;
 using test::text_setting;
 
-Scene spring_case(const std::string& name) {
-  return load_case(test::source_path("cases/" + name + ".toml"));
-}
-
 class SpringVariants : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpringVariants, TheForceVariantTakesPartOnlyOnSpringScenes) {
   const std::string force = std::string(GetParam()) + "/force";
   BB_SKIP_IF_MISSING(test::not_built({force}));
-  EXPECT_FALSE(takes_part(force, spring_case("drag_fall")));
-  EXPECT_TRUE(takes_part(force, spring_case("spring_pair")));
-  EXPECT_TRUE(takes_part(GetParam(), spring_case("drag_fall")));
+  EXPECT_FALSE(takes_part(force, test::bundled_case("drag_fall")));
+  EXPECT_TRUE(takes_part(force, test::bundled_case("spring_pair")));
+  EXPECT_TRUE(takes_part(GetParam(), test::bundled_case("drag_fall")));
 }
 
 TEST_P(SpringVariants, BothWaysNameHowTheirSpringsAreBuilt) {
-  const Scene scene = spring_case("spring_pair_damped");
+  const Scene scene = test::bundled_case("spring_pair_damped");
   for (const std::string& name : {std::string(GetParam()), std::string(GetParam()) + "/force"}) {
     if (engine(name) == nullptr) continue;
     const RunRecord run = run_accuracy(*engine(name), scene, scene.report_dt);
@@ -51,7 +47,7 @@ INSTANTIATE_TEST_SUITE_P(Engines, SpringVariants,
 // lesson; the finest step costs 16 times the steps of 1/60 s): the anchors do not move (a
 // float engine stores the start rounded to float).
 TEST(SpringBackends, AnchoredClothParticlesDoNotMove) {
-  const Scene scene = spring_case("cloth_stiff");
+  const Scene scene = test::bundled_case("cloth_stiff");
   const std::size_t anchor = static_cast<std::size_t>(scene.body_index("p3_0"));
   ASSERT_TRUE(scene.bodies[anchor].fixed);
   const Vec3 start = scene.bodies[anchor].position;

@@ -28,7 +28,7 @@ using test::engine;
 using test::number_setting;
 using test::text_setting;
 
-constexpr double kG = 9.81;
+using test::kG;
 constexpr double kMuStatic = 0.6;
 constexpr double kMuKinetic = 0.5;
 constexpr double kV0 = 5.0;

@@ -24,15 +24,15 @@ namespace {
 using test::engine;
 using test::text_setting;
 
-constexpr double kMass = 1.0;
-constexpr double kLength = 5.0;     ///< the plank along its long side, m
-constexpr double kThick = 0.2;      ///< across, m
-constexpr double kImpulse = -1.0;   ///< along y at the plank's end (2.5, 0), N s
-constexpr double kDt = 1.0 / 60.0;  ///< s
-constexpr double kG = 9.81;
+constexpr double kPlankMass = 1.0;
+constexpr double kLength = 5.0;          ///< the plank along its long side, m
+constexpr double kThick = 0.2;           ///< across, m
+constexpr double kImpulse = -1.0;        ///< along y at the plank's end (2.5, 0), N s
+constexpr double kPlankDt = 1.0 / 60.0;  ///< s
+using test::kG;
 
 /// I_zz of the plank about its centre, kg m^2.
-constexpr double kIzz = kMass * (kLength * kLength + kThick * kThick) / 12.0;
+constexpr double kIzz = kPlankMass * (kLength * kLength + kThick * kThick) / 12.0;
 
 /// A TOML float: always with a decimal point or an exponent.
 std::string toml_number(double v) {
@@ -86,7 +86,7 @@ double worst_anchor_drift(const Scene& scene, const Trajectory& trajectory) {
 }
 
 RunRecord run_case(const Backend& backend, const Scene& scene) {
-  RunRecord run = run_accuracy(backend, scene, kDt);
+  RunRecord run = run_accuracy(backend, scene, kPlankDt);
   EXPECT_EQ(run.status, RunStatus::Ok) << run.reason;
   return run;
 }
@@ -140,7 +140,7 @@ TEST_P(HingeEngines, StruckPlankTurnsAboutItsAnchor) {
     ASSERT_GE(run.trajectory.states.size(), 2u);
     const double drift = worst_anchor_drift(scene, run.trajectory);
     const double closed =
-        (Vec3(2.5 - a, 0.0, 0.0).cross(Vec3(0.0, kImpulse, 0.0))).z() / (kIzz + kMass * a * a);
+        (Vec3(2.5 - a, 0.0, 0.0).cross(Vec3(0.0, kImpulse, 0.0))).z() / (kIzz + kPlankMass * a * a);
     const double spin = run.trajectory.states[1][0].angular_velocity.z();
     std::printf(
         "%-12s anchor %.2f m: worst anchor drift %.3g m; spin after the blow %.9f "
@@ -160,7 +160,7 @@ TEST(OdeHinge, RigidWithoutCfm) {
   const RunRecord run = run_case(*ode, scene);
   ASSERT_GE(run.trajectory.states.size(), 2u);
   EXPECT_EQ(test::number_setting(run.engine_settings, "hinge_cfm"), 0.0);
-  const double closed = -1.25 / (kIzz + kMass * 1.25 * 1.25);
+  const double closed = -1.25 / (kIzz + kPlankMass * 1.25 * 1.25);
   const double spin = run.trajectory.states[1][0].angular_velocity.z();
   std::printf("ode, cfm 0: spin after the blow %.9f rad/s, closed form %.9f rad/s\n", spin, closed);
   EXPECT_NEAR(spin, closed, 1e-9);
@@ -196,7 +196,7 @@ TEST_P(HingeEngines, HangingPlankSwingsWithThePendulumPeriod) {
   const RunRecord run = run_case(backend(), scene);
   const double d = 2.5;
   const double closed =
-      2.0 * std::numbers::pi * std::sqrt((kIzz + kMass * d * d) / (kMass * kG * d));
+      2.0 * std::numbers::pi * std::sqrt((kIzz + kPlankMass * d * d) / (kPlankMass * kG * d));
   const double period = swing_period(run.trajectory);
   const double drift = worst_anchor_drift(scene, run.trajectory);
   std::printf(

@@ -15,7 +15,7 @@
 namespace bb {
 namespace {
 
-constexpr double kG = 9.81;
+using test::kG;
 
 /// A ball in free flight for `duration` s from height 0 at `velocity` (a TOML vector), no
 /// ground, no air, watched by `observe` (the lines of an [[observe]] after its body).

@@ -22,8 +22,8 @@
 namespace bb {
 namespace {
 
-constexpr double kG = 9.81;
-constexpr double kDt = 1.0 / 960.0;  ///< s, every backend's step here
+using test::kG;
+constexpr double kPendulumDt = 1.0 / 960.0;  ///< s, every backend's step here
 
 /// K(k) = pi / (2 AGM(1, sqrt(1 - k^2))).
 double elliptic_k(double k) {
@@ -48,7 +48,8 @@ std::string number(double v) {
   return text;
 }
 
-/// The head of a case swinging for `duration` seconds, stepped at kDt, sampled every 1/240 s.
+/// The head of a case swinging for `duration` seconds, stepped at kPendulumDt, sampled every 1/240
+/// s.
 std::string head(const std::string& name, double duration) {
   return "name = \"" + name + "\"\ndims = 2\nduration = " + number(duration) +
          ".0\nsample = 0.00416666666666666667\ndt = [0.00104166666666666667]\n";
@@ -107,7 +108,8 @@ class PendulumPeriod : public ::testing::TestWithParam<std::string> {
   /// from the samples (to 1e-3 for reading them there; a swing that loses energy shortens
   /// its cycle as it goes).
   std::optional<double> period(const Scene& scene, std::size_t body) {
-    const std::optional<RunRecord> run = test::run_backend(GetParam(), scene, kDt, skipped_);
+    const std::optional<RunRecord> run =
+        test::run_backend(GetParam(), scene, kPendulumDt, skipped_);
     if (!run) return std::nullopt;
     if (run->status == RunStatus::Diverged) {
       std::printf("%-28s diverged (%s)\n", GetParam().c_str(), run->reason.c_str());
@@ -150,7 +152,7 @@ TEST_P(PendulumPeriod, AHingedRodSwingsWithTheEllipticIntegralsPeriod) {
     const double theta0 = degrees * std::numbers::pi / 180.0;
     const double closed = pendulum_period(ratio, theta0);
     const double fastest = std::sqrt(2.0 * m * kG * d * (1.0 - std::cos(theta0)) / inertia);
-    const double tolerance = GetParam() == "reference" ? 1e-9 : 10.0 * fastest * kDt;
+    const double tolerance = GetParam() == "reference" ? 1e-9 : 10.0 * fastest * kPendulumDt;
     std::printf("%-28s %5.1f degrees: period %.9f s, closed form %.9f s (relative %.2g)\n",
                 GetParam().c_str(), degrees, *measured, closed, *measured / closed - 1.0);
     EXPECT_NEAR(*measured, closed, tolerance * closed) << degrees << " degrees";

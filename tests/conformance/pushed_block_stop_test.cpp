@@ -18,7 +18,8 @@
 namespace bb {
 namespace {
 
-constexpr double kG = 9.81, kMass = 1.0, kSpeed = 7.74, kPush = 2.0, kMuK = 0.5;
+using test::kG;
+constexpr double kMass = 1.0, kSpeed = 7.74, kPush = 2.0, kMuK = 0.5;
 
 /// The block, its stop and its creep observed, over 6 s; `extra` is appended to its stop's
 /// [[observe]].

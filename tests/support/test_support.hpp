@@ -14,6 +14,9 @@
 
 namespace bb::test {
 
+/// Gravity of the tests' own scenes, m/s^2.
+inline constexpr double kG = 9.81;
+
 /// The program as a test runs it keeps no results between invocations (each run is the
 /// run under test); a test of the kept results names its own folder with --cache.
 inline const bool kNoKeptResults = setenv("BEACHBALL_CACHE", "off", 1) == 0;
@@ -21,6 +24,11 @@ inline const bool kNoKeptResults = setenv("BEACHBALL_CACHE", "off", 1) == 0;
 /// The source tree, for cases/ and tests/cases/.
 inline std::string source_path(const std::string& relative) {
   return std::string(BEACHBALL_SOURCE_DIR) + "/" + relative;
+}
+
+/// The bundled case cases/<name>.toml, loaded.
+inline Scene bundled_case(const std::string& name) {
+  return load_case(source_path("cases/" + name + ".toml"));
 }
 
 /// A file's whole content.
