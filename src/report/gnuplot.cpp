@@ -225,7 +225,10 @@ std::string draw(const std::string& script_body, const std::string& data, FileBa
                          ? "gnuplot failed (" + ended + ")" + (said.empty() ? "" : ": " + said)
                          : "gnuplot left an incomplete SVG (is the disk full?)");
   }
-  if (drawings_cache) drawings_cache->store(key, read_whole_file(output).value_or(""));
+  // Kept only when read back whole: an empty drawing would be served as the picture later.
+  if (drawings_cache)
+    if (const std::optional<std::string> svg = read_whole_file(output))
+      drawings_cache->store(key, *svg);
   return "";
 }
 
