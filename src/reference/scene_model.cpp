@@ -153,7 +153,8 @@ void SceneModel::linear_accelerations(const double* y) {
   const int n = static_cast<int>(scene_.bodies.size());
   for (int i = 0; i < n; ++i) {
     x_[i] = position(y, i), v_[i] = velocity(y, i);
-    q_[i] = orientation(y, i).normalized(), w_[i] = spin(y, i);
+    // The world spin turns the body's by the quaternion just normalised (what spin() does).
+    q_[i] = orientation(y, i).normalized(), w_[i] = q_[i] * Vector3d(body_spin(y, i));
   }
   forces_.evaluate({x_.data(), v_.data(), q_.data(), w_.data()}, force_.data(), torque_.data());
   for (int i = 0; i < n; ++i) {
@@ -210,15 +211,14 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
     Vec(d + 10) = angular_acceleration(body, own);
     // A torque (world frame) turns the body: I^-1 R^T T in its own frame.
     if (forces_.torques() && !torque_[i].isZero())
-      Vec(d + 10) +=
-          (q.normalized().conjugate() * torque_[i]).cwiseQuotient(principal_inertia(body));
+      Vec(d + 10) += (q_[i].conjugate() * torque_[i]).cwiseQuotient(principal_inertia(body));
     // On a hinge the body turns about the axis only: the forces at its centre act through
     // their torque about the axis, and the centre moves on a circle. (The Jacobian treats
     // it as free: only msbdf uses that, and a hinged scene here is never stiff.) The world
     // frame's angular acceleration is the body frame's turned: R^T alpha (the frame's own
     // turn adds omega x omega = 0).
     if (hinge_[i]) {
-      const Quaterniond unit = q.normalized();
+      const Quaterniond& unit = q_[i];
       const HingeAccelerations h = hinge_accelerations(body, q, position(y, i), unit * own,
                                                        body.mass * accelerations_[i], *hinge_[i]);
       Vec(d + 3) = h.linear;
