@@ -218,11 +218,10 @@ void SceneModel::derivatives(double, const double* y, double* dydt) {
     // frame's angular acceleration is the body frame's turned: R^T alpha (the frame's own
     // turn adds omega x omega = 0).
     if (hinge_[i]) {
-      const Quaterniond& unit = q_[i];
-      const HingeAccelerations h = hinge_accelerations(body, q, position(y, i), unit * own,
+      const HingeAccelerations h = hinge_accelerations(body, q, position(y, i), w_[i],
                                                        body.mass * accelerations_[i], *hinge_[i]);
       Vec(d + 3) = h.linear;
-      Vec(d + 10) = unit.conjugate() * h.angular;
+      Vec(d + 10) = q_[i].conjugate() * h.angular;
     }
   }
 }
